@@ -1,0 +1,43 @@
+#pragma once
+// Compile-time limits of the rasterizer, in one place (as bx and llvmpipe keep theirs).
+// Every number here is a named decision; the static_asserts say what depends on what.
+
+#include <cstdint>
+
+namespace luxel::rasterizer {
+
+/// Vertex positions are snapped to 1/256 pixel ("16.8" fixed point, as D3D10 requires).
+inline constexpr int kSubpixelBits = 8;
+inline constexpr int kSubpixelsPerPixel = 1 << kSubpixelBits;
+
+/// The screen is split into square tiles of this many pixels on a side. A tile's color, depth and
+/// stencil (all samples) are contiguous and are shaded by one thread at a time.
+inline constexpr int kTileSize = 64;
+inline constexpr int kTilePixels = kTileSize * kTileSize;
+
+/// Largest render target, in pixels on a side (the D3D10 texture limit).
+inline constexpr int kMaxTargetSize = 8192;
+
+/// Guard band: after the viewport transform, x and y must lie in [-kGuardBand, +kGuardBand]
+/// pixels, or the triangle is clipped against the band in homogeneous space. This bounds every
+/// snapped coordinate to 2^22 subpixels, so edge-function constants fit comfortably in 64 bits
+/// (|C| < 2^47) and the per-sample steps of edges shorter than a few thousand pixels fit in 32.
+inline constexpr int kGuardBand = 16384;
+static_assert(kGuardBand >= 2 * kMaxTargetSize, "the guard band must contain any viewport");
+static_assert(kGuardBand * kSubpixelsPerPixel <= (1 << 22), "snapped coordinates must fit 23 bits");
+
+/// Most float4 interpolants a vertex functor may hand to the pixel functor (DX9: 10 texcoords/colors).
+inline constexpr int kMaxVaryings = 10;
+
+/// Most samples per pixel.
+inline constexpr int kMaxSamples = 8;
+
+/// Triangles are set up and binned in batches of at most this many, then the batch is
+/// rasterized. A batch's setup data stays in cache between the two phases.
+inline constexpr int kTrianglesPerBatch = 16384;
+
+/// A batch is cut into chunks of this many triangles for the setup phase; each chunk has its own
+/// bins, and a tile replays the chunks in order, so submission order is kept for any thread count.
+inline constexpr int kTrianglesPerChunk = 2048;
+
+}  // namespace luxel::rasterizer

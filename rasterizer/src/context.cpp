@@ -1,0 +1,82 @@
+#include "luxel/rasterizer/context.hpp"
+
+#include "luxel/rasterizer/simd.hpp"
+
+#include <xmmintrin.h>
+#include <pmmintrin.h>
+
+#include <atomic>
+
+namespace luxel::rasterizer {
+
+namespace simd {
+ScopedFlushDenormals::ScopedFlushDenormals() : saved_(_mm_getcsr()) {
+  _mm_setcsr(saved_ | _MM_FLUSH_ZERO_ON | _MM_DENORMALS_ZERO_ON);
+}
+ScopedFlushDenormals::~ScopedFlushDenormals() { _mm_setcsr(saved_); }
+}  // namespace simd
+
+Context::Context(int threads) {
+  if (threads <= 0) threads = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+  workers_.reserve(threads - 1);
+  for (int t = 1; t < threads; ++t) workers_.emplace_back([this, t] { worker_main(t); });
+}
+
+Context::~Context() {
+  {
+    std::lock_guard lock(mutex_);
+    stopping_ = true;
+  }
+  wake_.notify_all();
+  for (auto& w : workers_) w.join();
+}
+
+void Context::run_items(int thread) {
+  simd::ScopedFlushDenormals ftz;
+  for (;;) {
+    const int item = next_item_.fetch_add(1, std::memory_order_relaxed);
+    if (item >= job_count_) break;
+    (*job_)(item, thread);
+  }
+}
+
+void Context::worker_main(int thread) {
+  uint64_t seen = 0;
+  for (;;) {
+    {
+      std::unique_lock lock(mutex_);
+      wake_.wait(lock, [&] { return stopping_ || generation_ != seen; });
+      if (stopping_) return;
+      seen = generation_;
+    }
+    run_items(thread);
+    {
+      std::lock_guard lock(mutex_);
+      if (--busy_workers_ == 0) done_.notify_one();
+    }
+  }
+}
+
+void Context::parallel_for(int count, const std::function<void(int, int)>& fn) {
+  if (count <= 0) return;
+  if (workers_.empty() || count == 1) {
+    simd::ScopedFlushDenormals ftz;
+    for (int i = 0; i < count; ++i) fn(i, 0);
+    return;
+  }
+  {
+    std::lock_guard lock(mutex_);
+    job_ = &fn;
+    job_count_ = count;
+    next_item_.store(0, std::memory_order_relaxed);
+    busy_workers_ = static_cast<int>(workers_.size());
+    ++generation_;
+  }
+  wake_.notify_all();
+  run_items(0);
+  std::unique_lock lock(mutex_);
+  done_.wait(lock, [&] { return busy_workers_ == 0; });
+  job_ = nullptr;
+}
+
+}  // namespace luxel::rasterizer
