@@ -1,10 +1,13 @@
 #include "luxel/rasterizer/context.hpp"
 
+#include "luxel/rasterizer/detail/command_queue.hpp"
+#include "luxel/rasterizer/draw.hpp"
 #include "luxel/rasterizer/simd.hpp"
 
 #include <xmmintrin.h>
 #include <pmmintrin.h>
 
+#include <algorithm>
 #include <atomic>
 
 namespace luxel::rasterizer {
@@ -16,19 +19,61 @@ ScopedFlushDenormals::ScopedFlushDenormals() : saved_(_mm_getcsr()) {
 ScopedFlushDenormals::~ScopedFlushDenormals() { _mm_setcsr(saved_); }
 }  // namespace simd
 
-Context::Context(int threads) {
+Context::Context(int threads)
+    : queue_(std::make_unique<detail::CommandQueue>()), stats_(std::make_unique<DrawStats>()) {
   if (threads <= 0) threads = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
   workers_.reserve(threads - 1);
   for (int t = 1; t < threads; ++t) workers_.emplace_back([this, t] { worker_main(t); });
 }
 
 Context::~Context() {
+  flush();
   {
     std::lock_guard lock(mutex_);
     stopping_ = true;
   }
   wake_.notify_all();
   for (auto& w : workers_) w.join();
+}
+
+void Context::begin_query(OcclusionQuery& query) {
+  const auto& pending = queue_->queries();
+  if (std::find(pending.begin(), pending.end(), &query) != pending.end()) flush();
+  query.samples_ = 0;
+  active_query_ = &query;
+}
+
+void Context::end_query() { active_query_ = nullptr; }
+
+uint64_t Context::query_result(const OcclusionQuery& query) {
+  flush();
+  return query.samples_;
+}
+
+void Context::reset_stats() { *stats_ = {}; }
+
+void Context::flush() {
+  detail::CommandQueue& q = *queue_;
+  if (q.empty()) return;
+  const int tiles = q.layout().tile_count();
+  auto& counters = q.tile_counters();
+  auto& tile_stats = q.tile_stats();
+  counters.resize(tiles);
+  tile_stats.assign(tiles, {});
+  for (int t = 0; t < tiles; ++t) {
+    counters[t].query_samples.assign(q.queries().size(), 0);
+    counters[t].stats = &tile_stats[t];
+  }
+  parallel_for(tiles, [&](int tile, int) {
+    for (const auto& command : q.commands()) command->execute(tile, counters[tile]);
+  });
+  // Sums in tile order: the totals do not depend on which thread ran which tile.
+  for (int t = 0; t < tiles; ++t) {
+    for (size_t slot = 0; slot < q.queries().size(); ++slot) q.queries()[slot]->samples_ += counters[t].query_samples[slot];
+    *stats_ += tile_stats[t];
+  }
+  *stats_ += q.front_end_stats();
+  q.reset();
 }
 
 void Context::run_items(int thread) {

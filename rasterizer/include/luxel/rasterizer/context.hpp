@@ -8,11 +8,29 @@
 #include <condition_variable>
 #include <cstdint>
 #include <functional>
+#include <memory>
 #include <mutex>
 #include <thread>
 #include <vector>
 
 namespace luxel::rasterizer {
+
+struct DrawStats;
+class ColorTarget;
+struct Image;
+
+namespace detail {
+class CommandQueue;
+}
+
+/// Counts the samples that pass every test (coverage, discard, alpha, stencil, depth) in the
+/// draws made between Context::begin_query and Context::end_query. Exact, like D3D9's
+/// D3DQUERYTYPE_OCCLUSION, and in samples (not pixels). Read it with Context::query_result.
+class OcclusionQuery {
+ private:
+  friend class Context;
+  uint64_t samples_ = 0;
+};
 
 class Context {
  public:
@@ -30,6 +48,30 @@ class Context {
   /// Denormals are flushed to zero on every thread while fn runs. Not reentrant.
   void parallel_for(int count, const std::function<void(int item, int thread)>& fn);
 
+  // --- The deferred frame ------------------------------------------------------------------
+  // Draws, clears and resolves are recorded and run tile by tile at the next flush. Reading a
+  // target's samples directly (ColorTarget::sample...) needs a flush() first; resolve() and
+  // query_result() flush by themselves. Data a pixel functor points to must stay alive until then.
+
+  /// Runs everything recorded so far.
+  void flush();
+
+  /// Starts counting into `query` (resetting it). One query is active at a time.
+  void begin_query(OcclusionQuery& query);
+  /// Stops counting into the active query.
+  void end_query();
+  /// The query's count (flushes first).
+  uint64_t query_result(const OcclusionQuery& query);
+  /// The query draws count into right now, or nullptr.
+  OcclusionQuery* active_query() const { return active_query_; }
+
+  /// What the draws did since the last reset_stats() (complete after a flush).
+  const DrawStats& stats() const { return *stats_; }
+  void reset_stats();
+
+  /// The frame being recorded (used by draw() and the clear/resolve commands).
+  detail::CommandQueue& queue() { return *queue_; }
+
  private:
   void worker_main(int thread);
   void run_items(int thread);
@@ -44,6 +86,9 @@ class Context {
   int busy_workers_ = 0;
   bool stopping_ = false;
   alignas(64) std::atomic<int> next_item_{0};
+  OcclusionQuery* active_query_ = nullptr;
+  std::unique_ptr<detail::CommandQueue> queue_;
+  std::unique_ptr<DrawStats> stats_;
 };
 
 }  // namespace luxel::rasterizer

@@ -32,12 +32,10 @@ inline constexpr int kMaxVaryings = 10;
 /// Most samples per pixel.
 inline constexpr int kMaxSamples = 8;
 
-/// Triangles are set up and binned in batches of at most this many, then the batch is
-/// rasterized. A batch's setup data stays in cache between the two phases.
-inline constexpr int kTrianglesPerBatch = 16384;
 
-/// A batch is cut into chunks of this many triangles for the setup phase; each chunk has its own
-/// bins, and a tile replays the chunks in order, so submission order is kept for any thread count.
-inline constexpr int kTrianglesPerChunk = 2048;
+/// A draw's front end (vertex functor, clip, setup, binning) is cut into chunks of this many
+/// triangles, run in parallel; each chunk has its own bins, and a tile replays the chunks in
+/// order, so submission order is kept for any thread count.
+inline constexpr int kTrianglesPerChunk = 8192;
 
 }  // namespace luxel::rasterizer

@@ -35,6 +35,11 @@ inline constexpr int kStampHeight = 2;
 using LaneBits = uint32_t;
 inline constexpr LaneBits kAllLanes = kLanes == 32 ? ~0u : ((1u << kLanes) - 1u);
 
+/// Four float lanes: a varying, a color, a position.
+struct Float4 {
+  Float x, y, z, w;
+};
+
 /// Pixel x offset of lane l inside its stamp.
 constexpr int lane_x(int l) { return 2 * (l / 4) + (l & 1); }
 /// Pixel y offset of lane l inside its stamp.
@@ -86,6 +91,17 @@ inline LaneBits to_bits(const xsimd::batch_bool<T, Arch>& m) {
   LaneBits bits = 0;
   for (std::size_t i = 0; i < xsimd::batch_bool<T, Arch>::size; ++i) bits |= LaneBits(b[i]) << i;
   return bits;
+#endif
+}
+
+/// Lanes whose sign bit is set (negative integers).
+inline LaneBits sign_bits(const Int& v) {
+#if defined(__AVX512F__)
+  return static_cast<LaneBits>(_mm512_movepi32_mask(v));
+#elif defined(__AVX2__)
+  return static_cast<LaneBits>(_mm256_movemask_ps(_mm256_castsi256_ps(v)));
+#else
+  return to_bits(v < Int(0));
 #endif
 }
 

@@ -1,0 +1,69 @@
+// Whole-frame benchmark of the built-in workloads, printing exactly the line format of the
+// llvmpipe peer (../shared/peers/llvmpipe) so both run side by side:
+//   workload=<name> width=W height=H msaa=S threads=T frames=N median_ms=X min_ms=Y
+// A frame is what the peer calls a frame: clear, draw, resolve to a 1-sample image.
+
+#include "luxel/frame/builtin.hpp"
+
+#include <CLI/CLI.hpp>
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <iostream>
+#include <string>
+#include <vector>
+
+int main(int argc, char** argv) {
+  CLI::App app{"luxel frame benchmark (same workloads and output format as the llvmpipe peer)"};
+  luxel::frame::FrameSettings settings;
+  int threads = 2, frames = 30, warmup = 5;
+  bool print_frames = false;
+  std::string out;
+  std::vector<std::string> workloads;
+  app.add_option("--width", settings.width)->check(CLI::Range(1, 8192));
+  app.add_option("--height", settings.height)->check(CLI::Range(1, 8192));
+  app.add_option("--msaa", settings.samples)->check(CLI::IsMember({1, 2, 4, 8}));
+  app.add_option("--threads", threads)->check(CLI::Range(1, 256));
+  app.add_option("--frames", frames)->check(CLI::Range(1, 100000));
+  app.add_option("--warmup", warmup)->check(CLI::Range(0, 100000));
+  app.add_option("--out", out, "Directory for the final frame of each workload as PNG");
+  app.add_flag("--print-frames", print_frames, "Print every frame time to stderr");
+  app.add_option("workloads", workloads, "fill, tris (default: both)");
+  CLI11_PARSE(app, argc, argv);
+  if (workloads.empty()) workloads = {"fill", "tris"};
+
+  luxel::rasterizer::Context ctx(threads);
+  for (const std::string& name : workloads) {
+    std::unique_ptr<luxel::frame::BuiltinScene> scene;
+    try {
+      scene = luxel::frame::make_builtin_scene(name, settings);
+    } catch (const std::exception& e) {
+      std::printf("workload=%s skipped reason=\"%s\"\n", name.c_str(), e.what());
+      continue;
+    }
+    for (int i = 0; i < warmup; ++i) scene->render(ctx);
+    std::vector<double> ms;
+    for (int i = 0; i < frames; ++i) {
+      const auto t0 = std::chrono::steady_clock::now();
+      scene->render(ctx);
+      const auto t1 = std::chrono::steady_clock::now();
+      ms.push_back(std::chrono::duration<double, std::milli>(t1 - t0).count());
+      if (print_frames) std::fprintf(stderr, "%s frame %d: %.3f ms\n", name.c_str(), i, ms.back());
+    }
+    std::vector<double> sorted = ms;
+    std::sort(sorted.begin(), sorted.end());
+    const size_t n = sorted.size();
+    const double median = n % 2 ? sorted[n / 2] : 0.5 * (sorted[n / 2 - 1] + sorted[n / 2]);
+    std::printf("workload=%s width=%d height=%d msaa=%d threads=%d frames=%d median_ms=%.3f min_ms=%.3f\n",
+                name.c_str(), settings.width, settings.height, settings.samples, threads, frames, median, sorted[0]);
+    std::fflush(stdout);
+    if (!out.empty()) {
+      const std::string path = out + "/" + name + "_" + std::to_string(settings.width) + "x" +
+                               std::to_string(settings.height) + "_msaa" + std::to_string(settings.samples) + "_t" +
+                               std::to_string(threads) + ".png";
+      luxel::rasterizer::write_image(scene->image(), path);
+    }
+  }
+  return 0;
+}

@@ -1,0 +1,76 @@
+#pragma once
+// Private to the rasterizer: what the front end (clip, snap, setup, bin) hands the tile
+// rasterizers. Not templated on shaders, so it lives in triangle_setup.cpp.
+
+#include "luxel/rasterizer/limits.hpp"
+#include "luxel/rasterizer/state.hpp"
+
+#include <glm/vec4.hpp>
+
+#include <cstdint>
+#include <vector>
+
+namespace luxel::rasterizer {
+struct DrawStats;
+}
+
+namespace luxel::rasterizer::detail {
+
+/// Per-draw constants of the front end.
+struct DrawConstants {
+  // Viewport transform: x_s = vp_x + (ndc_x + 1) * half_w, y_s = vp_y + (1 - ndc_y) * half_h.
+  float vp_x = 0, vp_y = 0, half_w = 0, half_h = 0;
+  float min_depth = 0, max_depth = 1;
+  // The guard band in NDC: outside it triangles are clipped.
+  float guard_min_x = -1, guard_max_x = 1, guard_min_y = -1, guard_max_y = 1;
+  // Pixels that may be written: scissor, viewport and target intersected; half-open.
+  int clip_x0 = 0, clip_y0 = 0, clip_x1 = 0, clip_y1 = 0;
+  int tiles_x = 0, tiles_y = 0;
+  int samples = 1;
+  int varyings = 0;
+  RasterizerState rasterizer;
+};
+
+/// E(X, Y) = a X + b Y + c over subpixel coordinates; a sample is inside when E >= 0 for all
+/// three edges. c already carries the top-left bias (-1 on edges that are not top or left).
+struct Edge {
+  int32_t a, b;
+  int64_t c;
+};
+
+/// A screen-space plane q(x, y) = q0 + dqdx (x - ref_x) + dqdy (y - ref_y), x and y in pixels.
+struct Plane {
+  float q0, dqdx, dqdy;
+};
+
+struct TriangleSetup {
+  Edge edge[3];
+  int32_t x0, y0, x1, y1;  ///< pixel bounds (half-open), inside the draw's clip rectangle
+  float ref_x, ref_y;      ///< pixels: vertex 0, snapped
+  Plane z;                 ///< screen-linear depth, bias included
+  Plane inv_w;             ///< 1/w
+  Plane b1_w, b2_w;        ///< perspective barycentrics of vertices 1 and 2, divided by w
+  uint32_t attributes;     ///< offset of the varyings in ChunkBins::attributes: per component a0, a1-a0, a2-a0
+  bool front_facing;
+  bool narrow_edges;       ///< per-sample edge values of a stamp fit 32-bit integers
+};
+
+/// Bound on |a| * stamp width + |b| * stamp height (subpixels) for the 32-bit per-sample path.
+inline constexpr int64_t kNarrowEdgeLimit = int64_t(1) << 29;
+
+/// One chunk of a batch: its triangles' setups and its own bins, one list per tile.
+struct ChunkBins {
+  std::vector<TriangleSetup> setups;
+  std::vector<float> attributes;
+  std::vector<std::vector<uint32_t>> tile_lists;  ///< indices into setups, submission order
+  std::vector<uint32_t> touched_tiles;
+
+  void reset(int tile_count);
+};
+
+/// Clips, sets up and bins one triangle. `vertices[k]` points at the clip-space position of
+/// vertex k followed by dc.varyings float4 interpolants.
+void process_triangle(const DrawConstants& dc, const glm::vec4* const vertices[3], ChunkBins& bins,
+                      DrawStats& stats);
+
+}  // namespace luxel::rasterizer::detail

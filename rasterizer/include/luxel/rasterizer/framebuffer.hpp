@@ -1,0 +1,141 @@
+#pragma once
+// Render targets: RGBA8 color and 32-bit float depth + 8-bit stencil, 1/2/4/8 samples, tiled.
+//
+// Storage is tiled so that everything one thread touches while shading a tile is contiguous:
+// the surface is cut into kTileSize² tiles (row-major); a tile holds its samples plane after
+// plane (sample 0 of all its pixels, then sample 1...); inside a plane pixels are ordered by SIMD
+// stamp (row-major stamps of simd::kStampWidth x 2 pixels), inside a stamp in lane order
+// (see simd.hpp). Surfaces are padded to whole tiles; padding is never written by draws.
+//
+// Color is packed as one uint32 per sample: r | g << 8 | b << 16 | a << 24.
+
+#include "luxel/rasterizer/image.hpp"
+#include "luxel/rasterizer/limits.hpp"
+#include "luxel/rasterizer/simd.hpp"
+
+#include <glm/vec4.hpp>
+
+#include <cstddef>
+#include <cstdint>
+#include <memory>
+
+namespace luxel::rasterizer {
+
+class Context;
+
+/// Where pixel (x, y), relative to its tile's origin, sits inside one sample plane of the tile.
+constexpr int pixel_offset_in_tile(int x, int y) {
+  const int stamp = (y / simd::kStampHeight) * (kTileSize / simd::kStampWidth) + x / simd::kStampWidth;
+  const int lx = x % simd::kStampWidth;
+  const int lane = (lx / 2) * 4 + (lx & 1) + 2 * (y & 1);
+  return stamp * simd::kLanes + lane;
+}
+static_assert(kTileSize % simd::kStampWidth == 0 && kTileSize % simd::kStampHeight == 0);
+
+/// The tiling shared by all targets of one size and sample count.
+struct SurfaceLayout {
+  int width = 0, height = 0, samples = 1;
+  int tiles_x = 0, tiles_y = 0;
+
+  SurfaceLayout() = default;
+  /// Throws std::invalid_argument for sizes outside [1, kMaxTargetSize] or a bad sample count.
+  SurfaceLayout(int width, int height, int samples);
+
+  int tile_count() const { return tiles_x * tiles_y; }
+  size_t elements_per_tile() const { return static_cast<size_t>(kTilePixels) * samples; }
+  size_t element_count() const { return elements_per_tile() * tile_count(); }
+  /// Index of pixel (x, y), sample s.
+  size_t index(int x, int y, int s) const {
+    const int tile = (y / kTileSize) * tiles_x + x / kTileSize;
+    return tile * elements_per_tile() + static_cast<size_t>(s) * kTilePixels +
+           pixel_offset_in_tile(x % kTileSize, y % kTileSize);
+  }
+  bool operator==(const SurfaceLayout&) const = default;
+};
+
+namespace detail {
+struct FreeAligned {
+  void operator()(void* p) const;
+};
+void* allocate_aligned(size_t bytes);
+}  // namespace detail
+
+/// A 64-byte aligned array that is never copied by accident.
+template <class T>
+class SurfaceBuffer {
+ public:
+  SurfaceBuffer() = default;
+  explicit SurfaceBuffer(size_t count)
+      : data_(static_cast<T*>(detail::allocate_aligned(count * sizeof(T)))), count_(count) {}
+  T* data() { return data_.get(); }
+  const T* data() const { return data_.get(); }
+  size_t size() const { return count_; }
+  T& operator[](size_t i) { return data_.get()[i]; }
+  const T& operator[](size_t i) const { return data_.get()[i]; }
+
+ private:
+  std::unique_ptr<T, detail::FreeAligned> data_;
+  size_t count_ = 0;
+};
+
+/// An RGBA8 color target.
+class ColorTarget {
+ public:
+  ColorTarget(int width, int height, int samples = 1);
+
+  const SurfaceLayout& layout() const { return layout_; }
+  int width() const { return layout_.width; }
+  int height() const { return layout_.height; }
+  int samples() const { return layout_.samples; }
+  uint32_t* tile(int t) { return texels_.data() + t * layout_.elements_per_tile(); }
+  const uint32_t* tile(int t) const { return texels_.data() + t * layout_.elements_per_tile(); }
+  uint32_t sample(int x, int y, int s) const { return texels_[layout_.index(x, y, s)]; }
+  void set_sample(int x, int y, int s, uint32_t rgba) { texels_[layout_.index(x, y, s)] = rgba; }
+
+ private:
+  SurfaceLayout layout_;
+  SurfaceBuffer<uint32_t> texels_;
+};
+
+/// Float depth in [0, 1] and an 8-bit stencil value per sample.
+class DepthStencilTarget {
+ public:
+  DepthStencilTarget(int width, int height, int samples = 1);
+
+  const SurfaceLayout& layout() const { return layout_; }
+  int width() const { return layout_.width; }
+  int height() const { return layout_.height; }
+  int samples() const { return layout_.samples; }
+  float* depth_tile(int t) { return depth_.data() + t * layout_.elements_per_tile(); }
+  uint8_t* stencil_tile(int t) { return stencil_.data() + t * layout_.elements_per_tile(); }
+  float depth(int x, int y, int s) const { return depth_[layout_.index(x, y, s)]; }
+  uint8_t stencil(int x, int y, int s) const { return stencil_[layout_.index(x, y, s)]; }
+
+ private:
+  SurfaceLayout layout_;
+  SurfaceBuffer<float> depth_;
+  SurfaceBuffer<uint8_t> stencil_;
+};
+
+/// What a draw renders into. Either target may be absent; present targets must share size and
+/// sample count.
+struct Framebuffer {
+  ColorTarget* color = nullptr;
+  DepthStencilTarget* depth_stencil = nullptr;
+};
+
+/// Packs a color with round-to-nearest after clamping to [0, 1] (NaN becomes 0).
+uint32_t pack_rgba8(glm::vec4 color);
+glm::vec4 unpack_rgba8(uint32_t rgba);
+
+/// Records a clear of every sample (runs at the next flush, like draws).
+void clear_color(Context& ctx, ColorTarget& target, glm::vec4 color);
+void clear_depth_stencil(Context& ctx, DepthStencilTarget& target, float depth, uint8_t stencil);
+
+/// Box-filter resolve: each channel of each pixel is the rounded mean of its samples' 8-bit
+/// values (a plain copy out of the tiled layout for one sample). Flushes the context.
+Image resolve(Context& ctx, const ColorTarget& target);
+/// The same into an existing image (reallocated only when its size differs).
+void resolve_into(Context& ctx, const ColorTarget& target, Image& image);
+
+}  // namespace luxel::rasterizer

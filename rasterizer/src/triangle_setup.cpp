@@ -1,0 +1,270 @@
+// The front end of a draw: trivial reject, clipping (near, far, guard band), perspective divide,
+// viewport transform, snapping to 1/256 pixel, culling, edge and plane setup, and binning.
+
+#include "luxel/rasterizer/detail/triangle_setup.hpp"
+
+#include "luxel/rasterizer/draw.hpp"
+#include "luxel/rasterizer/msaa.hpp"
+#include "luxel/rasterizer/simd.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdlib>
+
+namespace luxel::rasterizer::detail {
+
+void ChunkBins::reset(int tile_count) {
+  setups.clear();
+  attributes.clear();
+  if (static_cast<int>(tile_lists.size()) != tile_count) {
+    tile_lists.assign(tile_count, {});
+  } else {
+    for (uint32_t t : touched_tiles) tile_lists[t].clear();
+  }
+  touched_tiles.clear();
+}
+
+namespace {
+
+constexpr int kMaxClipVertices = 3 + 6;  // each of the 6 clip planes adds at most one vertex
+constexpr int kFloatsPerVertex = 4 * (1 + kMaxVaryings);
+
+/// A vertex being clipped: position then varyings, all float4.
+struct ClipVertex {
+  float v[kFloatsPerVertex];
+};
+
+/// Clip planes: a vertex is inside when dot(plane, position) >= 0.
+struct ClipPlanes {
+  glm::vec4 plane[6];
+};
+
+ClipPlanes make_clip_planes(const DrawConstants& dc) {
+  return {{
+      {0, 0, 1, 0},                   // near: z >= 0
+      {0, 0, -1, 1},                  // far: z <= w
+      {1, 0, 0, -dc.guard_min_x},     // x >= guard_min_x * w
+      {-1, 0, 0, dc.guard_max_x},     // x <= guard_max_x * w
+      {0, 1, 0, -dc.guard_min_y},
+      {0, -1, 0, dc.guard_max_y},
+  }};
+}
+
+float plane_distance(const glm::vec4& plane, const float* p) {
+  return plane.x * p[0] + plane.y * p[1] + plane.z * p[2] + plane.w * p[3];
+}
+
+/// Sutherland-Hodgman against one plane; returns the new vertex count.
+int clip_polygon(const glm::vec4& plane, const ClipVertex* in, int n, ClipVertex* out, int floats) {
+  int m = 0;
+  for (int i = 0; i < n; ++i) {
+    const ClipVertex& a = in[i];
+    const ClipVertex& b = in[(i + 1) % n];
+    const float da = plane_distance(plane, a.v);
+    const float db = plane_distance(plane, b.v);
+    if (da >= 0) out[m++] = a;
+    if ((da >= 0) != (db >= 0)) {
+      // Interpolate from the inside vertex so that a shared edge clips to the same point from
+      // both of its triangles (watertight clipping).
+      const bool a_inside = da >= 0;
+      const ClipVertex& from = a_inside ? a : b;
+      const ClipVertex& to = a_inside ? b : a;
+      const float dfrom = a_inside ? da : db, dto = a_inside ? db : da;
+      const float t = dfrom / (dfrom - dto);
+      ClipVertex& v = out[m++];
+      for (int k = 0; k < floats; ++k) v.v[k] = from.v[k] + t * (to.v[k] - from.v[k]);
+    }
+  }
+  return m;
+}
+
+bool finite_position(const glm::vec4& p) {
+  return std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z) && std::isfinite(p.w);
+}
+
+struct ScreenVertex {
+  int32_t X, Y;    // subpixels
+  float x, y;      // pixels (snapped)
+  float z, inv_w;
+};
+
+/// Plane through three values at the snapped vertex positions. `det` is the signed doubled
+/// area in pixels^2 (v1-v0) x (v2-v0).
+Plane make_plane(const ScreenVertex* v, double q0, double q1, double q2, double det) {
+  const double e1x = double(v[1].x) - v[0].x, e1y = double(v[1].y) - v[0].y;
+  const double e2x = double(v[2].x) - v[0].x, e2y = double(v[2].y) - v[0].y;
+  const double d1 = q1 - q0, d2 = q2 - q0;
+  return {static_cast<float>(q0), static_cast<float>((d1 * e2y - d2 * e1y) / det),
+          static_cast<float>((d2 * e1x - d1 * e2x) / det)};
+}
+
+Edge make_edge(int32_t x0, int32_t y0, int32_t x1, int32_t y1) {
+  const int32_t dx = x1 - x0, dy = y1 - y0;
+  Edge e{-dy, dx, int64_t(dy) * x0 - int64_t(dx) * y0};
+  // Top-left rule (y down, interior on the positive side): left edges go up, top edges are
+  // horizontal and go right. Samples exactly on other edges are outside.
+  const bool top_left = dy < 0 || (dy == 0 && dx > 0);
+  if (!top_left) e.c -= 1;
+  return e;
+}
+
+/// Sets up and bins one triangle whose vertices are inside the clip volume (w > 0, within the
+/// guard band). `v[k]` points at a position followed by varyings.
+void setup_and_bin(const DrawConstants& dc, const float* const v[3], ChunkBins& bins, DrawStats& stats) {
+  ScreenVertex s[3];
+  for (int k = 0; k < 3; ++k) {
+    const float w = v[k][3];
+    const float inv_w = 1.0f / w;
+    if (!(w > 0) || !std::isfinite(inv_w)) {
+      ++stats.degenerate;
+      return;
+    }
+    const float nx = v[k][0] * inv_w, ny = v[k][1] * inv_w, nz = v[k][2] * inv_w;
+    const float sx = dc.vp_x + (nx + 1.0f) * dc.half_w;
+    const float sy = dc.vp_y + (1.0f - ny) * dc.half_h;
+    s[k].X = static_cast<int32_t>(std::nearbyint(sx * kSubpixelsPerPixel));
+    s[k].Y = static_cast<int32_t>(std::nearbyint(sy * kSubpixelsPerPixel));
+    s[k].x = static_cast<float>(s[k].X) * (1.0f / kSubpixelsPerPixel);
+    s[k].y = static_cast<float>(s[k].Y) * (1.0f / kSubpixelsPerPixel);
+    s[k].z = dc.min_depth + nz * (dc.max_depth - dc.min_depth);
+    s[k].inv_w = inv_w;
+  }
+  const int64_t area2 = int64_t(s[1].X - s[0].X) * (s[2].Y - s[0].Y) - int64_t(s[2].X - s[0].X) * (s[1].Y - s[0].Y);
+  if (area2 == 0) {
+    ++stats.degenerate;
+    return;
+  }
+  const bool clockwise = area2 > 0;  // on screen, y down
+  const CullMode cull = dc.rasterizer.cull;
+  if ((cull == CullMode::CW && clockwise) || (cull == CullMode::CCW && !clockwise)) {
+    ++stats.culled;
+    return;
+  }
+
+  TriangleSetup t;
+  // Bounds: a sample lies in [0, 240] subpixels from its pixel's corner, so the pixels that
+  // may hold a covered sample are those that meet the vertices' bounding box.
+  const int32_t min_x = std::min({s[0].X, s[1].X, s[2].X}), max_x = std::max({s[0].X, s[1].X, s[2].X});
+  const int32_t min_y = std::min({s[0].Y, s[1].Y, s[2].Y}), max_y = std::max({s[0].Y, s[1].Y, s[2].Y});
+  t.x0 = std::max(dc.clip_x0, min_x >> kSubpixelBits);
+  t.y0 = std::max(dc.clip_y0, min_y >> kSubpixelBits);
+  t.x1 = std::min(dc.clip_x1, (max_x >> kSubpixelBits) + 1);
+  t.y1 = std::min(dc.clip_y1, (max_y >> kSubpixelBits) + 1);
+  if (t.x0 >= t.x1 || t.y0 >= t.y1) {
+    ++stats.degenerate;
+    return;
+  }
+
+  // Edges on the vertices in positive (clockwise) order.
+  const int i1 = clockwise ? 1 : 2, i2 = clockwise ? 2 : 1;
+  t.edge[0] = make_edge(s[0].X, s[0].Y, s[i1].X, s[i1].Y);
+  t.edge[1] = make_edge(s[i1].X, s[i1].Y, s[i2].X, s[i2].Y);
+  t.edge[2] = make_edge(s[i2].X, s[i2].Y, s[0].X, s[0].Y);
+  t.narrow_edges = true;
+  for (const Edge& e : t.edge) {
+    const int64_t span = std::abs(int64_t(e.a)) * (simd::kStampWidth * kSubpixelsPerPixel) +
+                         std::abs(int64_t(e.b)) * (simd::kStampHeight * kSubpixelsPerPixel);
+    if (span > kNarrowEdgeLimit) t.narrow_edges = false;
+  }
+
+  // Planes, in the vertices' own order.
+  const double det = double(area2) / (double(kSubpixelsPerPixel) * kSubpixelsPerPixel);
+  t.ref_x = s[0].x;
+  t.ref_y = s[0].y;
+  t.z = make_plane(s, s[0].z, s[1].z, s[2].z, det);
+  if (dc.rasterizer.depth_bias != 0 || dc.rasterizer.slope_scaled_depth_bias != 0) {
+    const float slope = std::max(std::abs(t.z.dqdx), std::abs(t.z.dqdy));
+    t.z.q0 += dc.rasterizer.depth_bias + dc.rasterizer.slope_scaled_depth_bias * slope;
+  }
+  t.inv_w = make_plane(s, s[0].inv_w, s[1].inv_w, s[2].inv_w, det);
+  t.b1_w = make_plane(s, 0.0, s[1].inv_w, 0.0, det);
+  t.b2_w = make_plane(s, 0.0, 0.0, s[2].inv_w, det);
+  t.front_facing = dc.rasterizer.front_counter_clockwise ? !clockwise : clockwise;
+
+  t.attributes = static_cast<uint32_t>(bins.attributes.size());
+  for (int c = 0; c < 4 * dc.varyings; ++c) {
+    const float a0 = v[0][4 + c], a1 = v[1][4 + c], a2 = v[2][4 + c];
+    bins.attributes.push_back(a0);
+    bins.attributes.push_back(a1 - a0);
+    bins.attributes.push_back(a2 - a0);
+  }
+
+  // Bin: every tile the bounds touch, less those wholly outside an edge.
+  const uint32_t index = static_cast<uint32_t>(bins.setups.size());
+  bins.setups.push_back(t);
+  ++stats.rasterized;
+  const int tx0 = t.x0 / kTileSize, tx1 = (t.x1 - 1) / kTileSize;
+  const int ty0 = t.y0 / kTileSize, ty1 = (t.y1 - 1) / kTileSize;
+  const bool single_tile = tx0 == tx1 && ty0 == ty1;
+  for (int ty = ty0; ty <= ty1; ++ty) {
+    for (int tx = tx0; tx <= tx1; ++tx) {
+      if (!single_tile) {
+        const int64_t X0 = int64_t(tx) * kTileSize * kSubpixelsPerPixel, X1 = X0 + kTileSize * kSubpixelsPerPixel - 1;
+        const int64_t Y0 = int64_t(ty) * kTileSize * kSubpixelsPerPixel, Y1 = Y0 + kTileSize * kSubpixelsPerPixel - 1;
+        bool outside = false;
+        for (const Edge& e : t.edge) {
+          const int64_t emax = e.c + std::max(e.a * X0, e.a * X1) + std::max(e.b * Y0, e.b * Y1);
+          if (emax < 0) outside = true;
+        }
+        if (outside) continue;
+      }
+      const int tile = ty * dc.tiles_x + tx;
+      std::vector<uint32_t>& list = bins.tile_lists[tile];
+      if (list.empty()) bins.touched_tiles.push_back(static_cast<uint32_t>(tile));
+      list.push_back(index);
+    }
+  }
+}
+
+}  // namespace
+
+void process_triangle(const DrawConstants& dc, const glm::vec4* const vertices[3], ChunkBins& bins, DrawStats& stats) {
+  const glm::vec4& p0 = vertices[0][0];
+  const glm::vec4& p1 = vertices[1][0];
+  const glm::vec4& p2 = vertices[2][0];
+  if (!finite_position(p0) || !finite_position(p1) || !finite_position(p2)) {
+    ++stats.non_finite;
+    return;
+  }
+  // Trivial reject: all three outside one plane of the view volume.
+  auto all_outside = [&](auto outside) { return outside(p0) && outside(p1) && outside(p2); };
+  if (all_outside([](const glm::vec4& p) { return p.x < -p.w; }) ||
+      all_outside([](const glm::vec4& p) { return p.x > p.w; }) ||
+      all_outside([](const glm::vec4& p) { return p.y < -p.w; }) ||
+      all_outside([](const glm::vec4& p) { return p.y > p.w; }) ||
+      all_outside([](const glm::vec4& p) { return p.z < 0; }) ||
+      all_outside([](const glm::vec4& p) { return p.z > p.w; })) {
+    ++stats.outside;
+    return;
+  }
+  const ClipPlanes planes = make_clip_planes(dc);
+  unsigned outside_mask = 0;
+  for (int k = 0; k < 3; ++k) {
+    for (int i = 0; i < 6; ++i) {
+      if (plane_distance(planes.plane[i], &vertices[k][0].x) < 0) outside_mask |= 1u << i;
+    }
+  }
+  const float* v[3] = {&vertices[0][0].x, &vertices[1][0].x, &vertices[2][0].x};
+  if (outside_mask == 0) {
+    setup_and_bin(dc, v, bins, stats);
+    return;
+  }
+
+  ++stats.clipped;
+  const int floats = 4 * (1 + dc.varyings);
+  ClipVertex buffer[2][kMaxClipVertices];
+  for (int k = 0; k < 3; ++k) std::copy(v[k], v[k] + floats, buffer[0][k].v);
+  int n = 3, current = 0;
+  for (int i = 0; i < 6 && n >= 3; ++i) {
+    if (!(outside_mask & (1u << i))) continue;
+    n = clip_polygon(planes.plane[i], buffer[current], n, buffer[1 - current], floats);
+    current = 1 - current;
+  }
+  // Fan from the first vertex keeps the original winding.
+  for (int k = 1; k + 1 < n; ++k) {
+    const float* tri[3] = {buffer[current][0].v, buffer[current][k].v, buffer[current][k + 1].v};
+    setup_and_bin(dc, tri, bins, stats);
+  }
+}
+
+}  // namespace luxel::rasterizer::detail
