@@ -10,16 +10,15 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
+#include <new>
 
 namespace luxel::rasterizer::detail {
 
 void ChunkBins::reset(int tile_count) {
-  setups.clear();
-  attributes.clear();
-  if (static_cast<int>(tile_lists.size()) != tile_count) {
-    tile_lists.assign(tile_count, {});
+  if (static_cast<int>(tile_records.size()) != tile_count) {
+    tile_records.assign(tile_count, {});
   } else {
-    for (uint32_t t : touched_tiles) tile_lists[t].clear();
+    for (uint32_t t : touched_tiles) tile_records[t].clear();
   }
   touched_tiles.clear();
 }
@@ -141,19 +140,25 @@ void setup_and_bin(const DrawConstants& dc, const float* const v[3], ChunkBins& 
     return;
   }
 
-  TriangleSetup t;
+  alignas(16) std::byte record[triangle_record_size(kMaxVaryings)];
+  TriangleSetup& t = *new (record) TriangleSetup;
   // Bounds: a sample lies in [0, 240] subpixels from its pixel's corner, so the pixels that
   // may hold a covered sample are those that meet the vertices' bounding box.
   const int32_t min_x = std::min({s[0].X, s[1].X, s[2].X}), max_x = std::max({s[0].X, s[1].X, s[2].X});
   const int32_t min_y = std::min({s[0].Y, s[1].Y, s[2].Y}), max_y = std::max({s[0].Y, s[1].Y, s[2].Y});
-  t.x0 = std::max(dc.clip_x0, min_x >> kSubpixelBits);
-  t.y0 = std::max(dc.clip_y0, min_y >> kSubpixelBits);
-  t.x1 = std::min(dc.clip_x1, (max_x >> kSubpixelBits) + 1);
-  t.y1 = std::min(dc.clip_y1, (max_y >> kSubpixelBits) + 1);
-  if (t.x0 >= t.x1 || t.y0 >= t.y1) {
+  const int x0 = std::max(dc.clip_x0, min_x >> kSubpixelBits);
+  const int y0 = std::max(dc.clip_y0, min_y >> kSubpixelBits);
+  const int x1 = std::min(dc.clip_x1, (max_x >> kSubpixelBits) + 1);
+  const int y1 = std::min(dc.clip_y1, (max_y >> kSubpixelBits) + 1);
+  if (x0 >= x1 || y0 >= y1) {
     ++stats.degenerate;
     return;
   }
+
+  t.x0 = static_cast<int16_t>(x0);
+  t.y0 = static_cast<int16_t>(y0);
+  t.x1 = static_cast<int16_t>(x1);
+  t.y1 = static_cast<int16_t>(y1);
 
   // Edges on the vertices in positive (clockwise) order.
   const int i1 = clockwise ? 1 : 2, i2 = clockwise ? 2 : 1;
@@ -181,18 +186,17 @@ void setup_and_bin(const DrawConstants& dc, const float* const v[3], ChunkBins& 
   t.b2_w = make_plane(s, 0.0, 0.0, s[2].inv_w, det);
   t.front_facing = dc.rasterizer.front_counter_clockwise ? !clockwise : clockwise;
 
-  t.attributes = static_cast<uint32_t>(bins.attributes.size());
+  float* varyings = reinterpret_cast<float*>(&t + 1);
   for (int c = 0; c < 4 * dc.varyings; ++c) {
     const float a0 = v[0][4 + c], a1 = v[1][4 + c], a2 = v[2][4 + c];
-    bins.attributes.push_back(a0);
-    bins.attributes.push_back(a1 - a0);
-    bins.attributes.push_back(a2 - a0);
+    varyings[3 * c] = a0;
+    varyings[3 * c + 1] = a1 - a0;
+    varyings[3 * c + 2] = a2 - a0;
   }
 
   // Bin: every tile the bounds touch, less those wholly outside an edge.
-  const uint32_t index = static_cast<uint32_t>(bins.setups.size());
-  bins.setups.push_back(t);
   ++stats.rasterized;
+  const size_t size = triangle_record_size(dc.varyings);
   const int tx0 = t.x0 / kTileSize, tx1 = (t.x1 - 1) / kTileSize;
   const int ty0 = t.y0 / kTileSize, ty1 = (t.y1 - 1) / kTileSize;
   const bool single_tile = tx0 == tx1 && ty0 == ty1;
@@ -209,9 +213,9 @@ void setup_and_bin(const DrawConstants& dc, const float* const v[3], ChunkBins& 
         if (outside) continue;
       }
       const int tile = ty * dc.tiles_x + tx;
-      std::vector<uint32_t>& list = bins.tile_lists[tile];
-      if (list.empty()) bins.touched_tiles.push_back(static_cast<uint32_t>(tile));
-      list.push_back(index);
+      std::vector<std::byte>& records = bins.tile_records[tile];
+      if (records.empty()) bins.touched_tiles.push_back(static_cast<uint32_t>(tile));
+      records.insert(records.end(), record, record + size);
     }
   }
 }

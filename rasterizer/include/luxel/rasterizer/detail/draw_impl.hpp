@@ -27,12 +27,33 @@ struct DrawPlan {
 
 DrawPlan plan_draw(const Framebuffer& fb, const PipelineState& state, int varyings);
 
-/// Rasterizes the triangles binned to one tile, in submission order.
-template <class PS, int N, bool kEarlyZ>
+/// Lane constants of a stamp, built once.
+struct StampLanes {
+  Float center_x, center_y;  ///< pixel-center offsets of the lanes from the stamp's corner
+  Int x_sub, y_sub;          ///< pixel offsets of the lanes in subpixels
+  Int bit;                   ///< 1 << lane
+  StampLanes()
+      : center_x(simd::lanes([](int l) { return simd::lane_x(l) + 0.5f; })),
+        center_y(simd::lanes([](int l) { return simd::lane_y(l) + 0.5f; })),
+        x_sub(simd::lanes<Int>([](int l) { return simd::lane_x(l) * kSubpixelsPerPixel; })),
+        y_sub(simd::lanes<Int>([](int l) { return simd::lane_y(l) * kSubpixelsPerPixel; })),
+        bit(simd::lanes<Int>([](int l) { return 1 << l; })) {}
+};
+inline const StampLanes& stamp_lanes() {
+  static const StampLanes lanes;
+  return lanes;
+}
+
+inline Float eval_plane(const Plane& p, const Float& dx, const Float& dy) {
+  return xsimd::fma(Float(p.dqdx), dx, xsimd::fma(Float(p.dqdy), dy, Float(p.q0)));
+}
+
+/// Rasterizes the triangles binned to one tile, in submission order. S is the sample count.
+template <class PS, int N, bool kEarlyZ, int S>
 class TileRasterizer {
  public:
-  TileRasterizer(const DrawPlan& plan, const PS& ps, int tile)
-      : plan_(plan), ps_(ps), state_(*plan.state) {
+  TileRasterizer(const DrawPlan& plan, const PS& ps, int tile, bool count_samples)
+      : plan_(plan), ps_(ps), state_(*plan.state), lanes_(stamp_lanes()), count_samples_(count_samples) {
     const int tx = tile % plan.layout.tiles_x, ty = tile / plan.layout.tiles_x;
     tile_x_ = tx * kTileSize;
     tile_y_ = ty * kTileSize;
@@ -44,104 +65,94 @@ class TileRasterizer {
     clip_y0_ = std::max(dc.clip_y0, tile_y_);
     clip_x1_ = std::min(dc.clip_x1, tile_x_ + kTileSize);
     clip_y1_ = std::min(dc.clip_y1, tile_y_ + kTileSize);
-    samples_ = plan.layout.samples;
-    for (int s = 0; s < samples_; ++s) {
+    whole_tile_ = clip_x0_ == tile_x_ && clip_y0_ == tile_y_ && clip_x1_ == tile_x_ + kTileSize &&
+                  clip_y1_ == tile_y_ + kTileSize;
+    for (int s = 0; s < S; ++s) {
       sample_x_[s] = sample_subpixel(plan.sample_offsets[s].x);
       sample_y_[s] = sample_subpixel(plan.sample_offsets[s].y);
       sample_dx_[s] = simd::lanes([&](int l) { return simd::lane_x(l) + sample_x_[s] / 256.0f; });
       sample_dy_[s] = simd::lanes([&](int l) { return simd::lane_y(l) + sample_y_[s] / 256.0f; });
     }
+    simple_depth_ = depth_ && !plan.stencil;
+    plain_color_ = color_ && !state_.blend.enable && plan.color_write_mask == 0xffffffffu;
   }
 
-  void triangle(const TriangleSetup& t, const float* attributes);
+  void triangle(const TriangleSetup& t);
 
   uint64_t samples_passed = 0;
   DrawStats stats;
 
  private:
-  void rasterize_narrow(const TriangleSetup& t, const float* attributes, int x0, int y0, int x1, int y1);
-  void rasterize_wide(const TriangleSetup& t, const float* attributes, int x0, int y0, int x1, int y1);
-  LaneBits clip_lanes(int px, int py) const;
-  void shade_stamp(const TriangleSetup& t, const float* attributes, int px, int py, LaneBits* coverage);
-  LaneBits depth_stencil_test(const TriangleSetup& t, int px, int py, int stamp, int s, LaneBits coverage,
-                              const Float* shader_depth);
+  void rasterize_narrow(const TriangleSetup& t, int x0, int y0, int x1, int y1);
+  void rasterize_wide(const TriangleSetup& t, int x0, int y0, int x1, int y1);
+  LaneBits clip_lanes(int px, int py) const {
+    if (whole_tile_) return simd::kAllLanes;
+    if (px >= clip_x0_ && px + simd::kStampWidth <= clip_x1_ && py >= clip_y0_ && py + simd::kStampHeight <= clip_y1_)
+      return simd::kAllLanes;
+    LaneBits bits = 0;
+    for (int l = 0; l < simd::kLanes; ++l) {
+      const int x = px + simd::lane_x(l), y = py + simd::lane_y(l);
+      if (x >= clip_x0_ && x < clip_x1_ && y >= clip_y0_ && y < clip_y1_) bits |= 1u << l;
+    }
+    return bits;
+  }
+  IntMask lane_mask(LaneBits bits) const { return (Int(static_cast<int32_t>(bits)) & lanes_.bit) != Int(0); }
+  void shade_stamp(const TriangleSetup& t, int px, int py, LaneBits* coverage);
+  LaneBits depth_stencil_test(const TriangleSetup& t, const Float& dx, const Float& dy, int stamp, int s,
+                              LaneBits coverage, const Float* shader_depth);
   void write_color(int stamp, int s, LaneBits coverage, const simd::Float4& color, const Int& packed);
 
   const DrawPlan& plan_;
   const PS& ps_;
   const PipelineState& state_;
+  const StampLanes& lanes_;
+  bool count_samples_;
+  bool whole_tile_;
+  bool simple_depth_;   ///< depth buffer without stencil
+  bool plain_color_;    ///< no blending, all channels written
   int tile_x_, tile_y_;
   int clip_x0_, clip_y0_, clip_x1_, clip_y1_;
-  int samples_;
   uint32_t* color_;
   float* depth_;
   uint8_t* stencil_;
-  int sample_x_[kMaxSamples], sample_y_[kMaxSamples];
-  Float sample_dx_[kMaxSamples], sample_dy_[kMaxSamples];
+  int sample_x_[S], sample_y_[S];
+  Float sample_dx_[S], sample_dy_[S];
 };
 
-inline const Float& lane_center_x() {
-  static const Float v = simd::lanes([](int l) { return simd::lane_x(l) + 0.5f; });
-  return v;
-}
-inline const Float& lane_center_y() {
-  static const Float v = simd::lanes([](int l) { return simd::lane_y(l) + 0.5f; });
-  return v;
-}
-
-inline Float eval_plane(const Plane& p, const Float& dx, const Float& dy) {
-  return xsimd::fma(Float(p.dqdx), dx, xsimd::fma(Float(p.dqdy), dy, Float(p.q0)));
-}
-
-template <class PS, int N, bool kEarlyZ>
-LaneBits TileRasterizer<PS, N, kEarlyZ>::clip_lanes(int px, int py) const {
-  if (px >= clip_x0_ && px + simd::kStampWidth <= clip_x1_ && py >= clip_y0_ && py + simd::kStampHeight <= clip_y1_)
-    return simd::kAllLanes;
-  LaneBits bits = 0;
-  for (int l = 0; l < simd::kLanes; ++l) {
-    const int x = px + simd::lane_x(l), y = py + simd::lane_y(l);
-    if (x >= clip_x0_ && x < clip_x1_ && y >= clip_y0_ && y < clip_y1_) bits |= 1u << l;
-  }
-  return bits;
-}
-
-template <class PS, int N, bool kEarlyZ>
-void TileRasterizer<PS, N, kEarlyZ>::triangle(const TriangleSetup& t, const float* attributes) {
+template <class PS, int N, bool kEarlyZ, int S>
+void TileRasterizer<PS, N, kEarlyZ, S>::triangle(const TriangleSetup& t) {
   // The triangle's pixels in this tile, widened to whole stamps.
-  const int x0 = std::max(t.x0, clip_x0_), y0 = std::max(t.y0, clip_y0_);
-  const int x1 = std::min(t.x1, clip_x1_), y1 = std::min(t.y1, clip_y1_);
+  const int x0 = std::max<int>(t.x0, clip_x0_), y0 = std::max<int>(t.y0, clip_y0_);
+  const int x1 = std::min<int>(t.x1, clip_x1_), y1 = std::min<int>(t.y1, clip_y1_);
   if (x0 >= x1 || y0 >= y1) return;
   const int sx0 = x0 & ~(simd::kStampWidth - 1), sy0 = y0 & ~(simd::kStampHeight - 1);
   if (t.narrow_edges) {
-    rasterize_narrow(t, attributes, sx0, sy0, x1, y1);
+    rasterize_narrow(t, sx0, sy0, x1, y1);
   } else {
-    rasterize_wide(t, attributes, sx0, sy0, x1, y1);
+    rasterize_wide(t, sx0, sy0, x1, y1);
   }
 }
 
-template <class PS, int N, bool kEarlyZ>
-void TileRasterizer<PS, N, kEarlyZ>::rasterize_narrow(const TriangleSetup& t, const float* attributes, int sx0,
-                                                     int sy0, int x1, int y1) {
+template <class PS, int N, bool kEarlyZ, int S>
+void TileRasterizer<PS, N, kEarlyZ, S>::rasterize_narrow(const TriangleSetup& t, int sx0, int sy0, int x1, int y1) {
   constexpr int kStampW = simd::kStampWidth * kSubpixelsPerPixel;
   constexpr int kStampH = simd::kStampHeight * kSubpixelsPerPixel;
   constexpr int64_t kClamp = int64_t(1) << 30;
-  static const Int lane_x_sub = simd::lanes<Int>([](int l) { return simd::lane_x(l) * kSubpixelsPerPixel; });
-  static const Int lane_y_sub = simd::lanes<Int>([](int l) { return simd::lane_y(l) * kSubpixelsPerPixel; });
 
   Int pixel_offset[3];
-  int32_t sample_offset[3][kMaxSamples];
+  int32_t sample_offset[3][S];
   int64_t min_offset[3], max_offset[3];
   for (int e = 0; e < 3; ++e) {
     const Edge& E = t.edge[e];
-    pixel_offset[e] = Int(E.a) * lane_x_sub + Int(E.b) * lane_y_sub;
-    for (int s = 0; s < samples_; ++s) sample_offset[e][s] = E.a * sample_x_[s] + E.b * sample_y_[s];
+    pixel_offset[e] = Int(E.a) * lanes_.x_sub + Int(E.b) * lanes_.y_sub;
+    for (int s = 0; s < S; ++s) sample_offset[e][s] = E.a * sample_x_[s] + E.b * sample_y_[s];
     // Bounds of the edge over the stamp's area (conservative: the whole rectangle).
     const int64_t ax = int64_t(E.a) * (kStampW - 1), by = int64_t(E.b) * (kStampH - 1);
     min_offset[e] = std::min<int64_t>(0, ax) + std::min<int64_t>(0, by);
     max_offset[e] = std::max<int64_t>(0, ax) + std::max<int64_t>(0, by);
   }
 
-  LaneBits coverage[kMaxSamples];
+  LaneBits coverage[S];
   for (int py = sy0; py < y1; py += simd::kStampHeight) {
     int64_t row[3];
     for (int e = 0; e < 3; ++e)
@@ -153,40 +164,39 @@ void TileRasterizer<PS, N, kEarlyZ>::rasterize_narrow(const TriangleSetup& t, co
       if (e0 + max_offset[0] < 0 || e1 + max_offset[1] < 0 || e2 + max_offset[2] < 0) continue;
       const LaneBits clip = clip_lanes(px, py);
       if (e0 + min_offset[0] >= 0 && e1 + min_offset[1] >= 0 && e2 + min_offset[2] >= 0) {
-        for (int s = 0; s < samples_; ++s) coverage[s] = clip;
+        for (int s = 0; s < S; ++s) coverage[s] = clip;
         ++stats.stamps_full;
       } else {
-        ++stats.stamps_partial;
         // Per sample: the three edges at every lane, 32-bit. An edge value beyond +-2^30 at the
         // stamp corner keeps its sign over the whole stamp, so clamping it changes nothing.
-        const int32_t c0 = static_cast<int32_t>(std::clamp(e0, -kClamp, kClamp));
-        const int32_t c1 = static_cast<int32_t>(std::clamp(e1, -kClamp, kClamp));
-        const int32_t c2 = static_cast<int32_t>(std::clamp(e2, -kClamp, kClamp));
+        const Int c0(static_cast<int32_t>(std::clamp(e0, -kClamp, kClamp)));
+        const Int c1(static_cast<int32_t>(std::clamp(e1, -kClamp, kClamp)));
+        const Int c2(static_cast<int32_t>(std::clamp(e2, -kClamp, kClamp)));
+        const Int p0 = c0 + pixel_offset[0], p1 = c1 + pixel_offset[1], p2 = c2 + pixel_offset[2];
         LaneBits any = 0;
-        for (int s = 0; s < samples_; ++s) {
-          const Int inside = (Int(c0 + sample_offset[0][s]) + pixel_offset[0]) |
-                             (Int(c1 + sample_offset[1][s]) + pixel_offset[1]) |
-                             (Int(c2 + sample_offset[2][s]) + pixel_offset[2]);
+        for (int s = 0; s < S; ++s) {
+          const Int inside = (p0 + Int(sample_offset[0][s])) | (p1 + Int(sample_offset[1][s])) |
+                             (p2 + Int(sample_offset[2][s]));
           coverage[s] = ~simd::sign_bits(inside) & clip;
           any |= coverage[s];
         }
         if (!any) continue;
+        ++stats.stamps_partial;
       }
-      shade_stamp(t, attributes, px, py, coverage);
+      shade_stamp(t, px, py, coverage);
     }
   }
 }
 
-template <class PS, int N, bool kEarlyZ>
-void TileRasterizer<PS, N, kEarlyZ>::rasterize_wide(const TriangleSetup& t, const float* attributes, int sx0,
-                                                   int sy0, int x1, int y1) {
+template <class PS, int N, bool kEarlyZ, int S>
+void TileRasterizer<PS, N, kEarlyZ, S>::rasterize_wide(const TriangleSetup& t, int sx0, int sy0, int x1, int y1) {
   // Edges too long for 32-bit per-sample steps: exact 64-bit evaluation, one sample at a time.
-  LaneBits coverage[kMaxSamples];
+  LaneBits coverage[S];
   for (int py = sy0; py < y1; py += simd::kStampHeight) {
     for (int px = sx0; px < x1; px += simd::kStampWidth) {
       const LaneBits clip = clip_lanes(px, py);
       LaneBits any = 0;
-      for (int s = 0; s < samples_; ++s) {
+      for (int s = 0; s < S; ++s) {
         LaneBits bits = 0;
         for (int l = 0; l < simd::kLanes; ++l) {
           const int64_t X = int64_t(px + simd::lane_x(l)) * kSubpixelsPerPixel + sample_x_[s];
@@ -201,33 +211,27 @@ void TileRasterizer<PS, N, kEarlyZ>::rasterize_wide(const TriangleSetup& t, cons
       if (!any) continue;
       ++stats.stamps_partial;
       ++stats.stamps_wide_edges;
-      shade_stamp(t, attributes, px, py, coverage);
+      shade_stamp(t, px, py, coverage);
     }
   }
 }
 
-template <class PS, int N, bool kEarlyZ>
-LaneBits TileRasterizer<PS, N, kEarlyZ>::depth_stencil_test(const TriangleSetup& t, int px, int py, int stamp,
-                                                           int s, LaneBits coverage, const Float* shader_depth) {
-  if (!depth_) return coverage;
+template <class PS, int N, bool kEarlyZ, int S>
+LaneBits TileRasterizer<PS, N, kEarlyZ, S>::depth_stencil_test(const TriangleSetup& t, const Float& dx,
+                                                              const Float& dy, int stamp, int s, LaneBits coverage,
+                                                              const Float* shader_depth) {
   const DepthStencilState& ds = state_.depth_stencil;
   float* depth = depth_ + s * kTilePixels + stamp * simd::kLanes;
   const Float dst_depth = Float::load_aligned(depth);
   LaneBits depth_pass = coverage;
   Float z;
   if (plan_.depth_test) {
-    if (shader_depth) {
-      z = *shader_depth;
-    } else {
-      const Float dx = Float(float(px) - t.ref_x) + sample_dx_[s];
-      const Float dy = Float(float(py) - t.ref_y) + sample_dy_[s];
-      z = eval_plane(t.z, dx, dy);
-    }
+    z = shader_depth ? *shader_depth : eval_plane(t.z, dx + sample_dx_[s], dy + sample_dy_[s]);
     z = xsimd::min(xsimd::max(z, Float(plan_.constants.min_depth)), Float(plan_.constants.max_depth));
     depth_pass &= simd::to_bits(compare(ds.depth_func, z, dst_depth));
   }
   LaneBits pass = depth_pass;
-  if (plan_.stencil) {
+  if (!simple_depth_) {
     uint8_t* stencil = stencil_ + s * kTilePixels + stamp * simd::kLanes;
     const StencilFace& face = (ds.two_sided_stencil && !t.front_facing) ? ds.back : ds.front;
     const Int value = simd::load_bytes(stencil);
@@ -238,25 +242,34 @@ LaneBits TileRasterizer<PS, N, kEarlyZ>::depth_stencil_test(const TriangleSetup&
     const LaneBits fail = coverage & ~stencil_pass;
     const LaneBits depth_fail = stencil_pass & ~depth_pass;
     Int updated = value;
-    if (fail) updated = xsimd::select(simd::int_mask(fail), stencil_op(face.fail, value, ds.stencil_ref), updated);
+    if (fail) updated = xsimd::select(lane_mask(fail), stencil_op(face.fail, value, ds.stencil_ref), updated);
     if (depth_fail)
-      updated = xsimd::select(simd::int_mask(depth_fail), stencil_op(face.depth_fail, value, ds.stencil_ref), updated);
-    if (pass) updated = xsimd::select(simd::int_mask(pass), stencil_op(face.pass, value, ds.stencil_ref), updated);
+      updated = xsimd::select(lane_mask(depth_fail), stencil_op(face.depth_fail, value, ds.stencil_ref), updated);
+    if (pass) updated = xsimd::select(lane_mask(pass), stencil_op(face.pass, value, ds.stencil_ref), updated);
     const Int write_mask(ds.stencil_write_mask);
     updated = (value & ~write_mask) | (updated & write_mask);
     simd::store_bytes(stencil, updated);
   }
   if (plan_.depth_write && pass) {
-    xsimd::select(simd::float_mask(pass), z, dst_depth).store_aligned(depth);
+    const FloatMask m = xsimd::bitwise_cast<Float>(Int(lane_mask(pass))) != Float(0.0f);
+    xsimd::select(m, z, dst_depth).store_aligned(depth);
   }
   return pass;
 }
 
-template <class PS, int N, bool kEarlyZ>
-void TileRasterizer<PS, N, kEarlyZ>::write_color(int stamp, int s, LaneBits coverage, const simd::Float4& color,
-                                                const Int& packed) {
-  uint32_t* dst = color_ + s * kTilePixels + stamp * simd::kLanes;
-  const Int old = Int::load_aligned(reinterpret_cast<const int32_t*>(dst));
+template <class PS, int N, bool kEarlyZ, int S>
+void TileRasterizer<PS, N, kEarlyZ, S>::write_color(int stamp, int s, LaneBits coverage, const simd::Float4& color,
+                                                   const Int& packed) {
+  int32_t* dst = reinterpret_cast<int32_t*>(color_ + s * kTilePixels + stamp * simd::kLanes);
+  if (plain_color_) {
+    if (coverage == simd::kAllLanes) {
+      packed.store_aligned(dst);
+    } else {
+      xsimd::select(lane_mask(coverage), packed, Int::load_aligned(dst)).store_aligned(dst);
+    }
+    return;
+  }
+  const Int old = Int::load_aligned(dst);
   Int value = packed;
   const BlendState& b = state_.blend;
   if (b.enable) {
@@ -266,45 +279,51 @@ void TileRasterizer<PS, N, kEarlyZ>::write_color(int stamp, int s, LaneBits cove
   }
   const Int write(static_cast<int32_t>(plan_.color_write_mask));
   value = (value & write) | (old & ~write);
-  xsimd::select(simd::int_mask(coverage), value, old).store_aligned(reinterpret_cast<int32_t*>(dst));
+  xsimd::select(lane_mask(coverage), value, old).store_aligned(dst);
 }
 
-template <class PS, int N, bool kEarlyZ>
-void TileRasterizer<PS, N, kEarlyZ>::shade_stamp(const TriangleSetup& t, const float* attributes, int px, int py,
-                                                 LaneBits* coverage) {
-  const int stamp = pixel_offset_in_tile(px - tile_x_, py - tile_y_) / simd::kLanes;
+template <class PS, int N, bool kEarlyZ, int S>
+void TileRasterizer<PS, N, kEarlyZ, S>::shade_stamp(const TriangleSetup& t, int px, int py, LaneBits* coverage) {
+  const int stamp = ((py - tile_y_) / simd::kStampHeight) * (kTileSize / simd::kStampWidth) +
+                    (px - tile_x_) / simd::kStampWidth;
+  // Offsets of the stamp's corner from the triangle's reference vertex: exact in float.
+  const Float dx(float(px) - t.ref_x), dy(float(py) - t.ref_y);
   LaneBits live = 0;
   if constexpr (kEarlyZ) {
-    for (int s = 0; s < samples_; ++s) {
-      coverage[s] = depth_stencil_test(t, px, py, stamp, s, coverage[s], nullptr);
-      live |= coverage[s];
+    if (depth_) {
+      for (int s = 0; s < S; ++s) {
+        coverage[s] = depth_stencil_test(t, dx, dy, stamp, s, coverage[s], nullptr);
+        live |= coverage[s];
+      }
+      if (!live) return;
+    } else {
+      for (int s = 0; s < S; ++s) live |= coverage[s];
     }
-    if (!live) return;
   } else {
-    for (int s = 0; s < samples_; ++s) live |= coverage[s];
+    for (int s = 0; s < S; ++s) live |= coverage[s];
   }
 
   // Interpolants at the pixel centers, perspective-correct.
   PixelInput<N> in;
-  const Float dx = Float(float(px) - t.ref_x) + lane_center_x();
-  const Float dy = Float(float(py) - t.ref_y) + lane_center_y();
-  in.x = Float(float(px)) + lane_center_x();
-  in.y = Float(float(py)) + lane_center_y();
+  const Float cx = dx + lanes_.center_x, cy = dy + lanes_.center_y;
+  in.x = Float(float(px)) + lanes_.center_x;
+  in.y = Float(float(py)) + lanes_.center_y;
   if constexpr (N > 0) {
-    const Float w = Float(1.0f) / eval_plane(t.inv_w, dx, dy);
-    const Float b1 = eval_plane(t.b1_w, dx, dy) * w;
-    const Float b2 = eval_plane(t.b2_w, dx, dy) * w;
-    const float* a = attributes + t.attributes;
-    for (int i = 0; i < N; ++i) {
-      Float* comp[4] = {&in.varyings[i].x, &in.varyings[i].y, &in.varyings[i].z, &in.varyings[i].w};
-      for (int c = 0; c < 4; ++c, a += 3) *comp[c] = xsimd::fma(b2, Float(a[2]), xsimd::fma(b1, Float(a[1]), Float(a[0])));
+    const Float w = Float(1.0f) / eval_plane(t.inv_w, cx, cy);
+    const Float b1 = eval_plane(t.b1_w, cx, cy) * w;
+    const Float b2 = eval_plane(t.b2_w, cx, cy) * w;
+    const float* a = t.varyings();
+    for (int i = 0; i < N; ++i, a += 12) {
+      in.varyings[i].x = xsimd::fma(b2, Float(a[2]), xsimd::fma(b1, Float(a[1]), Float(a[0])));
+      in.varyings[i].y = xsimd::fma(b2, Float(a[5]), xsimd::fma(b1, Float(a[4]), Float(a[3])));
+      in.varyings[i].z = xsimd::fma(b2, Float(a[8]), xsimd::fma(b1, Float(a[7]), Float(a[6])));
+      in.varyings[i].w = xsimd::fma(b2, Float(a[11]), xsimd::fma(b1, Float(a[10]), Float(a[9])));
     }
   }
   in.live = live;
   in.front_facing = t.front_facing;
   PixelOutput out;
   ps_(in, out);
-  ++stats.stamps_shaded;
 
   if constexpr (!kEarlyZ) {
     LaneBits kill = 0;
@@ -314,20 +333,21 @@ void TileRasterizer<PS, N, kEarlyZ>::shade_stamp(const TriangleSetup& t, const f
       kill |= ~simd::to_bits(compare(state_.alpha_test.func, alpha8, Int(state_.alpha_test.ref)));
     }
     live = 0;
-    for (int s = 0; s < samples_; ++s) {
+    for (int s = 0; s < S; ++s) {
       coverage[s] &= ~kill;
-      if (!coverage[s]) continue;
-      coverage[s] = depth_stencil_test(t, px, py, stamp, s, coverage[s], PS::kWritesDepth ? &out.depth : nullptr);
+      if (coverage[s] && depth_)
+        coverage[s] = depth_stencil_test(t, dx, dy, stamp, s, coverage[s], PS::kWritesDepth ? &out.depth : nullptr);
       live |= coverage[s];
     }
     if (!live) return;
   }
 
-  for (int s = 0; s < samples_; ++s) samples_passed += std::popcount(coverage[s]);
+  if (count_samples_)
+    for (int s = 0; s < S; ++s) samples_passed += std::popcount(coverage[s]);
   if (!color_ || !plan_.color_write_mask) return;
   const simd::Float4 color = saturate(out.color);
   const Int packed = state_.blend.enable ? Int(0) : (state_.blend.srgb_write ? pack_srgb8(color) : pack_unorm8(color));
-  for (int s = 0; s < samples_; ++s) {
+  for (int s = 0; s < S; ++s) {
     if (coverage[s]) write_color(stamp, s, coverage[s], color, packed);
   }
 }
@@ -404,32 +424,31 @@ class DrawCommand final : public Command {
 
   void execute(int tile, TileCounters& counters) override {
     if (!tile_active_[tile]) return;
-    if (early_z_) {
-      run(TileRasterizer<PS, N, true>(plan_, ps_, tile), tile, counters);
-    } else {
-      run(TileRasterizer<PS, N, false>(plan_, ps_, tile), tile, counters);
+    switch (plan_.layout.samples) {
+      case 1: return execute_with<1>(tile, counters);
+      case 2: return execute_with<2>(tile, counters);
+      case 4: return execute_with<4>(tile, counters);
+      default: return execute_with<8>(tile, counters);
     }
   }
 
  private:
+  template <int S>
+  void execute_with(int tile, TileCounters& counters) {
+    if (early_z_) {
+      run(TileRasterizer<PS, N, true, S>(plan_, ps_, tile, query_slot_ >= 0), tile, counters);
+    } else {
+      run(TileRasterizer<PS, N, false, S>(plan_, ps_, tile, query_slot_ >= 0), tile, counters);
+    }
+  }
+
   template <class Rasterizer>
   void run(Rasterizer rasterizer, int tile, TileCounters& counters) {
-    // A tile's triangles are scattered over the whole draw's setup records, so fetch them
-    // ahead: the records of the next kAhead triangles, and the varyings of the one after next.
-    constexpr size_t kAhead = 8;
+    const size_t size = triangle_record_size(N);
     for (const ChunkBins* bins : chunks_) {
-      const std::vector<uint32_t>& list = bins->tile_lists[tile];
-      const TriangleSetup* setups = bins->setups.data();
-      const float* attributes = bins->attributes.data();
-      for (size_t i = 0; i < list.size(); ++i) {
-        if (i + kAhead < list.size()) {
-          const char* ahead = reinterpret_cast<const char*>(setups + list[i + kAhead]);
-          __builtin_prefetch(ahead);
-          __builtin_prefetch(ahead + 64);
-        }
-        if (i + 2 < list.size()) __builtin_prefetch(attributes + setups[list[i + 2]].attributes);
-        rasterizer.triangle(setups[list[i]], attributes);
-      }
+      const std::vector<std::byte>& records = bins->tile_records[tile];
+      for (size_t offset = 0; offset < records.size(); offset += size)
+        rasterizer.triangle(*reinterpret_cast<const TriangleSetup*>(records.data() + offset));
     }
     if (query_slot_ >= 0) counters.query_samples[query_slot_] += rasterizer.samples_passed;
     *counters.stats += rasterizer.stats;

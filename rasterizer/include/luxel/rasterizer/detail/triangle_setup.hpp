@@ -43,26 +43,32 @@ struct Plane {
   float q0, dqdx, dqdy;
 };
 
+/// A binned triangle. In the bins it is followed by its varyings: per component a0, a1-a0, a2-a0.
 struct TriangleSetup {
   Edge edge[3];
-  int32_t x0, y0, x1, y1;  ///< pixel bounds (half-open), inside the draw's clip rectangle
+  int16_t x0, y0, x1, y1;  ///< pixel bounds (half-open), inside the draw's clip rectangle
   float ref_x, ref_y;      ///< pixels: vertex 0, snapped
   Plane z;                 ///< screen-linear depth, bias included
   Plane inv_w;             ///< 1/w
   Plane b1_w, b2_w;        ///< perspective barycentrics of vertices 1 and 2, divided by w
-  uint32_t attributes;     ///< offset of the varyings in ChunkBins::attributes: per component a0, a1-a0, a2-a0
   bool front_facing;
   bool narrow_edges;       ///< per-sample edge values of a stamp fit 32-bit integers
+  const float* varyings() const { return reinterpret_cast<const float*>(this + 1); }
 };
+static_assert(kMaxTargetSize <= INT16_MAX, "pixel bounds are stored in 16 bits");
 
 /// Bound on |a| * stamp width + |b| * stamp height (subpixels) for the 32-bit per-sample path.
 inline constexpr int64_t kNarrowEdgeLimit = int64_t(1) << 29;
 
-/// One chunk of a batch: its triangles' setups and its own bins, one list per tile.
+/// Bytes of one binned triangle with `varyings` float4 interpolants.
+constexpr size_t triangle_record_size(int varyings) {
+  return (sizeof(TriangleSetup) + sizeof(float) * 12 * varyings + 15) / 16 * 16;
+}
+
+/// One chunk of a draw's triangles, binned: per tile, the records of the triangles that touch it
+/// back to back in submission order, so that a tile reads its triangles as one stream.
 struct ChunkBins {
-  std::vector<TriangleSetup> setups;
-  std::vector<float> attributes;
-  std::vector<std::vector<uint32_t>> tile_lists;  ///< indices into setups, submission order
+  std::vector<std::vector<std::byte>> tile_records;
   std::vector<uint32_t> touched_tiles;
 
   void reset(int tile_count);
