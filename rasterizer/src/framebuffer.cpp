@@ -5,6 +5,8 @@
 #include "luxel/rasterizer/msaa.hpp"
 
 #include <algorithm>
+#include <bit>
+#include <cstring>
 #include <cmath>
 #include <cstdlib>
 #include <new>
@@ -99,20 +101,33 @@ class ResolveCommand final : public detail::Command {
  public:
   ResolveCommand(const ColorTarget& target, Image& image) : target_(target), image_(image) {}
   void execute(int tile, detail::TileCounters&) override {
+    using simd::Int;
     const SurfaceLayout& L = target_.layout();
     const int samples = L.samples;
+    const int shift = std::countr_zero(static_cast<unsigned>(samples));  // samples is a power of two
     const int x0 = (tile % L.tiles_x) * kTileSize, y0 = (tile / L.tiles_x) * kTileSize;
+    const int width = std::min(kTileSize, L.width - x0), height = std::min(kTileSize, L.height - y0);
     const uint32_t* texels = target_.tile(tile);
-    for (int y = y0; y < std::min(L.height, y0 + kTileSize); ++y) {
-      for (int x = x0; x < std::min(L.width, x0 + kTileSize); ++x) {
-        const int offset = pixel_offset_in_tile(x - x0, y - y0);
-        uint32_t sum[4] = {0, 0, 0, 0};
+    const Int low_bytes(0x00ff00ff), half(samples / 2 * 0x00010001);
+    constexpr int kStampsPerRow = kTileSize / simd::kStampWidth;
+    for (int sy = 0; sy < height; sy += simd::kStampHeight) {
+      for (int sx = 0; sx < width; sx += simd::kStampWidth) {
+        const int stamp = (sy / simd::kStampHeight) * kStampsPerRow + sx / simd::kStampWidth;
+        // Channels r, b and g, a summed in 16-bit halves of two accumulators.
+        Int rb(0), ga(0);
         for (int s = 0; s < samples; ++s) {
-          const uint32_t v = texels[s * kTilePixels + offset];
-          for (int c = 0; c < 4; ++c) sum[c] += (v >> (8 * c)) & 255;
+          const Int v = Int::load_aligned(reinterpret_cast<const int32_t*>(texels + s * kTilePixels + stamp * simd::kLanes));
+          rb += v & low_bytes;
+          ga += xsimd::bitwise_cast<Int>(xsimd::bitwise_cast<simd::UInt>(v) >> 8) & low_bytes;
         }
-        uint8_t* out = image_.pixel(x, y);
-        for (int c = 0; c < 4; ++c) out[c] = static_cast<uint8_t>((sum[c] + samples / 2) / samples);
+        rb = xsimd::bitwise_cast<Int>(xsimd::bitwise_cast<simd::UInt>(rb + half) >> shift) & low_bytes;
+        ga = xsimd::bitwise_cast<Int>(xsimd::bitwise_cast<simd::UInt>(ga + half) >> shift) & low_bytes;
+        alignas(64) uint32_t out[simd::kLanes];
+        (rb | (ga << 8)).store_aligned(reinterpret_cast<int32_t*>(out));
+        for (int l = 0; l < simd::kLanes; ++l) {
+          const int x = sx + simd::lane_x(l), y = sy + simd::lane_y(l);
+          if (x < width && y < height) std::memcpy(image_.pixel(x0 + x, y0 + y), &out[l], 4);
+        }
       }
     }
   }

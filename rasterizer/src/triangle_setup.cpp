@@ -10,13 +10,23 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
+#include <cstring>
 #include <new>
 
 namespace luxel::rasterizer::detail {
 
+void RecordStream::grow(size_t needed) {
+  const size_t capacity = std::max<size_t>({needed, 2 * capacity_, 4096});
+  std::unique_ptr<std::byte[]> data(new std::byte[capacity]);  // uninitialized: records are written whole
+  if (size_) std::memcpy(data.get(), data_.get(), size_);
+  data_ = std::move(data);
+  capacity_ = capacity;
+}
+
 void ChunkBins::reset(int tile_count) {
   if (static_cast<int>(tile_records.size()) != tile_count) {
-    tile_records.assign(tile_count, {});
+    tile_records.clear();
+    tile_records.resize(tile_count);
   } else {
     for (uint32_t t : touched_tiles) tile_records[t].clear();
   }
@@ -87,15 +97,17 @@ struct ScreenVertex {
   float z, inv_w;
 };
 
-/// Plane through three values at the snapped vertex positions. `det` is the signed doubled
-/// area in pixels^2 (v1-v0) x (v2-v0).
-Plane make_plane(const ScreenVertex* v, double q0, double q1, double q2, double det) {
-  const double e1x = double(v[1].x) - v[0].x, e1y = double(v[1].y) - v[0].y;
-  const double e2x = double(v[2].x) - v[0].x, e2y = double(v[2].y) - v[0].y;
-  const double d1 = q1 - q0, d2 = q2 - q0;
-  return {static_cast<float>(q0), static_cast<float>((d1 * e2y - d2 * e1y) / det),
-          static_cast<float>((d2 * e1x - d1 * e2x) / det)};
-}
+/// Screen-space gradients of values at the snapped vertices: the two edge vectors from vertex
+/// 0 (pixels) and one over their cross product (the signed doubled area).
+struct PlaneBasis {
+  double e1x, e1y, e2x, e2y, inv_det;
+
+  Plane plane(double q0, double q1, double q2) const {
+    const double d1 = q1 - q0, d2 = q2 - q0;
+    return {static_cast<float>(q0), static_cast<float>((d1 * e2y - d2 * e1y) * inv_det),
+            static_cast<float>((d2 * e1x - d1 * e2x) * inv_det)};
+  }
+};
 
 Edge make_edge(int32_t x0, int32_t y0, int32_t x1, int32_t y1) {
   const int32_t dx = x1 - x0, dy = y1 - y0;
@@ -140,8 +152,7 @@ void setup_and_bin(const DrawConstants& dc, const float* const v[3], ChunkBins& 
     return;
   }
 
-  alignas(16) std::byte record[triangle_record_size(kMaxVaryings)];
-  TriangleSetup& t = *new (record) TriangleSetup;
+  TriangleSetup t;
   // Bounds: a sample lies in [0, 240] subpixels from its pixel's corner, so the pixels that
   // may hold a covered sample are those that meet the vertices' bounding box.
   const int32_t min_x = std::min({s[0].X, s[1].X, s[2].X}), max_x = std::max({s[0].X, s[1].X, s[2].X});
@@ -173,51 +184,79 @@ void setup_and_bin(const DrawConstants& dc, const float* const v[3], ChunkBins& 
   }
 
   // Planes, in the vertices' own order.
-  const double det = double(area2) / (double(kSubpixelsPerPixel) * kSubpixelsPerPixel);
+  const double scale = 1.0 / kSubpixelsPerPixel;
+  const PlaneBasis basis{(s[1].X - s[0].X) * scale, (s[1].Y - s[0].Y) * scale, (s[2].X - s[0].X) * scale,
+                         (s[2].Y - s[0].Y) * scale, double(kSubpixelsPerPixel) * kSubpixelsPerPixel / double(area2)};
   t.ref_x = s[0].x;
   t.ref_y = s[0].y;
-  t.z = make_plane(s, s[0].z, s[1].z, s[2].z, det);
+  t.z = basis.plane(s[0].z, s[1].z, s[2].z);
   if (dc.rasterizer.depth_bias != 0 || dc.rasterizer.slope_scaled_depth_bias != 0) {
     const float slope = std::max(std::abs(t.z.dqdx), std::abs(t.z.dqdy));
     t.z.q0 += dc.rasterizer.depth_bias + dc.rasterizer.slope_scaled_depth_bias * slope;
   }
-  t.inv_w = make_plane(s, s[0].inv_w, s[1].inv_w, s[2].inv_w, det);
-  t.b1_w = make_plane(s, 0.0, s[1].inv_w, 0.0, det);
-  t.b2_w = make_plane(s, 0.0, 0.0, s[2].inv_w, det);
+  // Perspective-correct barycentrics: b_k = (b_k / w) / (1 / w). With equal w at the three
+  // vertices (2D, orthographic) they are affine and the pixel loop skips the division.
+  t.affine = s[0].inv_w == s[1].inv_w && s[0].inv_w == s[2].inv_w;
+  if (t.affine) {
+    t.inv_w = {s[0].inv_w, 0.0f, 0.0f};
+    t.b1_w = basis.plane(0.0, 1.0, 0.0);
+    t.b2_w = basis.plane(0.0, 0.0, 1.0);
+  } else {
+    t.inv_w = basis.plane(s[0].inv_w, s[1].inv_w, s[2].inv_w);
+    t.b1_w = basis.plane(0.0, s[1].inv_w, 0.0);
+    t.b2_w = basis.plane(0.0, 0.0, s[2].inv_w);
+  }
   t.front_facing = dc.rasterizer.front_counter_clockwise ? !clockwise : clockwise;
 
-  float* varyings = reinterpret_cast<float*>(&t + 1);
-  for (int c = 0; c < 4 * dc.varyings; ++c) {
-    const float a0 = v[0][4 + c], a1 = v[1][4 + c], a2 = v[2][4 + c];
-    varyings[3 * c] = a0;
-    varyings[3 * c + 1] = a1 - a0;
-    varyings[3 * c + 2] = a2 - a0;
-  }
-
-  // Bin: every tile the bounds touch, less those wholly outside an edge.
+  // Bin: the record goes into every tile the bounds touch, less those wholly outside an edge.
   ++stats.rasterized;
   const size_t size = triangle_record_size(dc.varyings);
+  const std::byte* first = nullptr;
+  auto emit = [&](int tile) {
+    RecordStream& records = bins.tile_records[tile];
+    if (records.empty()) bins.touched_tiles.push_back(static_cast<uint32_t>(tile));
+    std::byte* out = records.append(size);
+    if (first) {
+      std::memcpy(out, first, size);
+      return;
+    }
+    std::memcpy(out, &t, sizeof(TriangleSetup));
+    float* varyings = reinterpret_cast<float*>(out + sizeof(TriangleSetup));
+    for (int c = 0; c < 4 * dc.varyings; ++c) {
+      const float a0 = v[0][4 + c];
+      varyings[3 * c] = a0;
+      varyings[3 * c + 1] = v[1][4 + c] - a0;
+      varyings[3 * c + 2] = v[2][4 + c] - a0;
+    }
+    first = out;
+  };
   const int tx0 = t.x0 / kTileSize, tx1 = (t.x1 - 1) / kTileSize;
   const int ty0 = t.y0 / kTileSize, ty1 = (t.y1 - 1) / kTileSize;
-  const bool single_tile = tx0 == tx1 && ty0 == ty1;
+  if (tx0 == tx1 && ty0 == ty1) {
+    emit(ty0 * dc.tiles_x + tx0);
+    return;
+  }
   for (int ty = ty0; ty <= ty1; ++ty) {
     for (int tx = tx0; tx <= tx1; ++tx) {
-      if (!single_tile) {
-        const int64_t X0 = int64_t(tx) * kTileSize * kSubpixelsPerPixel, X1 = X0 + kTileSize * kSubpixelsPerPixel - 1;
-        const int64_t Y0 = int64_t(ty) * kTileSize * kSubpixelsPerPixel, Y1 = Y0 + kTileSize * kSubpixelsPerPixel - 1;
-        bool outside = false;
-        for (const Edge& e : t.edge) {
-          const int64_t emax = e.c + std::max(e.a * X0, e.a * X1) + std::max(e.b * Y0, e.b * Y1);
-          if (emax < 0) outside = true;
-        }
-        if (outside) continue;
+      const int64_t X0 = int64_t(tx) * kTileSize * kSubpixelsPerPixel, X1 = X0 + kTileSize * kSubpixelsPerPixel - 1;
+      const int64_t Y0 = int64_t(ty) * kTileSize * kSubpixelsPerPixel, Y1 = Y0 + kTileSize * kSubpixelsPerPixel - 1;
+      bool outside = false;
+      for (const Edge& e : t.edge) {
+        const int64_t emax = e.c + std::max(e.a * X0, e.a * X1) + std::max(e.b * Y0, e.b * Y1);
+        outside |= emax < 0;
       }
-      const int tile = ty * dc.tiles_x + tx;
-      std::vector<std::byte>& records = bins.tile_records[tile];
-      if (records.empty()) bins.touched_tiles.push_back(static_cast<uint32_t>(tile));
-      records.insert(records.end(), record, record + size);
+      if (!outside) emit(ty * dc.tiles_x + tx);
     }
   }
+}
+
+/// Which clip-space half-spaces a position lies outside of: bits 0-5 the view volume
+/// (-x, +x, -y, +y, near, far), bits 6-9 the guard band (-x, +x, -y, +y).
+unsigned outcode(const DrawConstants& dc, const glm::vec4& p) {
+  return unsigned(p.x < -p.w) | unsigned(p.x > p.w) << 1 | unsigned(p.y < -p.w) << 2 | unsigned(p.y > p.w) << 3 |
+         unsigned(p.z < 0) << 4 | unsigned(p.z > p.w) << 5 | unsigned(p.x < dc.guard_min_x * p.w) << 6 |
+         unsigned(p.x > dc.guard_max_x * p.w) << 7 | unsigned(p.y < dc.guard_min_y * p.w) << 8 |
+         unsigned(p.y > dc.guard_max_y * p.w) << 9;
 }
 
 }  // namespace
@@ -226,29 +265,34 @@ void process_triangle(const DrawConstants& dc, const glm::vec4* const vertices[3
   const glm::vec4& p0 = vertices[0][0];
   const glm::vec4& p1 = vertices[1][0];
   const glm::vec4& p2 = vertices[2][0];
-  if (!finite_position(p0) || !finite_position(p1) || !finite_position(p2)) {
+  // x * 0 is 0 for finite x and NaN for NaN or Inf.
+  const float zero = (p0.x + p0.y + p0.z + p0.w) * 0.0f + (p1.x + p1.y + p1.z + p1.w) * 0.0f +
+                     (p2.x + p2.y + p2.z + p2.w) * 0.0f;
+  if (zero != 0.0f && !(finite_position(p0) && finite_position(p1) && finite_position(p2))) {
     ++stats.non_finite;
     return;
   }
-  // Trivial reject: all three outside one plane of the view volume.
-  auto all_outside = [&](auto outside) { return outside(p0) && outside(p1) && outside(p2); };
-  if (all_outside([](const glm::vec4& p) { return p.x < -p.w; }) ||
-      all_outside([](const glm::vec4& p) { return p.x > p.w; }) ||
-      all_outside([](const glm::vec4& p) { return p.y < -p.w; }) ||
-      all_outside([](const glm::vec4& p) { return p.y > p.w; }) ||
-      all_outside([](const glm::vec4& p) { return p.z < 0; }) ||
-      all_outside([](const glm::vec4& p) { return p.z > p.w; })) {
+  // Common case first: all three vertices inside the view volume, hence inside the guard band.
+  auto inside_view = [](const glm::vec4& p) {
+    return (std::abs(p.x) <= p.w) & (std::abs(p.y) <= p.w) & (p.z >= 0.0f) & (p.z <= p.w);
+  };
+  const float* v[3] = {&vertices[0][0].x, &vertices[1][0].x, &vertices[2][0].x};
+  if (inside_view(p0) & inside_view(p1) & inside_view(p2)) {
+    setup_and_bin(dc, v, bins, stats);
+    return;
+  }
+  const unsigned c0 = outcode(dc, p0), c1 = outcode(dc, p1), c2 = outcode(dc, p2);
+  if (c0 & c1 & c2 & 0x3f) {  // all three outside one plane of the view volume
     ++stats.outside;
     return;
   }
+  // Planes to clip against: near, far and the guard band (clip_polygon's plane order).
+  auto clip_bits = [](unsigned c) {
+    return ((c >> 4) & 1) | ((c >> 5) & 1) << 1 | ((c >> 6) & 1) << 2 | ((c >> 7) & 1) << 3 | ((c >> 8) & 1) << 4 |
+           ((c >> 9) & 1) << 5;
+  };
+  const unsigned outside_mask = clip_bits(c0 | c1 | c2);
   const ClipPlanes planes = make_clip_planes(dc);
-  unsigned outside_mask = 0;
-  for (int k = 0; k < 3; ++k) {
-    for (int i = 0; i < 6; ++i) {
-      if (plane_distance(planes.plane[i], &vertices[k][0].x) < 0) outside_mask |= 1u << i;
-    }
-  }
-  const float* v[3] = {&vertices[0][0].x, &vertices[1][0].x, &vertices[2][0].x};
   if (outside_mask == 0) {
     setup_and_bin(dc, v, bins, stats);
     return;

@@ -105,6 +105,48 @@ inline LaneBits sign_bits(const Int& v) {
 #endif
 }
 
+// Lane masks as integer vectors: a lane is all ones (true) or zero (false). Cheaper to combine
+// with coverage and comparison results than bits, and they select directly.
+
+/// All-ones lanes where `m` is true.
+inline Int mask_of(const FloatMask& m) {
+#if defined(__AVX512F__)
+  return Int(_mm512_movm_epi32(m.data));
+#elif defined(__AVX2__)
+  return Int(_mm256_castps_si256(m.data));
+#else
+  return xsimd::bitwise_cast<Int>(xsimd::select(m, xsimd::bitwise_cast<Float>(Int(-1)), Float(0.0f)));
+#endif
+}
+inline Int mask_of(const IntMask& m) {
+#if defined(__AVX512F__)
+  return Int(_mm512_movm_epi32(m.data));
+#elif defined(__AVX2__)
+  return Int(m.data);
+#else
+  return xsimd::select(m, Int(-1), Int(0));
+#endif
+}
+/// `a` where `mask` lanes are all ones, else `b`.
+inline Float select(const Int& mask, const Float& a, const Float& b) {
+#if defined(__AVX512F__)
+  return Float(_mm512_mask_blend_ps(_mm512_movepi32_mask(mask), b, a));
+#elif defined(__AVX2__)
+  return Float(_mm256_blendv_ps(b, a, _mm256_castsi256_ps(mask)));
+#else
+  return xsimd::select(mask != Int(0), a, b);
+#endif
+}
+inline Int select(const Int& mask, const Int& a, const Int& b) {
+#if defined(__AVX512F__)
+  return Int(_mm512_mask_blend_epi32(_mm512_movepi32_mask(mask), b, a));
+#elif defined(__AVX2__)
+  return Int(_mm256_blendv_epi8(b, a, mask));
+#else
+  return xsimd::select(mask != Int(0), a, b);
+#endif
+}
+
 /// The mask whose lane l is bit l of `bits`.
 inline IntMask int_mask(LaneBits bits) {
   static const Int lane_bit = lanes<Int>([](int l) { return 1 << l; });
@@ -143,6 +185,47 @@ inline void store_bytes(uint8_t* p, const Int& v) {
   alignas(64) int32_t v2[kLanes];
   v.store_aligned(v2);
   for (int i = 0; i < kLanes; ++i) p[i] = static_cast<uint8_t>(v2[i]);
+#endif
+}
+
+/// Each lane of `packed` holds two IEEE halves; returns them as floats (exactly, denormals, inf
+/// and NaN included, whatever the FTZ/DAZ mode): `low` from bits 0-15, `high` from bits 16-31.
+/// (Texture sampling of RGBA16F; F16C is part of x86-64-v3.)
+inline void unpack_halves(const Int& packed, Float& low, Float& high) {
+#if defined(__AVX512F__)
+  low = Float(_mm512_cvtph_ps(_mm512_cvtepi32_epi16(packed)));
+  high = Float(_mm512_cvtph_ps(_mm512_cvtepi32_epi16(_mm512_srli_epi32(packed, 16))));
+#elif defined(__AVX2__) && defined(__F16C__)
+  // Per 128-bit half: the four low halves into bytes 0-7, the four high halves into bytes 8-15;
+  // then qwords (0, 2, 1, 3) put all eight low halves below all eight high ones.
+  const __m256i split = _mm256_set_epi8(15, 14, 11, 10, 7, 6, 3, 2, 13, 12, 9, 8, 5, 4, 1, 0,
+                                        15, 14, 11, 10, 7, 6, 3, 2, 13, 12, 9, 8, 5, 4, 1, 0);
+  const __m256i grouped = _mm256_permute4x64_epi64(_mm256_shuffle_epi8(packed, split), 0xd8);
+  low = Float(_mm256_cvtph_ps(_mm256_castsi256_si128(grouped)));
+  high = Float(_mm256_cvtph_ps(_mm256_extracti128_si256(grouped, 1)));
+#else
+  alignas(64) int32_t p[kLanes];
+  alignas(64) float lo[kLanes], hi[kLanes];
+  packed.store_aligned(p);
+  auto decode = [](uint32_t h) {
+    const uint32_t sign = (h & 0x8000u) << 16, em = h & 0x7fffu;
+    uint32_t bits;
+    if (em >= 0x7c00u) {
+      bits = 0x7f800000u | ((em & 0x3ffu) << 13);  // inf / NaN
+    } else if (em >= 0x400u) {
+      bits = (em << 13) + 0x38000000u;  // normal: rebias the exponent
+    } else {
+      const float denormal = static_cast<float>(em) * 5.9604644775390625e-8f;  // em * 2^-24, a normal float
+      bits = __builtin_bit_cast(uint32_t, denormal);
+    }
+    return __builtin_bit_cast(float, bits | sign);
+  };
+  for (int i = 0; i < kLanes; ++i) {
+    lo[i] = decode(static_cast<uint32_t>(p[i]) & 0xffffu);
+    hi[i] = decode(static_cast<uint32_t>(p[i]) >> 16);
+  }
+  low = Float::load_aligned(lo);
+  high = Float::load_aligned(hi);
 #endif
 }
 

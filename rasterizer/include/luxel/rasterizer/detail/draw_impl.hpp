@@ -75,6 +75,11 @@ class TileRasterizer {
     }
     simple_depth_ = depth_ && !plan.stencil;
     plain_color_ = color_ && !state_.blend.enable && plan.color_write_mask == 0xffffffffu;
+    depth_test_ = plan.depth_test;
+    depth_write_ = plan.depth_write;
+    depth_func_ = state_.depth_stencil.depth_func;
+    min_depth_ = plan.constants.min_depth;
+    max_depth_ = plan.constants.max_depth;
   }
 
   void triangle(const TriangleSetup& t);
@@ -85,22 +90,22 @@ class TileRasterizer {
  private:
   void rasterize_narrow(const TriangleSetup& t, int x0, int y0, int x1, int y1);
   void rasterize_wide(const TriangleSetup& t, int x0, int y0, int x1, int y1);
-  LaneBits clip_lanes(int px, int py) const {
-    if (whole_tile_) return simd::kAllLanes;
-    if (px >= clip_x0_ && px + simd::kStampWidth <= clip_x1_ && py >= clip_y0_ && py + simd::kStampHeight <= clip_y1_)
-      return simd::kAllLanes;
-    LaneBits bits = 0;
-    for (int l = 0; l < simd::kLanes; ++l) {
-      const int x = px + simd::lane_x(l), y = py + simd::lane_y(l);
-      if (x >= clip_x0_ && x < clip_x1_ && y >= clip_y0_ && y < clip_y1_) bits |= 1u << l;
-    }
-    return bits;
+  /// The lanes of the stamp at (px, py) inside the draw's clip rectangle.
+  Int clip_mask(int px, int py) const {
+    if (whole_tile_ ||
+        (px >= clip_x0_ && px + simd::kStampWidth <= clip_x1_ && py >= clip_y0_ && py + simd::kStampHeight <= clip_y1_))
+      return Int(-1);
+    const Int x = Int(px) + lanes_.x_sub / Int(kSubpixelsPerPixel), y = Int(py) + lanes_.y_sub / Int(kSubpixelsPerPixel);
+    return simd::mask_of(x >= Int(clip_x0_)) & simd::mask_of(x < Int(clip_x1_)) & simd::mask_of(y >= Int(clip_y0_)) &
+           simd::mask_of(y < Int(clip_y1_));
   }
-  IntMask lane_mask(LaneBits bits) const { return (Int(static_cast<int32_t>(bits)) & lanes_.bit) != Int(0); }
-  void shade_stamp(const TriangleSetup& t, int px, int py, LaneBits* coverage);
-  LaneBits depth_stencil_test(const TriangleSetup& t, const Float& dx, const Float& dy, int stamp, int s,
-                              LaneBits coverage, const Float* shader_depth);
-  void write_color(int stamp, int s, LaneBits coverage, const simd::Float4& color, const Int& packed);
+  /// Coverage is carried as one mask per sample: all-ones lanes are covered.
+  void shade_stamp(const TriangleSetup& t, int px, int py, Int* coverage);
+  Int depth_stencil_test(const TriangleSetup& t, const Float& dx, const Float& dy, int stamp, int s,
+                         const Int& coverage, const Float* shader_depth);
+  void write_color(int stamp, int s, const Int& coverage, const simd::Float4& color, const Int& packed);
+  template <CompareFunc kFunc>
+  Int early_depth(const TriangleSetup& t, const Float& dx, const Float& dy, int stamp, Int* coverage);
 
   const DrawPlan& plan_;
   const PS& ps_;
@@ -109,6 +114,9 @@ class TileRasterizer {
   bool count_samples_;
   bool whole_tile_;
   bool simple_depth_;   ///< depth buffer without stencil
+  bool depth_test_, depth_write_;
+  CompareFunc depth_func_;
+  float min_depth_, max_depth_;
   bool plain_color_;    ///< no blending, all channels written
   int tile_x_, tile_y_;
   int clip_x0_, clip_y0_, clip_x1_, clip_y1_;
@@ -139,20 +147,20 @@ void TileRasterizer<PS, N, kEarlyZ, S>::rasterize_narrow(const TriangleSetup& t,
   constexpr int kStampH = simd::kStampHeight * kSubpixelsPerPixel;
   constexpr int64_t kClamp = int64_t(1) << 30;
 
-  Int pixel_offset[3];
-  int32_t sample_offset[3][S];
+  // Per edge and sample: the edge's value at each lane relative to the stamp corner.
+  Int lane_offset[3][S];
   int64_t min_offset[3], max_offset[3];
   for (int e = 0; e < 3; ++e) {
     const Edge& E = t.edge[e];
-    pixel_offset[e] = Int(E.a) * lanes_.x_sub + Int(E.b) * lanes_.y_sub;
-    for (int s = 0; s < S; ++s) sample_offset[e][s] = E.a * sample_x_[s] + E.b * sample_y_[s];
+    const Int pixel = Int(E.a) * lanes_.x_sub + Int(E.b) * lanes_.y_sub;
+    for (int s = 0; s < S; ++s) lane_offset[e][s] = pixel + Int(E.a * sample_x_[s] + E.b * sample_y_[s]);
     // Bounds of the edge over the stamp's area (conservative: the whole rectangle).
     const int64_t ax = int64_t(E.a) * (kStampW - 1), by = int64_t(E.b) * (kStampH - 1);
     min_offset[e] = std::min<int64_t>(0, ax) + std::min<int64_t>(0, by);
     max_offset[e] = std::max<int64_t>(0, ax) + std::max<int64_t>(0, by);
   }
 
-  LaneBits coverage[S];
+  Int coverage[S];
   for (int py = sy0; py < y1; py += simd::kStampHeight) {
     int64_t row[3];
     for (int e = 0; e < 3; ++e)
@@ -162,7 +170,7 @@ void TileRasterizer<PS, N, kEarlyZ, S>::rasterize_narrow(const TriangleSetup& t,
       const int64_t e0 = row[0], e1 = row[1], e2 = row[2];
       for (int e = 0; e < 3; ++e) row[e] += int64_t(t.edge[e].a) * kStampW;
       if (e0 + max_offset[0] < 0 || e1 + max_offset[1] < 0 || e2 + max_offset[2] < 0) continue;
-      const LaneBits clip = clip_lanes(px, py);
+      const Int clip = clip_mask(px, py);
       if (e0 + min_offset[0] >= 0 && e1 + min_offset[1] >= 0 && e2 + min_offset[2] >= 0) {
         for (int s = 0; s < S; ++s) coverage[s] = clip;
         ++stats.stamps_full;
@@ -172,15 +180,14 @@ void TileRasterizer<PS, N, kEarlyZ, S>::rasterize_narrow(const TriangleSetup& t,
         const Int c0(static_cast<int32_t>(std::clamp(e0, -kClamp, kClamp)));
         const Int c1(static_cast<int32_t>(std::clamp(e1, -kClamp, kClamp)));
         const Int c2(static_cast<int32_t>(std::clamp(e2, -kClamp, kClamp)));
-        const Int p0 = c0 + pixel_offset[0], p1 = c1 + pixel_offset[1], p2 = c2 + pixel_offset[2];
-        LaneBits any = 0;
+        Int any(0);
         for (int s = 0; s < S; ++s) {
-          const Int inside = (p0 + Int(sample_offset[0][s])) | (p1 + Int(sample_offset[1][s])) |
-                             (p2 + Int(sample_offset[2][s]));
-          coverage[s] = ~simd::sign_bits(inside) & clip;
+          // Negative in any edge: the sign bit marks the lanes outside.
+          const Int outside = (c0 + lane_offset[0][s]) | (c1 + lane_offset[1][s]) | (c2 + lane_offset[2][s]);
+          coverage[s] = clip & ~(outside >> 31);
           any |= coverage[s];
         }
-        if (!any) continue;
+        if (!simd::sign_bits(any)) continue;
         ++stats.stamps_partial;
       }
       shade_stamp(t, px, py, coverage);
@@ -191,24 +198,24 @@ void TileRasterizer<PS, N, kEarlyZ, S>::rasterize_narrow(const TriangleSetup& t,
 template <class PS, int N, bool kEarlyZ, int S>
 void TileRasterizer<PS, N, kEarlyZ, S>::rasterize_wide(const TriangleSetup& t, int sx0, int sy0, int x1, int y1) {
   // Edges too long for 32-bit per-sample steps: exact 64-bit evaluation, one sample at a time.
-  LaneBits coverage[S];
+  Int coverage[S];
   for (int py = sy0; py < y1; py += simd::kStampHeight) {
     for (int px = sx0; px < x1; px += simd::kStampWidth) {
-      const LaneBits clip = clip_lanes(px, py);
-      LaneBits any = 0;
+      const Int clip = clip_mask(px, py);
+      Int any(0);
       for (int s = 0; s < S; ++s) {
-        LaneBits bits = 0;
+        alignas(64) int32_t inside[simd::kLanes];
         for (int l = 0; l < simd::kLanes; ++l) {
           const int64_t X = int64_t(px + simd::lane_x(l)) * kSubpixelsPerPixel + sample_x_[s];
           const int64_t Y = int64_t(py + simd::lane_y(l)) * kSubpixelsPerPixel + sample_y_[s];
-          bool inside = true;
-          for (const Edge& e : t.edge) inside &= e.a * X + e.b * Y + e.c >= 0;
-          bits |= LaneBits(inside) << l;
+          bool in = true;
+          for (const Edge& e : t.edge) in &= e.a * X + e.b * Y + e.c >= 0;
+          inside[l] = in ? -1 : 0;
         }
-        coverage[s] = bits & clip;
+        coverage[s] = clip & Int::load_aligned(inside);
         any |= coverage[s];
       }
-      if (!any) continue;
+      if (!simd::sign_bits(any)) continue;
       ++stats.stamps_partial;
       ++stats.stamps_wide_edges;
       shade_stamp(t, px, py, coverage);
@@ -217,59 +224,70 @@ void TileRasterizer<PS, N, kEarlyZ, S>::rasterize_wide(const TriangleSetup& t, i
 }
 
 template <class PS, int N, bool kEarlyZ, int S>
-LaneBits TileRasterizer<PS, N, kEarlyZ, S>::depth_stencil_test(const TriangleSetup& t, const Float& dx,
-                                                              const Float& dy, int stamp, int s, LaneBits coverage,
-                                                              const Float* shader_depth) {
-  const DepthStencilState& ds = state_.depth_stencil;
+Int TileRasterizer<PS, N, kEarlyZ, S>::depth_stencil_test(const TriangleSetup& t, const Float& dx, const Float& dy,
+                                                         int stamp, int s, const Int& coverage,
+                                                         const Float* shader_depth) {
   float* depth = depth_ + s * kTilePixels + stamp * simd::kLanes;
   const Float dst_depth = Float::load_aligned(depth);
-  LaneBits depth_pass = coverage;
+  Int depth_pass = coverage;
   Float z;
-  if (plan_.depth_test) {
+  if (depth_test_) {
     z = shader_depth ? *shader_depth : eval_plane(t.z, dx + sample_dx_[s], dy + sample_dy_[s]);
-    z = xsimd::min(xsimd::max(z, Float(plan_.constants.min_depth)), Float(plan_.constants.max_depth));
-    depth_pass &= simd::to_bits(compare(ds.depth_func, z, dst_depth));
+    z = xsimd::min(xsimd::max(z, Float(min_depth_)), Float(max_depth_));
+    depth_pass &= simd::mask_of(compare(depth_func_, z, dst_depth));
   }
-  LaneBits pass = depth_pass;
+  Int pass = depth_pass;
   if (!simple_depth_) {
+    const DepthStencilState& ds = state_.depth_stencil;
     uint8_t* stencil = stencil_ + s * kTilePixels + stamp * simd::kLanes;
     const StencilFace& face = (ds.two_sided_stencil && !t.front_facing) ? ds.back : ds.front;
     const Int value = simd::load_bytes(stencil);
     const Int read_mask(ds.stencil_read_mask);
-    const LaneBits stencil_pass =
-        coverage & simd::to_bits(compare(face.func, Int(ds.stencil_ref) & read_mask, value & read_mask));
+    const Int stencil_pass =
+        coverage & simd::mask_of(compare(face.func, Int(ds.stencil_ref) & read_mask, value & read_mask));
     pass = depth_pass & stencil_pass;
-    const LaneBits fail = coverage & ~stencil_pass;
-    const LaneBits depth_fail = stencil_pass & ~depth_pass;
-    Int updated = value;
-    if (fail) updated = xsimd::select(lane_mask(fail), stencil_op(face.fail, value, ds.stencil_ref), updated);
-    if (depth_fail)
-      updated = xsimd::select(lane_mask(depth_fail), stencil_op(face.depth_fail, value, ds.stencil_ref), updated);
-    if (pass) updated = xsimd::select(lane_mask(pass), stencil_op(face.pass, value, ds.stencil_ref), updated);
+    const Int fail = coverage & ~stencil_pass;
+    const Int depth_fail = stencil_pass & ~depth_pass;
+    Int updated = simd::select(fail, stencil_op(face.fail, value, ds.stencil_ref), value);
+    updated = simd::select(depth_fail, stencil_op(face.depth_fail, value, ds.stencil_ref), updated);
+    updated = simd::select(pass, stencil_op(face.pass, value, ds.stencil_ref), updated);
     const Int write_mask(ds.stencil_write_mask);
     updated = (value & ~write_mask) | (updated & write_mask);
     simd::store_bytes(stencil, updated);
   }
-  if (plan_.depth_write && pass) {
-    const FloatMask m = xsimd::bitwise_cast<Float>(Int(lane_mask(pass))) != Float(0.0f);
-    xsimd::select(m, z, dst_depth).store_aligned(depth);
-  }
+  if (depth_write_) simd::select(pass, z, dst_depth).store_aligned(depth);
   return pass;
 }
 
 template <class PS, int N, bool kEarlyZ, int S>
-void TileRasterizer<PS, N, kEarlyZ, S>::write_color(int stamp, int s, LaneBits coverage, const simd::Float4& color,
+template <CompareFunc kFunc>
+Int TileRasterizer<PS, N, kEarlyZ, S>::early_depth(const TriangleSetup& t, const Float& dx, const Float& dy, int stamp,
+                                                  Int* coverage) {
+  // The common case, kept tight: depth test without stencil, compare function fixed.
+  float* depth = depth_ + stamp * simd::kLanes;
+  const Float z0(t.z.q0), dzdx(t.z.dqdx), dzdy(t.z.dqdy), lo(min_depth_), hi(max_depth_);
+  Int live(0);
+  for (int s = 0; s < S; ++s, depth += kTilePixels) {
+    const Float d = Float::load_aligned(depth);
+    Float z = xsimd::fma(dzdx, dx + sample_dx_[s], xsimd::fma(dzdy, dy + sample_dy_[s], z0));
+    z = xsimd::min(xsimd::max(z, lo), hi);
+    const Int pass = coverage[s] & simd::mask_of(compare(kFunc, z, d));
+    if (depth_write_) simd::select(pass, z, d).store_aligned(depth);
+    coverage[s] = pass;
+    live |= pass;
+  }
+  return live;
+}
+
+template <class PS, int N, bool kEarlyZ, int S>
+void TileRasterizer<PS, N, kEarlyZ, S>::write_color(int stamp, int s, const Int& coverage, const simd::Float4& color,
                                                    const Int& packed) {
   int32_t* dst = reinterpret_cast<int32_t*>(color_ + s * kTilePixels + stamp * simd::kLanes);
+  const Int old = Int::load_aligned(dst);
   if (plain_color_) {
-    if (coverage == simd::kAllLanes) {
-      packed.store_aligned(dst);
-    } else {
-      xsimd::select(lane_mask(coverage), packed, Int::load_aligned(dst)).store_aligned(dst);
-    }
+    simd::select(coverage, packed, old).store_aligned(dst);
     return;
   }
-  const Int old = Int::load_aligned(dst);
   Int value = packed;
   const BlendState& b = state_.blend;
   if (b.enable) {
@@ -279,23 +297,38 @@ void TileRasterizer<PS, N, kEarlyZ, S>::write_color(int stamp, int s, LaneBits c
   }
   const Int write(static_cast<int32_t>(plan_.color_write_mask));
   value = (value & write) | (old & ~write);
-  xsimd::select(lane_mask(coverage), value, old).store_aligned(dst);
+  simd::select(coverage, value, old).store_aligned(dst);
 }
 
 template <class PS, int N, bool kEarlyZ, int S>
-void TileRasterizer<PS, N, kEarlyZ, S>::shade_stamp(const TriangleSetup& t, int px, int py, LaneBits* coverage) {
+void TileRasterizer<PS, N, kEarlyZ, S>::shade_stamp(const TriangleSetup& t, int px, int py, Int* coverage) {
   const int stamp = ((py - tile_y_) / simd::kStampHeight) * (kTileSize / simd::kStampWidth) +
                     (px - tile_x_) / simd::kStampWidth;
   // Offsets of the stamp's corner from the triangle's reference vertex: exact in float.
   const Float dx(float(px) - t.ref_x), dy(float(py) - t.ref_y);
-  LaneBits live = 0;
+  Int live(0);
   if constexpr (kEarlyZ) {
-    if (depth_) {
+    if (simple_depth_ && depth_test_) {
+      switch (depth_func_) {
+        case CompareFunc::Less: live = early_depth<CompareFunc::Less>(t, dx, dy, stamp, coverage); break;
+        case CompareFunc::LessEqual: live = early_depth<CompareFunc::LessEqual>(t, dx, dy, stamp, coverage); break;
+        case CompareFunc::Greater: live = early_depth<CompareFunc::Greater>(t, dx, dy, stamp, coverage); break;
+        case CompareFunc::GreaterEqual:
+          live = early_depth<CompareFunc::GreaterEqual>(t, dx, dy, stamp, coverage);
+          break;
+        default:
+          for (int s = 0; s < S; ++s) {
+            coverage[s] = depth_stencil_test(t, dx, dy, stamp, s, coverage[s], nullptr);
+            live |= coverage[s];
+          }
+      }
+      if (!simd::sign_bits(live)) return;
+    } else if (depth_) {
       for (int s = 0; s < S; ++s) {
         coverage[s] = depth_stencil_test(t, dx, dy, stamp, s, coverage[s], nullptr);
         live |= coverage[s];
       }
-      if (!live) return;
+      if (!simd::sign_bits(live)) return;
     } else {
       for (int s = 0; s < S; ++s) live |= coverage[s];
     }
@@ -309,9 +342,12 @@ void TileRasterizer<PS, N, kEarlyZ, S>::shade_stamp(const TriangleSetup& t, int 
   in.x = Float(float(px)) + lanes_.center_x;
   in.y = Float(float(py)) + lanes_.center_y;
   if constexpr (N > 0) {
-    const Float w = Float(1.0f) / eval_plane(t.inv_w, cx, cy);
-    const Float b1 = eval_plane(t.b1_w, cx, cy) * w;
-    const Float b2 = eval_plane(t.b2_w, cx, cy) * w;
+    Float b1 = eval_plane(t.b1_w, cx, cy), b2 = eval_plane(t.b2_w, cx, cy);
+    if (!t.affine) {
+      const Float w = Float(1.0f) / eval_plane(t.inv_w, cx, cy);
+      b1 *= w;
+      b2 *= w;
+    }
     const float* a = t.varyings();
     for (int i = 0; i < N; ++i, a += 12) {
       in.varyings[i].x = xsimd::fma(b2, Float(a[2]), xsimd::fma(b1, Float(a[1]), Float(a[0])));
@@ -320,36 +356,34 @@ void TileRasterizer<PS, N, kEarlyZ, S>::shade_stamp(const TriangleSetup& t, int 
       in.varyings[i].w = xsimd::fma(b2, Float(a[11]), xsimd::fma(b1, Float(a[10]), Float(a[9])));
     }
   }
-  in.live = live;
+  in.live = simd::sign_bits(live);
   in.front_facing = t.front_facing;
   PixelOutput out;
   ps_(in, out);
 
   if constexpr (!kEarlyZ) {
-    LaneBits kill = 0;
-    if constexpr (PS::kCanDiscard) kill |= out.discard;
+    Int keep(-1);
+    if constexpr (PS::kCanDiscard) keep = ~simd::mask_of(simd::int_mask(out.discard));
     if (plan_.alpha_test) {
       const Int alpha8 = simd::round_to_int(xsimd::min(xsimd::max(out.color.w, Float(0.0f)), Float(1.0f)) * Float(255.0f));
-      kill |= ~simd::to_bits(compare(state_.alpha_test.func, alpha8, Int(state_.alpha_test.ref)));
+      keep &= simd::mask_of(compare(state_.alpha_test.func, alpha8, Int(state_.alpha_test.ref)));
     }
-    live = 0;
+    live = Int(0);
     for (int s = 0; s < S; ++s) {
-      coverage[s] &= ~kill;
-      if (coverage[s] && depth_)
+      coverage[s] &= keep;
+      if (depth_ && simd::sign_bits(coverage[s]))
         coverage[s] = depth_stencil_test(t, dx, dy, stamp, s, coverage[s], PS::kWritesDepth ? &out.depth : nullptr);
       live |= coverage[s];
     }
-    if (!live) return;
+    if (!simd::sign_bits(live)) return;
   }
 
   if (count_samples_)
-    for (int s = 0; s < S; ++s) samples_passed += std::popcount(coverage[s]);
+    for (int s = 0; s < S; ++s) samples_passed += std::popcount(simd::sign_bits(coverage[s]));
   if (!color_ || !plan_.color_write_mask) return;
   const simd::Float4 color = saturate(out.color);
   const Int packed = state_.blend.enable ? Int(0) : (state_.blend.srgb_write ? pack_srgb8(color) : pack_unorm8(color));
-  for (int s = 0; s < S; ++s) {
-    if (coverage[s]) write_color(stamp, s, coverage[s], color, packed);
-  }
+  for (int s = 0; s < S; ++s) write_color(stamp, s, coverage[s], color, packed);
 }
 
 /// Runs the vertex functor for a chunk of triangles and sets them up into `bins`.
@@ -446,7 +480,7 @@ class DrawCommand final : public Command {
   void run(Rasterizer rasterizer, int tile, TileCounters& counters) {
     const size_t size = triangle_record_size(N);
     for (const ChunkBins* bins : chunks_) {
-      const std::vector<std::byte>& records = bins->tile_records[tile];
+      const RecordStream& records = bins->tile_records[tile];
       for (size_t offset = 0; offset < records.size(); offset += size)
         rasterizer.triangle(*reinterpret_cast<const TriangleSetup*>(records.data() + offset));
     }

@@ -7,7 +7,9 @@
 
 #include <glm/vec4.hpp>
 
+#include <cstddef>
 #include <cstdint>
+#include <memory>
 #include <vector>
 
 namespace luxel::rasterizer {
@@ -53,6 +55,7 @@ struct TriangleSetup {
   Plane b1_w, b2_w;        ///< perspective barycentrics of vertices 1 and 2, divided by w
   bool front_facing;
   bool narrow_edges;       ///< per-sample edge values of a stamp fit 32-bit integers
+  bool affine;             ///< equal w at the vertices: b1_w, b2_w are the barycentrics themselves
   const float* varyings() const { return reinterpret_cast<const float*>(this + 1); }
 };
 static_assert(kMaxTargetSize <= INT16_MAX, "pixel bounds are stored in 16 bits");
@@ -65,10 +68,30 @@ constexpr size_t triangle_record_size(int varyings) {
   return (sizeof(TriangleSetup) + sizeof(float) * 12 * varyings + 15) / 16 * 16;
 }
 
+/// A growable byte stream that, unlike std::vector, does not zero what it appends.
+class RecordStream {
+ public:
+  std::byte* append(size_t bytes) {
+    if (size_ + bytes > capacity_) grow(size_ + bytes);
+    std::byte* p = data_.get() + size_;
+    size_ += bytes;
+    return p;
+  }
+  const std::byte* data() const { return data_.get(); }
+  size_t size() const { return size_; }
+  bool empty() const { return size_ == 0; }
+  void clear() { size_ = 0; }
+
+ private:
+  void grow(size_t needed);
+  std::unique_ptr<std::byte[]> data_;
+  size_t size_ = 0, capacity_ = 0;
+};
+
 /// One chunk of a draw's triangles, binned: per tile, the records of the triangles that touch it
 /// back to back in submission order, so that a tile reads its triangles as one stream.
 struct ChunkBins {
-  std::vector<std::vector<std::byte>> tile_records;
+  std::vector<RecordStream> tile_records;
   std::vector<uint32_t> touched_tiles;
 
   void reset(int tile_count);
