@@ -221,12 +221,12 @@ void setup_and_bin(const DrawConstants& dc, const float* const v[3], ChunkBins& 
       return;
     }
     std::memcpy(out, &t, sizeof(TriangleSetup));
-    float* varyings = reinterpret_cast<float*>(out + sizeof(TriangleSetup));
-    for (int c = 0; c < 4 * dc.varyings; ++c) {
-      const float a0 = v[0][4 + c];
-      varyings[3 * c] = a0;
-      varyings[3 * c + 1] = v[1][4 + c] - a0;
-      varyings[3 * c + 2] = v[2][4 + c] - a0;
+    glm::vec4* varyings = reinterpret_cast<glm::vec4*>(out + sizeof(TriangleSetup));
+    for (int i = 0; i < dc.varyings; ++i) {
+      const glm::vec4 a0 = reinterpret_cast<const glm::vec4*>(v[0])[1 + i];
+      varyings[3 * i] = a0;
+      varyings[3 * i + 1] = reinterpret_cast<const glm::vec4*>(v[1])[1 + i] - a0;
+      varyings[3 * i + 2] = reinterpret_cast<const glm::vec4*>(v[2])[1 + i] - a0;
     }
     first = out;
   };

@@ -349,11 +349,11 @@ void TileRasterizer<PS, N, kEarlyZ, S>::shade_stamp(const TriangleSetup& t, int 
       b2 *= w;
     }
     const float* a = t.varyings();
-    for (int i = 0; i < N; ++i, a += 12) {
-      in.varyings[i].x = xsimd::fma(b2, Float(a[2]), xsimd::fma(b1, Float(a[1]), Float(a[0])));
-      in.varyings[i].y = xsimd::fma(b2, Float(a[5]), xsimd::fma(b1, Float(a[4]), Float(a[3])));
-      in.varyings[i].z = xsimd::fma(b2, Float(a[8]), xsimd::fma(b1, Float(a[7]), Float(a[6])));
-      in.varyings[i].w = xsimd::fma(b2, Float(a[11]), xsimd::fma(b1, Float(a[10]), Float(a[9])));
+    for (int i = 0; i < N; ++i, a += 12) {  // a0 (4 floats), a1 - a0, a2 - a0
+      in.varyings[i].x = xsimd::fma(b2, Float(a[8]), xsimd::fma(b1, Float(a[4]), Float(a[0])));
+      in.varyings[i].y = xsimd::fma(b2, Float(a[9]), xsimd::fma(b1, Float(a[5]), Float(a[1])));
+      in.varyings[i].z = xsimd::fma(b2, Float(a[10]), xsimd::fma(b1, Float(a[6]), Float(a[2])));
+      in.varyings[i].w = xsimd::fma(b2, Float(a[11]), xsimd::fma(b1, Float(a[7]), Float(a[3])));
     }
   }
   in.live = simd::sign_bits(live);

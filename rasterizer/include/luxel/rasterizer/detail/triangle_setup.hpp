@@ -45,8 +45,9 @@ struct Plane {
   float q0, dqdx, dqdy;
 };
 
-/// A binned triangle. In the bins it is followed by its varyings: per component a0, a1-a0, a2-a0.
-struct TriangleSetup {
+/// A binned triangle. In the bins it is followed by its varyings: per varying three float4, the
+/// value at vertex 0 and the differences a1 - a0 and a2 - a0.
+struct alignas(16) TriangleSetup {
   Edge edge[3];
   int16_t x0, y0, x1, y1;  ///< pixel bounds (half-open), inside the draw's clip rectangle
   float ref_x, ref_y;      ///< pixels: vertex 0, snapped
@@ -65,7 +66,7 @@ inline constexpr int64_t kNarrowEdgeLimit = int64_t(1) << 29;
 
 /// Bytes of one binned triangle with `varyings` float4 interpolants.
 constexpr size_t triangle_record_size(int varyings) {
-  return (sizeof(TriangleSetup) + sizeof(float) * 12 * varyings + 15) / 16 * 16;
+  return sizeof(TriangleSetup) + sizeof(float) * 12 * varyings;
 }
 
 /// A growable byte stream that, unlike std::vector, does not zero what it appends.
