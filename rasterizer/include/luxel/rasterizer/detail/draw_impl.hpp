@@ -88,8 +88,9 @@ class TileRasterizer {
   DrawStats stats;
 
  private:
-  void rasterize_narrow(const TriangleSetup& t, int x0, int y0, int x1, int y1);
-  void rasterize_wide(const TriangleSetup& t, int x0, int y0, int x1, int y1);
+  void rasterize(const TriangleSetup& t, int x0, int y0, int x1, int y1);
+  /// Per-sample coverage of a partly covered stamp of a triangle with wide edges.
+  bool wide_coverage(const TriangleSetup& t, int px, int py, const Int& clip, Int* coverage);
   /// The lanes of the stamp at (px, py) inside the draw's clip rectangle.
   Int clip_mask(int px, int py) const {
     if (whole_tile_ ||
@@ -134,26 +135,25 @@ void TileRasterizer<PS, N, kEarlyZ, S>::triangle(const TriangleSetup& t) {
   const int x1 = std::min<int>(t.x1, clip_x1_), y1 = std::min<int>(t.y1, clip_y1_);
   if (x0 >= x1 || y0 >= y1) return;
   const int sx0 = x0 & ~(simd::kStampWidth - 1), sy0 = y0 & ~(simd::kStampHeight - 1);
-  if (t.narrow_edges) {
-    rasterize_narrow(t, sx0, sy0, x1, y1);
-  } else {
-    rasterize_wide(t, sx0, sy0, x1, y1);
-  }
+  rasterize(t, sx0, sy0, x1, y1);
 }
 
 template <class PS, int N, bool kEarlyZ, int S>
-void TileRasterizer<PS, N, kEarlyZ, S>::rasterize_narrow(const TriangleSetup& t, int sx0, int sy0, int x1, int y1) {
+void TileRasterizer<PS, N, kEarlyZ, S>::rasterize(const TriangleSetup& t, int sx0, int sy0, int x1, int y1) {
   constexpr int kStampW = simd::kStampWidth * kSubpixelsPerPixel;
   constexpr int kStampH = simd::kStampHeight * kSubpixelsPerPixel;
   constexpr int64_t kClamp = int64_t(1) << 30;
 
-  // Per edge and sample: the edge's value at each lane relative to the stamp corner.
+  // Per edge and sample: the edge's value at each lane relative to the stamp corner (only
+  // meaningful for narrow edges, whose values there fit 32 bits).
   Int lane_offset[3][S];
   int64_t min_offset[3], max_offset[3];
   for (int e = 0; e < 3; ++e) {
     const Edge& E = t.edge[e];
-    const Int pixel = Int(E.a) * lanes_.x_sub + Int(E.b) * lanes_.y_sub;
-    for (int s = 0; s < S; ++s) lane_offset[e][s] = pixel + Int(E.a * sample_x_[s] + E.b * sample_y_[s]);
+    if (t.narrow_edges) {
+      const Int pixel = Int(E.a) * lanes_.x_sub + Int(E.b) * lanes_.y_sub;
+      for (int s = 0; s < S; ++s) lane_offset[e][s] = pixel + Int(E.a * sample_x_[s] + E.b * sample_y_[s]);
+    }
     // Bounds of the edge over the stamp's area (conservative: the whole rectangle).
     const int64_t ax = int64_t(E.a) * (kStampW - 1), by = int64_t(E.b) * (kStampH - 1);
     min_offset[e] = std::min<int64_t>(0, ax) + std::min<int64_t>(0, by);
@@ -174,7 +174,7 @@ void TileRasterizer<PS, N, kEarlyZ, S>::rasterize_narrow(const TriangleSetup& t,
       if (e0 + min_offset[0] >= 0 && e1 + min_offset[1] >= 0 && e2 + min_offset[2] >= 0) {
         for (int s = 0; s < S; ++s) coverage[s] = clip;
         ++stats.stamps_full;
-      } else {
+      } else if (t.narrow_edges) {
         // Per sample: the three edges at every lane, 32-bit. An edge value beyond +-2^30 at the
         // stamp corner keeps its sign over the whole stamp, so clamping it changes nothing.
         const Int c0(static_cast<int32_t>(std::clamp(e0, -kClamp, kClamp)));
@@ -189,6 +189,8 @@ void TileRasterizer<PS, N, kEarlyZ, S>::rasterize_narrow(const TriangleSetup& t,
         }
         if (!simd::sign_bits(any)) continue;
         ++stats.stamps_partial;
+      } else if (!wide_coverage(t, px, py, clip, coverage)) {
+        continue;
       }
       shade_stamp(t, px, py, coverage);
     }
@@ -196,31 +198,26 @@ void TileRasterizer<PS, N, kEarlyZ, S>::rasterize_narrow(const TriangleSetup& t,
 }
 
 template <class PS, int N, bool kEarlyZ, int S>
-void TileRasterizer<PS, N, kEarlyZ, S>::rasterize_wide(const TriangleSetup& t, int sx0, int sy0, int x1, int y1) {
+bool TileRasterizer<PS, N, kEarlyZ, S>::wide_coverage(const TriangleSetup& t, int px, int py, const Int& clip,
+                                                      Int* coverage) {
   // Edges too long for 32-bit per-sample steps: exact 64-bit evaluation, one sample at a time.
-  Int coverage[S];
-  for (int py = sy0; py < y1; py += simd::kStampHeight) {
-    for (int px = sx0; px < x1; px += simd::kStampWidth) {
-      const Int clip = clip_mask(px, py);
-      Int any(0);
-      for (int s = 0; s < S; ++s) {
-        alignas(64) int32_t inside[simd::kLanes];
-        for (int l = 0; l < simd::kLanes; ++l) {
-          const int64_t X = int64_t(px + simd::lane_x(l)) * kSubpixelsPerPixel + sample_x_[s];
-          const int64_t Y = int64_t(py + simd::lane_y(l)) * kSubpixelsPerPixel + sample_y_[s];
-          bool in = true;
-          for (const Edge& e : t.edge) in &= e.a * X + e.b * Y + e.c >= 0;
-          inside[l] = in ? -1 : 0;
-        }
-        coverage[s] = clip & Int::load_aligned(inside);
-        any |= coverage[s];
-      }
-      if (!simd::sign_bits(any)) continue;
-      ++stats.stamps_partial;
-      ++stats.stamps_wide_edges;
-      shade_stamp(t, px, py, coverage);
+  Int any(0);
+  for (int s = 0; s < S; ++s) {
+    alignas(64) int32_t inside[simd::kLanes];
+    for (int l = 0; l < simd::kLanes; ++l) {
+      const int64_t X = int64_t(px + simd::lane_x(l)) * kSubpixelsPerPixel + sample_x_[s];
+      const int64_t Y = int64_t(py + simd::lane_y(l)) * kSubpixelsPerPixel + sample_y_[s];
+      bool in = true;
+      for (const Edge& e : t.edge) in &= e.a * X + e.b * Y + e.c >= 0;
+      inside[l] = in ? -1 : 0;
     }
+    coverage[s] = clip & Int::load_aligned(inside);
+    any |= coverage[s];
   }
+  if (!simd::sign_bits(any)) return false;
+  ++stats.stamps_partial;
+  ++stats.stamps_wide_edges;
+  return true;
 }
 
 template <class PS, int N, bool kEarlyZ, int S>
@@ -360,6 +357,7 @@ void TileRasterizer<PS, N, kEarlyZ, S>::shade_stamp(const TriangleSetup& t, int 
   in.front_facing = t.front_facing;
   PixelOutput out;
   ps_(in, out);
+  ++stats.stamps_shaded;
 
   if constexpr (!kEarlyZ) {
     Int keep(-1);
