@@ -88,7 +88,16 @@ class TileRasterizer {
   DrawStats stats;
 
  private:
+  /// Edge data of one triangle at stamp granularity.
+  struct StampEdges {
+    Int lane_offset[3][S];               ///< narrow edges: value at each lane and sample minus the stamp corner's
+    int64_t min_offset[3], max_offset[3];  ///< bounds over a stamp, relative to its corner
+  };
+  static constexpr int kBlockSize = 16;  ///< pixels; a tile is 4 x 4 blocks
+  static_assert(kTileSize % kBlockSize == 0 && kBlockSize % simd::kStampWidth == 0);
+
   void rasterize(const TriangleSetup& t, int x0, int y0, int x1, int y1);
+  void rasterize_stamps(const TriangleSetup& t, const StampEdges& edges, int x0, int y0, int x1, int y1);
   /// Per-sample coverage of a partly covered stamp of a triangle with wide edges.
   bool wide_coverage(const TriangleSetup& t, int px, int py, const Int& clip, Int* coverage);
   /// The lanes of the stamp at (px, py) inside the draw's clip rectangle.
@@ -138,28 +147,69 @@ void TileRasterizer<PS, N, kEarlyZ, S>::triangle(const TriangleSetup& t) {
   rasterize(t, sx0, sy0, x1, y1);
 }
 
+/// Edge bounds over a w x h subpixel rectangle from its corner: [min, max] added to the corner's value.
+inline void edge_bounds(const Edge& e, int64_t w, int64_t h, int64_t& lo, int64_t& hi) {
+  const int64_t ax = int64_t(e.a) * (w - 1), by = int64_t(e.b) * (h - 1);
+  lo = std::min<int64_t>(0, ax) + std::min<int64_t>(0, by);
+  hi = std::max<int64_t>(0, ax) + std::max<int64_t>(0, by);
+}
+
 template <class PS, int N, bool kEarlyZ, int S>
 void TileRasterizer<PS, N, kEarlyZ, S>::rasterize(const TriangleSetup& t, int sx0, int sy0, int x1, int y1) {
-  constexpr int kStampW = simd::kStampWidth * kSubpixelsPerPixel;
-  constexpr int kStampH = simd::kStampHeight * kSubpixelsPerPixel;
-  constexpr int64_t kClamp = int64_t(1) << 30;
-
-  // Per edge and sample: the edge's value at each lane relative to the stamp corner (only
-  // meaningful for narrow edges, whose values there fit 32 bits).
-  Int lane_offset[3][S];
-  int64_t min_offset[3], max_offset[3];
+  StampEdges edges;
   for (int e = 0; e < 3; ++e) {
     const Edge& E = t.edge[e];
     if (t.narrow_edges) {
       const Int pixel = Int(E.a) * lanes_.x_sub + Int(E.b) * lanes_.y_sub;
-      for (int s = 0; s < S; ++s) lane_offset[e][s] = pixel + Int(E.a * sample_x_[s] + E.b * sample_y_[s]);
+      for (int s = 0; s < S; ++s) edges.lane_offset[e][s] = pixel + Int(E.a * sample_x_[s] + E.b * sample_y_[s]);
     }
-    // Bounds of the edge over the stamp's area (conservative: the whole rectangle).
-    const int64_t ax = int64_t(E.a) * (kStampW - 1), by = int64_t(E.b) * (kStampH - 1);
-    min_offset[e] = std::min<int64_t>(0, ax) + std::min<int64_t>(0, by);
-    max_offset[e] = std::max<int64_t>(0, ax) + std::max<int64_t>(0, by);
+    edge_bounds(E, simd::kStampWidth * kSubpixelsPerPixel, simd::kStampHeight * kSubpixelsPerPixel,
+                edges.min_offset[e], edges.max_offset[e]);
   }
+  // Small triangles: straight to stamps. Larger ones: 16x16 blocks first, each rejected,
+  // accepted whole (no edge tests for its stamps), or walked stamp by stamp.
+  if (x1 - sx0 <= kBlockSize || y1 - sy0 <= kBlockSize) {
+    rasterize_stamps(t, edges, sx0, sy0, x1, y1);
+    return;
+  }
+  int64_t block_min[3], block_max[3];
+  for (int e = 0; e < 3; ++e)
+    edge_bounds(t.edge[e], kBlockSize * kSubpixelsPerPixel, kBlockSize * kSubpixelsPerPixel, block_min[e], block_max[e]);
+  for (int by = sy0 & ~(kBlockSize - 1); by < y1; by += kBlockSize) {
+    for (int bx = sx0 & ~(kBlockSize - 1); bx < x1; bx += kBlockSize) {
+      bool outside = false, inside = true;
+      for (int e = 0; e < 3; ++e) {
+        const Edge& E = t.edge[e];
+        const int64_t v = E.c + int64_t(E.a) * bx * kSubpixelsPerPixel + int64_t(E.b) * by * kSubpixelsPerPixel;
+        outside |= v + block_max[e] < 0;
+        inside &= v + block_min[e] >= 0;
+      }
+      if (outside) continue;
+      const int x0 = std::max(bx, sx0), y0 = std::max(by, sy0);
+      const int xe = std::min(bx + kBlockSize, x1), ye = std::min(by + kBlockSize, y1);
+      if (!inside) {
+        rasterize_stamps(t, edges, x0, y0, xe, ye);
+        continue;
+      }
+      ++stats.blocks_full;
+      Int coverage[S];
+      for (int py = y0; py < ye; py += simd::kStampHeight) {
+        for (int px = x0; px < xe; px += simd::kStampWidth) {
+          const Int clip = clip_mask(px, py);
+          for (int s = 0; s < S; ++s) coverage[s] = clip;
+          ++stats.stamps_full;
+          shade_stamp(t, px, py, coverage);
+        }
+      }
+    }
+  }
+}
 
+template <class PS, int N, bool kEarlyZ, int S>
+void TileRasterizer<PS, N, kEarlyZ, S>::rasterize_stamps(const TriangleSetup& t, const StampEdges& edges, int sx0,
+                                                        int sy0, int x1, int y1) {
+  constexpr int kStampW = simd::kStampWidth * kSubpixelsPerPixel;
+  constexpr int64_t kClamp = int64_t(1) << 30;
   Int coverage[S];
   for (int py = sy0; py < y1; py += simd::kStampHeight) {
     int64_t row[3];
@@ -169,9 +219,9 @@ void TileRasterizer<PS, N, kEarlyZ, S>::rasterize(const TriangleSetup& t, int sx
     for (int px = sx0; px < x1; px += simd::kStampWidth) {
       const int64_t e0 = row[0], e1 = row[1], e2 = row[2];
       for (int e = 0; e < 3; ++e) row[e] += int64_t(t.edge[e].a) * kStampW;
-      if (e0 + max_offset[0] < 0 || e1 + max_offset[1] < 0 || e2 + max_offset[2] < 0) continue;
+      if (e0 + edges.max_offset[0] < 0 || e1 + edges.max_offset[1] < 0 || e2 + edges.max_offset[2] < 0) continue;
       const Int clip = clip_mask(px, py);
-      if (e0 + min_offset[0] >= 0 && e1 + min_offset[1] >= 0 && e2 + min_offset[2] >= 0) {
+      if (e0 + edges.min_offset[0] >= 0 && e1 + edges.min_offset[1] >= 0 && e2 + edges.min_offset[2] >= 0) {
         for (int s = 0; s < S; ++s) coverage[s] = clip;
         ++stats.stamps_full;
       } else if (t.narrow_edges) {
@@ -183,7 +233,8 @@ void TileRasterizer<PS, N, kEarlyZ, S>::rasterize(const TriangleSetup& t, int sx
         Int any(0);
         for (int s = 0; s < S; ++s) {
           // Negative in any edge: the sign bit marks the lanes outside.
-          const Int outside = (c0 + lane_offset[0][s]) | (c1 + lane_offset[1][s]) | (c2 + lane_offset[2][s]);
+          const Int outside = (c0 + edges.lane_offset[0][s]) | (c1 + edges.lane_offset[1][s]) |
+                              (c2 + edges.lane_offset[2][s]);
           coverage[s] = clip & ~(outside >> 31);
           any |= coverage[s];
         }
