@@ -16,6 +16,7 @@ std::unique_ptr<BuiltinScene> make_builtin_scene(std::string_view name, const Fr
                                 " is outside 1.." + std::to_string(rasterizer::kMaxTargetSize));
   if (!rasterizer::is_valid_sample_count(s.samples))
     throw std::invalid_argument("msaa " + std::to_string(s.samples) + " is not 1, 2, 4 or 8");
+  if (name == "demo") return make_demo_scene(s);
   if (name == "fill") return make_fill_scene(s);
   if (name == "tris") return make_tris_scene(s);
   std::string known;

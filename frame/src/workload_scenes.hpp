@@ -6,4 +6,5 @@
 namespace luxel::frame {
 std::unique_ptr<BuiltinScene> make_fill_scene(const FrameSettings& s);
 std::unique_ptr<BuiltinScene> make_tris_scene(const FrameSettings& s);
+std::unique_ptr<BuiltinScene> make_demo_scene(const FrameSettings& s);
 }  // namespace luxel::frame

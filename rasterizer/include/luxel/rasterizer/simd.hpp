@@ -188,6 +188,27 @@ inline void store_bytes(uint8_t* p, const Int& v) {
 #endif
 }
 
+/// base[index[l]] in each lane l. (xsimd 8.1's batch<int32_t>::gather never picks the AVX2
+/// instruction, its enable_if makes that overload unusable, and inserts lanes one by one.)
+inline Int gather(const int32_t* base, const Int& index) {
+#if defined(__AVX512F__)
+  return Int(_mm512_i32gather_epi32(index, base, 4));
+#elif defined(__AVX2__)
+  return Int(_mm256_i32gather_epi32(base, index, 4));
+#else
+  return Int::gather(base, index);
+#endif
+}
+inline Float gather(const float* base, const Int& index) {
+#if defined(__AVX512F__)
+  return Float(_mm512_i32gather_ps(index, base, 4));
+#elif defined(__AVX2__)
+  return Float(_mm256_i32gather_ps(base, index, 4));
+#else
+  return Float::gather(base, index);
+#endif
+}
+
 /// Each lane of `packed` holds two IEEE halves; returns them as floats (exactly, denormals, inf
 /// and NaN included, whatever the FTZ/DAZ mode): `low` from bits 0-15, `high` from bits 16-31.
 /// (Texture sampling of RGBA16F; F16C is part of x86-64-v3.)

@@ -1,0 +1,226 @@
+// The scalar reference of texture sampling: one sample at a time, written to be read.
+//
+// It follows the conventions in texture.hpp step by step. Where they fix float32 arithmetic
+// (coordinate reduction, texel positions, filter weights, face projection) it does exactly those
+// float operations, so that it picks the same texels as the SIMD path; everything after that
+// (decoding, filtering, cube seams) is done in double, by different means than the SIMD path
+// (true modulo for addressing, geometry for cube seams), so the two check each other.
+
+#include "luxel/rasterizer/texture.hpp"
+
+#include "texture_internal.hpp"
+
+#include <glm/geometric.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <optional>
+
+namespace luxel::rasterizer {
+
+namespace {
+
+using glm::dvec4;
+
+dvec4 lerp(const dvec4& a, const dvec4& b, double t) { return a + t * (b - a); }
+
+/// One period of the coordinate, in float32 as the header prescribes.
+float reduce(float c, Address mode) {
+  if (std::isnan(c)) c = 0.0f;
+  float r = c;
+  switch (mode) {
+    case Address::Wrap: r = c - std::floor(c); break;
+    case Address::Mirror: r = c - 2.0f * std::floor(c * 0.5f); break;
+    case Address::Clamp:
+    case Address::Border: r = std::clamp(c, -1.0f, 2.0f); break;
+  }
+  return std::isnan(r) ? 0.0f : r;  // infinity - infinity under Wrap / Mirror
+}
+
+/// The texel index that `i` reads along an axis of `n` texels, or nothing for the border.
+std::optional<int> address(int i, int n, Address mode) {
+  switch (mode) {
+    case Address::Wrap: return ((i % n) + n) % n;
+    case Address::Mirror: {
+      const int m = ((i % (2 * n)) + 2 * n) % (2 * n);
+      return m < n ? m : 2 * n - 1 - m;
+    }
+    case Address::Clamp: return std::clamp(i, 0, n - 1);
+    case Address::Border:
+      if (i < 0 || i >= n) return std::nullopt;
+      return i;
+  }
+  return std::nullopt;
+}
+
+struct Reference {
+  const Texture& texture;
+  const Sampler& sampler;
+
+  dvec4 texel(int level, int face, int x, int y, int z) const {
+    const auto bytes = texture.level_bytes(level, face);
+    const size_t index =
+        (static_cast<size_t>(z) * texture.height(level) + y) * texture.width(level) + static_cast<size_t>(x);
+    return texture_detail::decode_texel(texture.format(),
+                                        bytes.data() + index * bytes_per_texel(texture.format()));
+  }
+
+  /// Texel (i, j, k) of a 2D or volume level, after addressing.
+  dvec4 addressed(int level, int i, int j, int k) const {
+    const auto x = address(i, texture.width(level), sampler.u);
+    const auto y = address(j, texture.height(level), sampler.v);
+    const auto z = texture.kind() == TextureKind::Volume ? address(k, texture.depth(level), sampler.w)
+                                                         : std::optional<int>(0);
+    if (!x || !y || !z) return dvec4(sampler.border);
+    return texel(level, 0, *x, *y, *z);
+  }
+
+  dvec4 filter_2d_or_volume(int level, Filter filter, glm::vec3 c) const {
+    const bool volume = texture.kind() == TextureKind::Volume;
+    const float size[3] = {static_cast<float>(texture.width(level)),
+                           static_cast<float>(texture.height(level)),
+                           static_cast<float>(texture.depth(level))};
+    if (filter == Filter::Point) {
+      const int i = static_cast<int>(std::floor(c.x * size[0]));
+      const int j = static_cast<int>(std::floor(c.y * size[1]));
+      const int k = volume ? static_cast<int>(std::floor(c.z * size[2])) : 0;
+      return addressed(level, i, j, k);
+    }
+    int first[3];
+    double weight[3];
+    for (int a = 0; a < (volume ? 3 : 2); ++a) {
+      const float x = c[a] * size[a] - 0.5f;
+      const float fl = std::floor(x);
+      first[a] = static_cast<int>(fl);
+      weight[a] = x - fl;
+    }
+    if (!volume) {
+      const int i = first[0], j = first[1];
+      return lerp(lerp(addressed(level, i, j, 0), addressed(level, i + 1, j, 0), weight[0]),
+                  lerp(addressed(level, i, j + 1, 0), addressed(level, i + 1, j + 1, 0), weight[0]),
+                  weight[1]);
+    }
+    const int i = first[0], j = first[1], k = first[2];
+    auto slice = [&](int kk) {
+      return lerp(lerp(addressed(level, i, j, kk), addressed(level, i + 1, j, kk), weight[0]),
+                  lerp(addressed(level, i, j + 1, kk), addressed(level, i + 1, j + 1, kk), weight[0]),
+                  weight[1]);
+    };
+    return lerp(slice(k), slice(k + 1), weight[2]);
+  }
+
+  /// Texel (i, j) of a cube face at `level`, where (i, j) may lie one texel past one edge of the
+  /// face: extend the face's plane, take the direction through that texel's center, and read the
+  /// texel of the cube that direction hits. (In double: the hit lands within 1/(2(n+1)) texel of
+  /// the right texel's edge, too close for float32 at large sizes.)
+  dvec4 cube_texel(int level, int face, int i, int j) const {
+    const int n = texture.width(level);
+    if (i >= 0 && i < n && j >= 0 && j < n) return texel(level, face, i, j, 0);
+    const auto& basis = texture_detail::kCubeFaceBasis[face];
+    const double s = (2.0 * i + 1.0) / n - 1.0, t = (2.0 * j + 1.0) / n - 1.0;
+    const glm::dvec3 d =
+        glm::dvec3(basis.normal) + glm::dvec3(basis.u_axis) * s + glm::dvec3(basis.v_axis) * t;
+    const glm::dvec3 a = glm::abs(d);
+    const int axis = a.z >= a.x && a.z >= a.y ? 2 : a.y >= a.x ? 1 : 0;
+    const int hit = 2 * axis + (d[axis] < 0.0 ? 1 : 0);
+    const auto& hit_basis = texture_detail::kCubeFaceBasis[hit];
+    const double u = (glm::dot(glm::dvec3(hit_basis.u_axis), d) / a[axis] + 1.0) * 0.5;
+    const double v = (glm::dot(glm::dvec3(hit_basis.v_axis), d) / a[axis] + 1.0) * 0.5;
+    const int hi = std::clamp(static_cast<int>(std::floor(u * n)), 0, n - 1);
+    const int hj = std::clamp(static_cast<int>(std::floor(v * n)), 0, n - 1);
+    return texel(level, hit, hi, hj, 0);
+  }
+
+  dvec4 filter_cube(int level, Filter filter, const CubeFaceCoord& fc) const {
+    const int face = static_cast<int>(fc.face);
+    const int n = texture.width(level);
+    const float size = static_cast<float>(n);
+    if (filter == Filter::Point) {
+      const int i = std::min(static_cast<int>(std::floor(fc.u * size)), n - 1);
+      const int j = std::min(static_cast<int>(std::floor(fc.v * size)), n - 1);
+      return texel(level, face, i, j, 0);
+    }
+    const float x = fc.u * size - 0.5f, y = fc.v * size - 0.5f;
+    const float fx = std::floor(x), fy = std::floor(y);
+    const int i = static_cast<int>(fx), j = static_cast<int>(fy);
+    // The footprint: t[b][a] is texel (i + a, j + b).
+    dvec4 t[2][2];
+    bool corner[2][2];
+    for (int b = 0; b < 2; ++b) {
+      for (int a = 0; a < 2; ++a) {
+        const bool off_i = i + a < 0 || i + a >= n, off_j = j + b < 0 || j + b >= n;
+        corner[b][a] = off_i && off_j;
+        if (!corner[b][a]) t[b][a] = cube_texel(level, face, i + a, j + b);
+      }
+    }
+    // At a cube corner one texel lies on no face: it is the mean of the other three.
+    for (int b = 0; b < 2; ++b) {
+      for (int a = 0; a < 2; ++a) {
+        if (corner[b][a]) t[b][a] = (t[b][1 - a] + t[1 - b][a] + t[1 - b][1 - a]) / 3.0;
+      }
+    }
+    return lerp(lerp(t[0][0], t[0][1], x - fx), lerp(t[1][0], t[1][1], x - fx), y - fy);
+  }
+
+  dvec4 at_level(int level, Filter filter, glm::vec3 coord) const {
+    if (texture.kind() == TextureKind::Cube) return filter_cube(level, filter, cube_face(coord));
+    const glm::vec3 c(reduce(coord.x, sampler.u), reduce(coord.y, sampler.v), reduce(coord.z, sampler.w));
+    return filter_2d_or_volume(level, filter, c);
+  }
+};
+
+}  // namespace
+
+glm::vec4 sample_reference(const Texture& texture, const Sampler& sampler, glm::vec3 coord, float lod) {
+  const Reference ref{texture, sampler};
+  lod = lod + sampler.lod_bias;
+  if (std::isnan(lod)) lod = 0.0f;
+  lod = std::min(std::max(lod, sampler.min_lod), sampler.max_lod);
+  const Filter filter = lod <= 0.0f ? sampler.mag : sampler.min;
+  const float last = static_cast<float>(texture.mip_levels() - 1);
+  switch (sampler.mip) {
+    case MipFilter::None: return glm::vec4(ref.at_level(0, filter, coord));
+    case MipFilter::Point: {
+      const int level = static_cast<int>(std::floor(std::min(std::max(lod, 0.0f), last) + 0.5f));
+      return glm::vec4(ref.at_level(level, filter, coord));
+    }
+    case MipFilter::Linear: {
+      const float l = std::min(std::max(lod, 0.0f), last);
+      const float fl = std::floor(l);
+      const int level = static_cast<int>(fl);
+      const double t = l - fl;
+      const dvec4 finer = ref.at_level(level, filter, coord);
+      if (t == 0.0) return glm::vec4(finer);
+      return glm::vec4(lerp(finer, ref.at_level(level + 1, filter, coord), t));
+    }
+  }
+  return {};
+}
+
+float lod_reference(const Texture& texture, glm::vec3 coord, glm::vec3 ddx, glm::vec3 ddy) {
+  glm::dvec3 dx(ddx), dy(ddy);
+  glm::dvec3 scale(texture.width(), texture.height(), texture.depth());
+  if (texture.kind() == TextureKind::Texture2D) {
+    dx.z = dy.z = 0.0;
+  } else if (texture.kind() == TextureKind::Cube) {
+    // Derivatives of the face coordinates u = (sc / |ma| + 1) / 2, v = (tc / |ma| + 1) / 2 on the
+    // face `coord` selects, by the quotient rule.
+    const CubeFaceCoord fc = cube_face(coord);
+    const auto& basis = texture_detail::kCubeFaceBasis[static_cast<int>(fc.face)];
+    const glm::dvec3 n(basis.normal), ua(basis.u_axis), va(basis.v_axis), c(coord);
+    const double ma = glm::dot(n, c);  // = |major axis|, positive on its own face
+    auto face_derivative = [&](const glm::dvec3& d) {
+      const double dma = glm::dot(n, d);
+      const double du = 0.5 * (glm::dot(ua, d) * ma - glm::dot(ua, c) * dma) / (ma * ma);
+      const double dv = 0.5 * (glm::dot(va, d) * ma - glm::dot(va, c) * dma) / (ma * ma);
+      return glm::dvec3(du, dv, 0.0);
+    };
+    dx = face_derivative(dx);
+    dy = face_derivative(dy);
+    scale.z = 0.0;
+  }
+  const double rho_x = glm::length(dx * scale), rho_y = glm::length(dy * scale);
+  return static_cast<float>(std::log2(std::max(rho_x, rho_y)));
+}
+
+}  // namespace luxel::rasterizer

@@ -1,0 +1,650 @@
+// The SIMD sampling path: one stamp of simd::kLanes pixels per call.
+//
+// Per call: project cube directions / reduce coordinates (once), turn the LOD into one or two
+// levels per lane, then per level: texel positions and addressing in integer lanes, one gather per
+// footprint texel (two for 8-byte formats), decode, lerp. Filtering happens in each format's
+// "raw" domain (UNORM channels as 0..2^n-1 integers in float, sRGB already decoded to linear) and
+// the UNORM scale is applied once at the end, rounded like a division so that a point sample of c
+// is exactly c / (2^n - 1).
+//
+// Level geometry is taken per lane (levels differ between quads in trilinear stamps), with a fast
+// case when the whole stamp reads one level. Cube footprints that leave a face (only lanes within
+// half a texel of an edge) are fixed up lane by lane from a table of the 24 face edges.
+
+#include "luxel/rasterizer/texture.hpp"
+
+#include "texture_internal.hpp"
+
+#include <array>
+#include <cstring>
+#include <limits>
+
+namespace luxel::rasterizer {
+
+namespace {
+
+using simd::Float;
+using simd::Float4;
+using simd::Int;
+using simd::kLanes;
+using FloatMask = simd::FloatMask;
+using IntMask = simd::IntMask;
+
+// GCC leaves some of the small helpers below as calls, passing batches through memory; they are
+// a few instructions each and run several times per texel.
+#define LUXEL_TEXTURE_INLINE [[gnu::always_inline]] inline
+
+// --- Small lane helpers -----------------------------------------------------------------------
+
+LUXEL_TEXTURE_INLINE Int to_int(const Float& x) { return xsimd::to_int(x); }  // exact on floor()ed values
+LUXEL_TEXTURE_INLINE Float to_float(const Int& i) { return xsimd::to_float(i); }
+LUXEL_TEXTURE_INLINE FloatMask float_mask(const IntMask& m) { return xsimd::bool_cast(m); }
+LUXEL_TEXTURE_INLINE IntMask int_mask(const FloatMask& m) { return xsimd::bool_cast(m); }
+LUXEL_TEXTURE_INLINE Float lerp(const Float& a, const Float& b, const Float& t) {
+  return xsimd::fma(t, b - a, a);
+}
+LUXEL_TEXTURE_INLINE Float4 lerp(const Float4& a, const Float4& b, const Float& t) {
+  return {lerp(a.x, b.x, t), lerp(a.y, b.y, t), lerp(a.z, b.z, t), lerp(a.w, b.w, t)};
+}
+LUXEL_TEXTURE_INLINE Float4 select(const FloatMask& m, const Float4& a, const Float4& b) {
+  return {xsimd::select(m, a.x, b.x), xsimd::select(m, a.y, b.y), xsimd::select(m, a.z, b.z),
+          xsimd::select(m, a.w, b.w)};
+}
+LUXEL_TEXTURE_INLINE Float4 broadcast(const glm::vec4& v) {
+  return {Float(v.x), Float(v.y), Float(v.z), Float(v.w)};
+}
+
+/// x / d, correctly rounded like a division, for the UNORM scales d = 255 and 65535: a product by
+/// the rounded reciprocal and one Markstein correction step (e = x - q d is exact with an FMA).
+/// Checked equal to x / d for every integer and 10^7 random x in [0, d]; a third of a divide's cost.
+template <int kDivisor>
+LUXEL_TEXTURE_INLINE Float divide_by(const Float& x) {
+  const Float d(static_cast<float>(kDivisor)), r(1.0f / static_cast<float>(kDivisor));
+  const Float q = x * r;
+  return xsimd::fma(xsimd::fnma(q, d, x), r, q);
+}
+
+/// 32-bit words at base[index[l]].
+LUXEL_TEXTURE_INLINE Int gather(const int32_t* base, const Int& index) {
+#if defined(__SANITIZE_ADDRESS__)
+  // Hardware gathers are invisible to AddressSanitizer; scalar loads let it check every read.
+  alignas(64) int32_t i[kLanes], out[kLanes];
+  index.store_aligned(i);
+  for (int l = 0; l < kLanes; ++l) out[l] = base[i[l]];
+  return Int::load_aligned(out);
+#else
+  return simd::gather(base, index);
+#endif
+}
+
+LUXEL_TEXTURE_INLINE Float gather(const float* base, const Int& index) {
+#if defined(__SANITIZE_ADDRESS__)
+  alignas(64) int32_t i[kLanes];
+  alignas(64) float out[kLanes];
+  index.store_aligned(i);
+  for (int l = 0; l < kLanes; ++l) out[l] = base[i[l]];
+  return Float::load_aligned(out);
+#else
+  return simd::gather(base, index);
+#endif
+}
+
+/// log2(x) for the LOD: for normal x > 0 within 1e-7 plus the float rounding of the result
+/// (exponent plus a degree-8 polynomial in the mantissa around 1, interpolating at Chebyshev
+/// nodes), -inf for 0, x itself for +inf and NaN. No division and no branch, unlike xsimd::log2;
+/// D3D11 asks for only 8 bits of LOD fraction (D3D11_MIP_LOD_FRACTIONAL_BIT_COUNT).
+LUXEL_TEXTURE_INLINE Float lod_log2(const Float& x) {
+  const Int bits = xsimd::bitwise_cast<Int>(x);
+  Float m = xsimd::bitwise_cast<Float>((bits & Int(0x007fffff)) | Int(0x3f800000));  // [1, 2)
+  const FloatMask high = m > Float(1.41421356f);  // -> [sqrt(1/2), sqrt(2)), where p is fitted
+  m = xsimd::select(high, m * Float(0.5f), m);
+  const Float e = to_float((bits >> 23) - Int(127) + xsimd::select(int_mask(high), Int(1), Int(0)));
+  const Float t = m - Float(1.0f);
+  // log2(1 + t) = t q(t)
+  Float q(-0.14275973432660397f);
+  q = xsimd::fma(q, t, Float(0.232652578806726f));
+  q = xsimd::fma(q, t, Float(-0.2492718220796073f));
+  q = xsimd::fma(q, t, Float(0.2872888823759086f));
+  q = xsimd::fma(q, t, Float(-0.3602251824607909f));
+  q = xsimd::fma(q, t, Float(0.4809167080001651f));
+  q = xsimd::fma(q, t, Float(-0.7213529313629768f));
+  q = xsimd::fma(q, t, Float(1.4426949948930465f));
+  Float r = xsimd::fma(q, t, e);
+  const Float infinity(std::numeric_limits<float>::infinity());
+  r = xsimd::select(x == Float(0.0f), -infinity, r);
+  return xsimd::select(x < infinity, r, x);  // +inf and NaN pass through
+}
+
+// --- Formats ----------------------------------------------------------------------------------
+// Each format: kWords per texel, fetch() to the raw domain, the border color in that domain, and
+// finish() from raw to the returned linear RGBA.
+
+struct Rgba8 {
+  static constexpr int kWords = 1;
+  LUXEL_TEXTURE_INLINE static Float4 fetch(const int32_t* words, const Int& index) {
+    const Int w = gather(words, index), byte(0xff);
+    return {to_float(w & byte), to_float((w >> 8) & byte), to_float((w >> 16) & byte),
+            to_float((w >> 24) & byte)};
+  }
+  static Float4 raw_border(const glm::vec4& b) { return broadcast(b * 255.0f); }
+  static Float4 finish(const Float4& raw) {
+    return {divide_by<255>(raw.x), divide_by<255>(raw.y), divide_by<255>(raw.z), divide_by<255>(raw.w)};
+  }
+};
+
+struct Rgba8Srgb {
+  static constexpr int kWords = 1;
+  LUXEL_TEXTURE_INLINE static Float4 fetch(const int32_t* words, const Int& index) {
+    const float* table = texture_detail::kSrgbToLinear.data();
+    const Int w = gather(words, index), byte(0xff);
+    return {gather(table, w & byte), gather(table, (w >> 8) & byte), gather(table, (w >> 16) & byte),
+            to_float((w >> 24) & byte)};
+  }
+  static Float4 raw_border(const glm::vec4& b) { return broadcast({b.x, b.y, b.z, b.w * 255.0f}); }
+  static Float4 finish(const Float4& raw) { return {raw.x, raw.y, raw.z, divide_by<255>(raw.w)}; }
+};
+
+struct Rgba16f {
+  static constexpr int kWords = 2;
+  LUXEL_TEXTURE_INLINE static Float4 fetch(const int32_t* words, const Int& index) {
+    Float4 t;
+    simd::unpack_halves(gather(words, index), t.x, t.y);
+    simd::unpack_halves(gather(words, index + Int(1)), t.z, t.w);
+    return t;
+  }
+  static Float4 raw_border(const glm::vec4& b) { return broadcast(b); }
+  static Float4 finish(const Float4& raw) { return raw; }
+};
+
+struct Rgba16 {
+  static constexpr int kWords = 2;
+  LUXEL_TEXTURE_INLINE static Float4 fetch(const int32_t* words, const Int& index) {
+    const Int rg = gather(words, index), ba = gather(words, index + Int(1)), low(0xffff);
+    return {to_float(rg & low), to_float((rg >> 16) & low), to_float(ba & low), to_float((ba >> 16) & low)};
+  }
+  static Float4 raw_border(const glm::vec4& b) { return broadcast(b * 65535.0f); }
+  static Float4 finish(const Float4& raw) {
+    return {divide_by<65535>(raw.x), divide_by<65535>(raw.y), divide_by<65535>(raw.z),
+            divide_by<65535>(raw.w)};
+  }
+};
+
+struct R32f {
+  static constexpr int kWords = 1;
+  LUXEL_TEXTURE_INLINE static Float4 fetch(const int32_t* words, const Int& index) {
+    const Float one(1.0f);
+    return {gather(reinterpret_cast<const float*>(words), index), one, one, one};
+  }
+  static Float4 raw_border(const glm::vec4& b) { return broadcast(b); }
+  static Float4 finish(const Float4& raw) { return raw; }
+};
+
+// --- Per-call state ---------------------------------------------------------------------------
+
+struct Context {
+  const Texture& texture;
+  const Sampler& sampler;
+  const int32_t* words;
+  Float4 border;  ///< in the format's raw domain
+  bool any_border;
+};
+
+/// Geometry of the level each lane reads.
+struct Level {
+  Int width, height, depth;
+  Float fwidth, fheight, fdepth;
+  Int offset;  ///< first word of the level within a face
+};
+
+LUXEL_TEXTURE_INLINE Level level_geometry(const Texture& t, const Int& level) {
+  alignas(64) int32_t l[kLanes];
+  level.store_aligned(l);
+  Level g;
+  if (xsimd::all(level == Int(l[0]))) {
+    g.width = Int(t.width(l[0]));
+    g.height = Int(t.height(l[0]));
+    g.depth = Int(t.depth(l[0]));
+    g.offset = Int(TextureAccess::level_offsets(t)[l[0]]);
+  } else {
+    const Int one(1);
+    g.width = xsimd::max(Int(t.width()) >> level, one);
+    g.height = xsimd::max(Int(t.height()) >> level, one);
+    g.depth = xsimd::max(Int(t.depth()) >> level, one);
+    g.offset = simd::gather(TextureAccess::level_offsets(t).data(), level);
+  }
+  g.fwidth = to_float(g.width);
+  g.fheight = to_float(g.height);
+  g.fdepth = to_float(g.depth);
+  return g;
+}
+
+// --- Addressing -------------------------------------------------------------------------------
+
+/// One period of the coordinate (see texture.hpp); NaN -> 0.
+LUXEL_TEXTURE_INLINE Float reduce(const Float& c, Address mode) {
+  const Float zero(0.0f);
+  Float x = xsimd::select(xsimd::isnan(c), zero, c);
+  switch (mode) {
+    case Address::Wrap: x = x - xsimd::floor(x); return xsimd::select(xsimd::isnan(x), zero, x);
+    case Address::Mirror:
+      x = x - Float(2.0f) * xsimd::floor(x * Float(0.5f));
+      return xsimd::select(xsimd::isnan(x), zero, x);
+    case Address::Clamp:
+    case Address::Border: return xsimd::min(xsimd::max(x, Float(-1.0f)), Float(2.0f));
+  }
+  return x;
+}
+
+/// Texel index along an axis of n texels. The reduced coordinate bounds i to [-1, n] under Wrap,
+/// [-1, 2n] under Mirror; Border sets `outside` and clamps (so every read stays in the level).
+LUXEL_TEXTURE_INLINE Int address(Int i, const Int& n, Address mode, IntMask& outside) {
+  const Int zero(0), one(1);
+  switch (mode) {
+    case Address::Wrap: {
+      // -1 -> n-1 and n -> 0 as unsigned minima: of i, i + n and i - n, the out-of-range
+      // candidates are negative, i.e. huge unsigned.
+      const simd::UInt u = xsimd::bitwise_cast<simd::UInt>(i);
+      const simd::UInt wrapped = xsimd::min(xsimd::min(u, u + xsimd::bitwise_cast<simd::UInt>(n)),
+                                            u - xsimd::bitwise_cast<simd::UInt>(n));
+      return xsimd::bitwise_cast<Int>(wrapped);
+    }
+    case Address::Mirror: {
+      const Int period = n + n;
+      i = xsimd::select(i < zero, Int(-1) - i, i);
+      i = xsimd::select(i >= period, i - period, i);
+      return xsimd::select(i >= n, period - one - i, i);
+    }
+    case Address::Clamp: return xsimd::min(xsimd::max(i, zero), n - one);
+    case Address::Border: outside = (i < zero) | (i >= n); return xsimd::min(xsimd::max(i, zero), n - one);
+  }
+  return i;
+}
+
+/// The two texels and the weight of the second along one axis of a linear footprint.
+struct LinearAxis {
+  Int i0, i1;
+  Float weight;
+  // (Not brace-initialized: xsimd reads a braced bool as an initializer list of all lanes.)
+  IntMask outside0 = IntMask(false), outside1 = IntMask(false);  ///< set by Border only
+};
+
+LUXEL_TEXTURE_INLINE LinearAxis linear_axis(const Float& c, const Int& n, const Float& fn, Address mode) {
+  const Float x = c * fn - Float(0.5f);
+  const Float first = xsimd::floor(x);
+  LinearAxis a;
+  a.weight = x - first;
+  const Int i0 = to_int(first);
+  a.i0 = address(i0, n, mode, a.outside0);
+  a.i1 = address(i0 + Int(1), n, mode, a.outside1);
+  return a;
+}
+
+LUXEL_TEXTURE_INLINE Int point_axis(const Float& c, const Int& n, const Float& fn, Address mode,
+                                    IntMask& outside) {
+  return address(to_int(xsimd::floor(c * fn)), n, mode, outside);
+}
+
+template <class Format>
+LUXEL_TEXTURE_INLINE Int word_index(const Int& offset, const Int& texel) {
+  return Format::kWords == 1 ? offset + texel : offset + (texel << 1);
+}
+
+/// Replaces the lanes of `t` outside the level with the border color.
+LUXEL_TEXTURE_INLINE void apply_border(const Context& ctx, const IntMask& outside, Float4& t) {
+  if (xsimd::any(outside)) t = select(float_mask(outside), ctx.border, t);
+}
+
+// --- 2D and volume ----------------------------------------------------------------------------
+
+template <class Format>
+Float4 filter_2d(const Context& ctx, const Level& g, Filter filter, const Float& u, const Float& v) {
+  const Sampler& s = ctx.sampler;
+  if (filter == Filter::Point) {
+    IntMask out_x(false), out_y(false);
+    const Int i = point_axis(u, g.width, g.fwidth, s.u, out_x);
+    const Int j = point_axis(v, g.height, g.fheight, s.v, out_y);
+    Float4 t = Format::fetch(ctx.words, word_index<Format>(g.offset, j * g.width + i));
+    if (ctx.any_border) apply_border(ctx, out_x | out_y, t);
+    return t;
+  }
+  const LinearAxis x = linear_axis(u, g.width, g.fwidth, s.u);
+  const LinearAxis y = linear_axis(v, g.height, g.fheight, s.v);
+  const Int row0 = y.i0 * g.width, row1 = y.i1 * g.width;
+  Float4 t00 = Format::fetch(ctx.words, word_index<Format>(g.offset, row0 + x.i0));
+  Float4 t10 = Format::fetch(ctx.words, word_index<Format>(g.offset, row0 + x.i1));
+  Float4 t01 = Format::fetch(ctx.words, word_index<Format>(g.offset, row1 + x.i0));
+  Float4 t11 = Format::fetch(ctx.words, word_index<Format>(g.offset, row1 + x.i1));
+  if (ctx.any_border) {
+    apply_border(ctx, x.outside0 | y.outside0, t00);
+    apply_border(ctx, x.outside1 | y.outside0, t10);
+    apply_border(ctx, x.outside0 | y.outside1, t01);
+    apply_border(ctx, x.outside1 | y.outside1, t11);
+  }
+  return lerp(lerp(t00, t10, x.weight), lerp(t01, t11, x.weight), y.weight);
+}
+
+template <class Format>
+Float4 filter_volume(const Context& ctx, const Level& g, Filter filter, const Float& u, const Float& v,
+                     const Float& w) {
+  const Sampler& s = ctx.sampler;
+  const Int slice = g.width * g.height;
+  if (filter == Filter::Point) {
+    IntMask out_x(false), out_y(false), out_z(false);
+    const Int i = point_axis(u, g.width, g.fwidth, s.u, out_x);
+    const Int j = point_axis(v, g.height, g.fheight, s.v, out_y);
+    const Int k = point_axis(w, g.depth, g.fdepth, s.w, out_z);
+    Float4 t = Format::fetch(ctx.words, word_index<Format>(g.offset, k * slice + j * g.width + i));
+    if (ctx.any_border) apply_border(ctx, out_x | out_y | out_z, t);
+    return t;
+  }
+  const LinearAxis x = linear_axis(u, g.width, g.fwidth, s.u);
+  const LinearAxis y = linear_axis(v, g.height, g.fheight, s.v);
+  const LinearAxis z = linear_axis(w, g.depth, g.fdepth, s.w);
+  auto filter_slice = [&](const Int& k, const IntMask& out_z) {
+    const Int row0 = k * slice + y.i0 * g.width, row1 = k * slice + y.i1 * g.width;
+    Float4 t00 = Format::fetch(ctx.words, word_index<Format>(g.offset, row0 + x.i0));
+    Float4 t10 = Format::fetch(ctx.words, word_index<Format>(g.offset, row0 + x.i1));
+    Float4 t01 = Format::fetch(ctx.words, word_index<Format>(g.offset, row1 + x.i0));
+    Float4 t11 = Format::fetch(ctx.words, word_index<Format>(g.offset, row1 + x.i1));
+    if (ctx.any_border) {
+      apply_border(ctx, x.outside0 | y.outside0 | out_z, t00);
+      apply_border(ctx, x.outside1 | y.outside0 | out_z, t10);
+      apply_border(ctx, x.outside0 | y.outside1 | out_z, t01);
+      apply_border(ctx, x.outside1 | y.outside1 | out_z, t11);
+    }
+    return lerp(lerp(t00, t10, x.weight), lerp(t01, t11, x.weight), y.weight);
+  };
+  return lerp(filter_slice(z.i0, z.outside0), filter_slice(z.i1, z.outside1), z.weight);
+}
+
+// --- Cube maps --------------------------------------------------------------------------------
+
+/// Where a texel one step past an edge of a face is read: on face `face`, at column `i` and row
+/// `j` given as codes: kFirst (0), kLast (n - 1), kAlong (the texel's position along the edge),
+/// kAlongFlipped (n - 1 - that). Derived from the face bases in texture.hpp by folding the
+/// overhanging texel onto the neighbouring face; texture_reference.cpp reaches the same texels by
+/// ray casting, and the tests hold the two together.
+enum EdgeCode : uint8_t { kFirst, kLast, kAlong, kAlongFlipped };
+struct EdgeTarget {
+  uint8_t face;
+  EdgeCode i, j;
+};
+// [face][edge], edges: 0 = left (i < 0), 1 = right (i >= n), 2 = top (j < 0), 3 = bottom (j >= n).
+constexpr EdgeTarget kCubeEdges[6][4] = {
+    {{4, kLast, kAlong}, {5, kFirst, kAlong}, {2, kLast, kAlongFlipped}, {3, kLast, kAlong}},            // +X
+    {{5, kLast, kAlong}, {4, kFirst, kAlong}, {2, kFirst, kAlong}, {3, kFirst, kAlongFlipped}},          // -X
+    {{1, kAlong, kFirst}, {0, kAlongFlipped, kFirst}, {5, kAlongFlipped, kFirst}, {4, kAlong, kFirst}},  // +Y
+    {{1, kAlongFlipped, kLast}, {0, kAlong, kLast}, {4, kAlong, kLast}, {5, kAlongFlipped, kLast}},      // -Y
+    {{1, kLast, kAlong}, {0, kFirst, kAlong}, {2, kAlong, kLast}, {3, kAlong, kFirst}},                  // +Z
+    {{0, kLast, kAlong}, {1, kFirst, kAlong}, {2, kAlongFlipped, kFirst}, {3, kAlongFlipped, kLast}},    // -Z
+};
+
+inline int edge_coordinate(EdgeCode code, int along, int n) {
+  switch (code) {
+    case kFirst: return 0;
+    case kLast: return n - 1;
+    case kAlong: return along;
+    case kAlongFlipped: return n - 1 - along;
+  }
+  return 0;
+}
+
+/// Per-lane face, u, v of cube directions (see texture.hpp for the rules).
+struct CubeCoords {
+  Int face;
+  Float u, v;
+};
+
+LUXEL_TEXTURE_INLINE CubeCoords project_to_faces(const TexCoord& d) {
+  const Float ax = xsimd::abs(d.x), ay = xsimd::abs(d.y), az = xsimd::abs(d.z);
+  const FloatMask on_z = (az >= ax) & (az >= ay);
+  const FloatMask on_y = (!on_z) & (ay >= ax);
+  const Float ma = xsimd::select(on_z, d.z, xsimd::select(on_y, d.y, d.x));
+  const FloatMask negative = ma < Float(0.0f);
+  // (sc, tc): +X (-z, -y), -X (z, -y), +Y (x, z), -Y (x, -z), +Z (x, -y), -Z (-x, -y).
+  const Float sign = xsimd::select(negative, Float(-1.0f), Float(1.0f));
+  const Float sc = xsimd::select(on_z, sign * d.x, xsimd::select(on_y, d.x, -(sign * d.z)));
+  const Float tc = xsimd::select(on_y, sign * d.z, -d.y);
+  const Float m = xsimd::abs(ma);
+  Float s = sc / m, t = tc / m;
+  const Float zero(0.0f), one(1.0f), half(0.5f);
+  // NaN -> the face's center; clamped, as a NaN component can make |ma| not the largest.
+  s = xsimd::min(xsimd::max(xsimd::select(xsimd::isnan(s), zero, s), -one), one);
+  t = xsimd::min(xsimd::max(xsimd::select(xsimd::isnan(t), zero, t), -one), one);
+  CubeCoords c;
+  const Int axis = xsimd::select(int_mask(on_z), Int(2), xsimd::select(int_mask(on_y), Int(1), Int(0)));
+  c.face = axis + axis + xsimd::select(int_mask(negative), Int(1), Int(0));
+  c.u = (s + one) * half;
+  c.v = (t + one) * half;
+  return c;
+}
+
+template <class Format>
+Float4 filter_cube(const Context& ctx, const Level& g, Filter filter, const CubeCoords& c) {
+  const int32_t face_words = TextureAccess::face_words(ctx.texture);
+  const Int face_offset = c.face * Int(face_words) + g.offset;
+  const Int last = g.width - Int(1);
+  if (filter == Filter::Point) {
+    const Int i = xsimd::min(to_int(xsimd::floor(c.u * g.fwidth)), last);
+    const Int j = xsimd::min(to_int(xsimd::floor(c.v * g.fwidth)), last);
+    return Format::fetch(ctx.words, word_index<Format>(face_offset, j * g.width + i));
+  }
+  const Float x = c.u * g.fwidth - Float(0.5f), y = c.v * g.fwidth - Float(0.5f);
+  const Float fx = xsimd::floor(x), fy = xsimd::floor(y);
+  const Float wx = x - fx, wy = y - fy;
+  const Int i0 = to_int(fx), j0 = to_int(fy), i1 = i0 + Int(1), j1 = j0 + Int(1);
+  const Int zero(0);
+  const Int ci0 = xsimd::max(i0, zero), ci1 = xsimd::min(i1, last);
+  const Int cj0 = xsimd::max(j0, zero), cj1 = xsimd::min(j1, last);
+  // Slots 0..3: texels (i0, j0), (i1, j0), (i0, j1), (i1, j1).
+  Int index[4] = {word_index<Format>(face_offset, cj0 * g.width + ci0),
+                  word_index<Format>(face_offset, cj0 * g.width + ci1),
+                  word_index<Format>(face_offset, cj1 * g.width + ci0),
+                  word_index<Format>(face_offset, cj1 * g.width + ci1)};
+  const IntMask leaves_face = (i0 < zero) | (i1 > last) | (j0 < zero) | (j1 > last);
+  bool any_corner = false;
+  IntMask corner[4] = {IntMask(false), IntMask(false), IntMask(false), IntMask(false)};
+  if (xsimd::any(leaves_face)) {
+    // Rare (lanes within half a texel of an edge): fix those lanes' texels one by one.
+    alignas(64) int32_t face[kLanes], n[kLanes], offset[kLanes], ii[2][kLanes], jj[2][kLanes];
+    alignas(64) int32_t idx[4][kLanes], is_corner[4][kLanes] = {};
+    c.face.store_aligned(face);
+    g.width.store_aligned(n);
+    g.offset.store_aligned(offset);
+    i0.store_aligned(ii[0]);
+    i1.store_aligned(ii[1]);
+    j0.store_aligned(jj[0]);
+    j1.store_aligned(jj[1]);
+    for (int k = 0; k < 4; ++k) index[k].store_aligned(idx[k]);
+    for (simd::LaneBits bits = simd::to_bits(leaves_face); bits; bits &= bits - 1) {
+      const int l = __builtin_ctz(bits);
+      for (int k = 0; k < 4; ++k) {
+        const int i = ii[k & 1][l], j = jj[k >> 1][l], size = n[l];
+        const bool off_i = i < 0 || i >= size, off_j = j < 0 || j >= size;
+        if (off_i && off_j) {
+          is_corner[k][l] = -1;  // its index (clamped, in the face) is read and then replaced
+          any_corner = true;
+        } else if (off_i || off_j) {
+          const int edge = off_i ? (i < 0 ? 0 : 1) : (j < 0 ? 2 : 3);
+          const EdgeTarget& to = kCubeEdges[face[l]][edge];
+          const int along = off_i ? j : i;
+          const int ti = edge_coordinate(to.i, along, size), tj = edge_coordinate(to.j, along, size);
+          idx[k][l] = to.face * face_words + offset[l] + (tj * size + ti) * Format::kWords;
+        }
+      }
+    }
+    for (int k = 0; k < 4; ++k) {
+      index[k] = Int::load_aligned(idx[k]);
+      if (any_corner) corner[k] = Int::load_aligned(is_corner[k]) != zero;
+    }
+  }
+  Float4 t[4];
+  for (int k = 0; k < 4; ++k) t[k] = Format::fetch(ctx.words, index[k]);
+  if (any_corner) {
+    // The texel past a cube corner is the mean of the footprint's other three.
+    const Float third(3.0f);
+    Float4 fixed[4];
+    for (int k = 0; k < 4; ++k) {
+      const Float4 &a = t[k ^ 1], &b = t[k ^ 2], &d = t[k ^ 3];
+      fixed[k] = {(a.x + b.x + d.x) / third, (a.y + b.y + d.y) / third, (a.z + b.z + d.z) / third,
+                  (a.w + b.w + d.w) / third};
+    }
+    for (int k = 0; k < 4; ++k) t[k] = select(float_mask(corner[k]), fixed[k], t[k]);
+  }
+  return lerp(lerp(t[0], t[1], wx), lerp(t[2], t[3], wx), wy);
+}
+
+// --- Levels and filters -----------------------------------------------------------------------
+
+/// The coordinates after projection (cubes) or reduction (2D, volumes): what every level reads.
+struct Prepared {
+  Float u, v, w;
+  CubeCoords cube;
+};
+
+template <class Format, TextureKind Kind>
+Float4 filter_level(const Context& ctx, const Int& level, Filter filter, const Prepared& p) {
+  const Level g = level_geometry(ctx.texture, level);
+  if constexpr (Kind == TextureKind::Cube) {
+    return filter_cube<Format>(ctx, g, filter, p.cube);
+  } else if constexpr (Kind == TextureKind::Volume) {
+    return filter_volume<Format>(ctx, g, filter, p.u, p.v, p.w);
+  } else {
+    return filter_2d<Format>(ctx, g, filter, p.u, p.v);
+  }
+}
+
+/// One level, with the mag filter on magnified lanes and the min filter on the others.
+template <class Format, TextureKind Kind>
+Float4 filter_level(const Context& ctx, const Int& level, const FloatMask& magnified, const Prepared& p) {
+  const Sampler& s = ctx.sampler;
+  if (s.mag == s.min) return filter_level<Format, Kind>(ctx, level, s.mag, p);
+  const simd::LaneBits bits = simd::to_bits(magnified);
+  if (bits == simd::kAllLanes) return filter_level<Format, Kind>(ctx, level, s.mag, p);
+  if (bits == 0) return filter_level<Format, Kind>(ctx, level, s.min, p);
+  return select(magnified, filter_level<Format, Kind>(ctx, level, s.mag, p),
+                filter_level<Format, Kind>(ctx, level, s.min, p));
+}
+
+template <class Format, TextureKind Kind>
+Float4 sample_level_impl(const Texture& texture, const Sampler& s, const TexCoord& coord,
+                         const Float& lod_in) {
+  const Context ctx{texture, s, reinterpret_cast<const int32_t*>(TextureAccess::words(texture)),
+                    Format::raw_border(s.border),
+                    Kind != TextureKind::Cube && (s.u == Address::Border || s.v == Address::Border ||
+                                                  (Kind == TextureKind::Volume && s.w == Address::Border))};
+  Prepared p;
+  if constexpr (Kind == TextureKind::Cube) {
+    p.cube = project_to_faces(coord);
+  } else {
+    p.u = reduce(coord.x, s.u);
+    p.v = reduce(coord.y, s.v);
+    if constexpr (Kind == TextureKind::Volume) p.w = reduce(coord.z, s.w);
+  }
+
+  const Float zero(0.0f);
+  Float lod = lod_in + Float(s.lod_bias);
+  lod = xsimd::select(xsimd::isnan(lod), zero, lod);
+  lod = xsimd::min(xsimd::max(lod, Float(s.min_lod)), Float(s.max_lod));
+  const FloatMask magnified = lod <= zero;
+  const Float last(static_cast<float>(texture.mip_levels() - 1));
+
+  Float4 raw;
+  switch (s.mip) {
+    case MipFilter::None: raw = filter_level<Format, Kind>(ctx, Int(0), magnified, p); break;
+    case MipFilter::Point: {
+      const Float l = xsimd::min(xsimd::max(lod, zero), last);
+      raw = filter_level<Format, Kind>(ctx, to_int(xsimd::floor(l + Float(0.5f))), magnified, p);
+      break;
+    }
+    case MipFilter::Linear: {
+      const Float l = xsimd::min(xsimd::max(lod, zero), last);
+      const Float first = xsimd::floor(l);
+      const Float t = l - first;
+      const Int level = to_int(first);
+      raw = filter_level<Format, Kind>(ctx, level, magnified, p);
+      const FloatMask blend = t > zero;
+      if (xsimd::any(blend)) {
+        // t > 0 implies level < last, so level + 1 exists.
+        const Float4 coarser = filter_level<Format, Kind>(ctx, level + Int(1), magnified, p);
+        raw = select(blend, lerp(raw, coarser, t), raw);
+      }
+      break;
+    }
+  }
+  return Format::finish(raw);
+}
+
+using SampleFn = Float4 (*)(const Texture&, const Sampler&, const TexCoord&, const Float&);
+
+template <class Format>
+constexpr std::array<SampleFn, 3> kinds_of() {
+  return {&sample_level_impl<Format, TextureKind::Texture2D>, &sample_level_impl<Format, TextureKind::Cube>,
+          &sample_level_impl<Format, TextureKind::Volume>};
+}
+
+// [format][kind], in enum order.
+constexpr std::array<std::array<SampleFn, 3>, 5> kSampleFns = {
+    kinds_of<Rgba8>(), kinds_of<Rgba8Srgb>(), kinds_of<Rgba16f>(), kinds_of<Rgba16>(), kinds_of<R32f>()};
+
+}  // namespace
+
+Float4 sample_level(const Texture& texture, const Sampler& sampler, const TexCoord& coord, const Float& lod) {
+  return kSampleFns[static_cast<int>(texture.format())][static_cast<int>(texture.kind())](texture, sampler,
+                                                                                          coord, lod);
+}
+
+Float compute_lod(const Texture& texture, const TexCoord& c, const TexCoord& dx, const TexCoord& dy) {
+  Float rho2;
+  if (texture.kind() == TextureKind::Cube) {
+    // d(sc/|ma|) = (d sc - (sc/|ma|) d|ma|) / |ma|; signs do not matter for lengths, so sc and tc
+    // are taken without their per-face signs (consistently with their derivatives).
+    const Float ax = xsimd::abs(c.x), ay = xsimd::abs(c.y), az = xsimd::abs(c.z);
+    const FloatMask on_z = (az >= ax) & (az >= ay);
+    const FloatMask on_y = (!on_z) & (ay >= ax);
+    auto pick = [&](const Float& x, const Float& y, const Float& z) {
+      return xsimd::select(on_z, z, xsimd::select(on_y, y, x));
+    };
+    const Float ma = pick(c.x, c.y, c.z);
+    const Float m = xsimd::abs(ma);
+    const Float sign = xsimd::select(ma < Float(0.0f), Float(-1.0f), Float(1.0f));
+    const Float s = pick(c.z, c.x, c.x) / m, t = pick(c.y, c.z, c.y) / m;
+    // Face coordinates run over [0, 1] where sc/|ma| runs over [-1, 1]: texels per unit of s are n/2.
+    const Float scale = Float(0.5f * static_cast<float>(texture.width())) / m;
+    auto length2 = [&](const TexCoord& d) {
+      const Float dm = sign * pick(d.x, d.y, d.z);
+      const Float ds = (pick(d.z, d.x, d.x) - s * dm) * scale;
+      const Float dt = (pick(d.y, d.z, d.y) - t * dm) * scale;
+      return ds * ds + dt * dt;
+    };
+    rho2 = xsimd::max(length2(dx), length2(dy));
+  } else {
+    const Float w(static_cast<float>(texture.width())), h(static_cast<float>(texture.height()));
+    auto length2 = [&](const TexCoord& d) {
+      const Float du = d.x * w, dv = d.y * h;
+      Float sum = du * du + dv * dv;
+      if (texture.kind() == TextureKind::Volume) {
+        const Float dw = d.z * Float(static_cast<float>(texture.depth()));
+        sum = sum + dw * dw;
+      }
+      return sum;
+    };
+    rho2 = xsimd::max(length2(dx), length2(dy));
+  }
+  return Float(0.5f) * lod_log2(rho2);
+}
+
+Float4 sample_grad(const Texture& texture, const Sampler& sampler, const TexCoord& coord, const TexCoord& ddx,
+                   const TexCoord& ddy) {
+  return sample_level(texture, sampler, coord, compute_lod(texture, coord, ddx, ddy));
+}
+
+Float4 sample(const Texture& texture, const Sampler& sampler, const TexCoord& coord, const Float& bias) {
+  const bool has_w = texture.kind() != TextureKind::Texture2D;
+  const Float zero(0.0f);
+  const TexCoord dx{simd::ddx(coord.x), simd::ddx(coord.y), has_w ? simd::ddx(coord.z) : zero};
+  const TexCoord dy{simd::ddy(coord.x), simd::ddy(coord.y), has_w ? simd::ddy(coord.z) : zero};
+  return sample_level(texture, sampler, coord, compute_lod(texture, coord, dx, dy) + bias);
+}
+
+}  // namespace luxel::rasterizer
