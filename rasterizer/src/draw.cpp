@@ -79,11 +79,12 @@ DrawPlan plan_draw(const Framebuffer& fb, const PipelineState& state, int varyin
   dc.guard_max_x = (g - dc.vp_x) / dc.half_w - 1.0f;
   dc.guard_max_y = 1.0f - (-g - dc.vp_y) / dc.half_h;
   dc.guard_min_y = 1.0f - (g - dc.vp_y) / dc.half_h;
-  // Writable pixels: target, viewport rectangle and scissor.
-  dc.clip_x0 = std::max(0, static_cast<int>(std::ceil(vp.x - 0.5f)));
-  dc.clip_y0 = std::max(0, static_cast<int>(std::ceil(vp.y - 0.5f)));
-  dc.clip_x1 = std::min(plan.layout.width, static_cast<int>(std::ceil(vp.x + vp_w - 0.5f)));
-  dc.clip_y1 = std::min(plan.layout.height, static_cast<int>(std::ceil(vp.y + vp_h - 0.5f)));
+  // Writable pixels: target, the pixels the viewport rectangle overlaps, and scissor. (D3D9 and
+  // D3D10 viewports are whole pixels; a fractional origin only shifts the mapping, see state.hpp.)
+  dc.clip_x0 = std::max(0, static_cast<int>(std::floor(vp.x)));
+  dc.clip_y0 = std::max(0, static_cast<int>(std::floor(vp.y)));
+  dc.clip_x1 = std::min(plan.layout.width, static_cast<int>(std::ceil(vp.x + vp_w)));
+  dc.clip_y1 = std::min(plan.layout.height, static_cast<int>(std::ceil(vp.y + vp_h)));
   if (state.scissor.enable) {
     dc.clip_x0 = std::max(dc.clip_x0, state.scissor.x0);
     dc.clip_y0 = std::max(dc.clip_y0, state.scissor.y0);

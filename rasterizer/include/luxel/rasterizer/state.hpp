@@ -5,6 +5,9 @@
 // - Screen space: x right, y down, pixel (x, y) covers [x, x+1) x [y, y+1); its center is at
 //   (x + 0.5, y + 0.5) (D3D10). D3D9 put pixel centers on integers; a D3D9 application gets its
 //   exact mapping with Viewport::x = y = -0.5 (the famous half-pixel offset, moved here).
+// - Viewports are whole-pixel rectangles in D3D9 and D3D10 (fractional ones arrived with D3D11).
+//   A fractional origin here only shifts the mapping; the pixels that may be written are those
+//   the rectangle [x, x + width) x [y, y + height) overlaps, further limited by the scissor.
 // - NDC (x, y) in [-1, 1] maps to the viewport with +y at the top; depth z/w in [0, 1] maps to
 //   [min_depth, max_depth]. Near (z < 0) and far (z > w) are clipped; depth is interpolated
 //   linearly in screen space and clamped to [min_depth, max_depth] per sample.

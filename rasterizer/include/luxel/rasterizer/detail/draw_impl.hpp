@@ -441,7 +441,8 @@ void front_end_chunk(const DrawConstants& dc, const Geometry& geometry, const VS
                      ChunkBins& bins, DrawStats& stats) {
   constexpr int N = VS::kVaryings;
   using Vertex = VertexOutput<N>;
-  static_assert(sizeof(Vertex) == sizeof(glm::vec4) * (1 + N), "position and varyings must be contiguous");
+  // process_triangle reads the position and then N float4 varyings from one pointer.
+  static_assert(N == 0 || sizeof(Vertex) == sizeof(glm::vec4) * (1 + N), "position and varyings must be contiguous");
   if (geometry.index_format == Geometry::IndexFormat::None) {
     Vertex v[3];
     const glm::vec4* p[3] = {&v[0].position, &v[1].position, &v[2].position};
