@@ -11,5 +11,6 @@ namespace luxel::cli {
 using Runner = std::function<int()>;
 
 Runner add_render_command(CLI::App& app);
+Runner add_cost_command(CLI::App& app);
 
 }  // namespace luxel::cli

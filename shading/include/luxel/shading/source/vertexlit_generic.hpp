@@ -1,0 +1,271 @@
+#pragma once
+// VertexLitGeneric (models), DX9 pixel shader with per-pixel lighting: albedo x (ambient cube +
+// Σ local lights with squared Half-Lambert or Lambert), and on ps_2_b / ps_3_0 the Phong ("skin")
+// terms: exponent and mask textures, Fresnel ranges, rim lighting. SOURCE_FACTS §2.1 (ambient
+// cube), §3.2 (attenuation, spot), §3.3 (diffuse), §3.4 (light counts), §4.1-4.6 (Phong), §6.3.
+//
+// Static combos: the template parameter VertexLitCombo (light count, bump, Phong, exponent
+// texture, rim, Half-Lambert, where the attenuation is computed); the shader model is a separate
+// axis: VertexLitCombo::valid(model) says which combos exist where (ps_2_0: at most two lights,
+// no Phong, as Valve's helper forces $phong off there).
+//
+// Lights (§3.2): the SDK computes attenuation per vertex and N·L per pixel. luxel's default for
+// two lights computes the attenuation per pixel too (pixel_attenuation = true: a light close to a
+// coarse mesh is not smeared across the triangle); the SDK's per-vertex attenuation (an
+// interpolated float4, one component per light, vertex_light_attenuation() in the vertex stage)
+// is the combo with pixel_attenuation = false, and the only one for four lights: four lights'
+// full records (5 float4 each) do not fit ps_2_b's 32 constant registers — the reason the SDK
+// splits it. The light type is dynamic as in the SDK: color.w = 1 directional, spot.w = 1 spot.
+// A directional light's position register holds the unit vector toward the light with w = 0, so
+// one mad gives L for every type: L = pos.xyz - worldPos * pos.w.
+//
+// Normalisation: ALU normalize on every model (ps_2_0 in the SDK uses a normalisation cube map:
+// one texture slot instead of nrm's three arithmetic slots; our ps_2_0 counts are therefore a
+// little higher in arithmetic and lower in texture slots than Valve's).
+//
+// Not implemented: envmap on models (§5.2), lightwarp, phong warp, self-illum, detail, albedo
+// tint ($phongalbedotint), $blendtintbybasealpha, fog.
+
+#include "luxel/shading/source/common.hpp"
+
+#include <array>
+#include <iterator>
+#include <string>
+#include <utility>
+
+namespace luxel::shading::source {
+
+/// The static combos of the per-pixel VertexLitGeneric / skin shader.
+struct VertexLitCombo {
+  int lights = 2;                 ///< local lights evaluated per pixel: 0..2 (ps_2_0), 0..4
+  bool bump = false;              ///< normal map (tangent frame interpolated)
+  bool phong = false;             ///< the skin shader's specular (ps_2_b / ps_3_0 only)
+  bool exponent_texture = false;  ///< Phong exponent 1 + 149 r from $phongexponenttexture (else the constant)
+  bool rim = false;               ///< rim lighting (needs Phong)
+  bool half_lambert = true;       ///< squared Half-Lambert (the skin shader always uses it)
+  bool pixel_attenuation = true;  ///< attenuation per pixel (luxel) or per vertex, interpolated (SDK)
+
+  constexpr bool valid(ShaderModel m) const {
+    if (lights < 0 || lights > 4) return false;
+    if (m == ShaderModel::ps_2_0 && (lights > 2 || phong)) return false;
+    if ((rim || exponent_texture) && !phong) return false;
+    if (phong && !half_lambert) return false;
+    if (lights > 2 && pixel_attenuation) return false;
+    // Two lights attenuated per pixel cost 65-73 arithmetic slots: over ps_2_0's 64 (measured,
+    // see the budget test), so ps_2_0 attenuates per vertex, as the SDK does.
+    if (m == ShaderModel::ps_2_0 && lights > 0 && pixel_attenuation) return false;
+    return true;
+  }
+  std::string name() const {
+    std::string n = std::to_string(lights) + (lights == 1 ? " light" : " lights");
+    if (bump) n += "+bump";
+    if (phong) n += "+phong";
+    if (exponent_texture) n += "+exptex";
+    if (rim) n += "+rim";
+    if (!half_lambert) n += "+lambert";
+    if (lights > 0 && !pixel_attenuation) n += "+vertexatten";
+    return n;
+  }
+};
+
+inline constexpr VertexLitCombo kVertexLitCombos[] = {
+    {0, false, false, false, false, true, true},
+    {2, false, false, false, false, true, true},
+    {2, false, false, false, false, false, true},
+    {2, true, false, false, false, true, true},
+    {2, false, false, false, false, true, false},
+    {2, true, false, false, false, true, false},
+    {4, false, false, false, false, true, false},
+    {4, true, false, false, false, true, false},
+    {2, true, true, false, false, true, true},
+    {2, true, true, true, false, true, true},
+    {2, true, true, true, true, true, true},
+    {2, false, true, false, false, true, true},
+    {4, true, true, true, true, true, false},
+};
+
+template <class F>
+inline void for_each_vertexlit_combo(F&& f) {
+  [&]<size_t... I>(std::index_sequence<I...>) {
+    (f.template operator()<kVertexLitCombos[I]>(), ...);
+  }(std::make_index_sequence<std::size(kVertexLitCombos)>());
+}
+
+/// One local light as the pixel shader's constant registers hold it.
+struct LocalLight {
+  glm::vec4 color{0.0f};           ///< rgb linear; w = 1 directional
+  glm::vec4 position{0.0f};        ///< xyz world position, w = 1; directional: unit vector toward the light, w = 0
+  glm::vec4 spot_direction{0.0f};  ///< xyz the spot's axis (direction it shines), w = 1 spot
+  glm::vec4 spot_params{0.0f};     ///< x falloff exponent, z cos(outer), w 1 / (cos(inner) - cos(outer))
+  glm::vec4 attenuation{1.0f, 0.0f, 0.0f, 0.0f};  ///< (constant, linear, quadratic)
+};
+
+struct VertexLitParams {
+  Sampler2D base{0};
+  Sampler2D bump{3};
+  Sampler2D phong_exponent{7};
+  AmbientCube ambient{};
+  std::array<LocalLight, 4> lights{};
+  glm::vec4 eye_position{0.0f};
+  glm::vec4 modulation{1.0f};                          ///< $color (linear) and alpha
+  glm::vec4 phong_tint_boost{1.0f, 1.0f, 1.0f, 1.0f};  ///< rgb $phongtint, w $phongboost
+  /// x $phongexponent (constant path), y $rimlightexponent, z $rimlightboost, w $rimmask (0/1)
+  glm::vec4 phong_params{5.0f, 4.0f, 1.0f, 0.0f};
+  /// $phongfresnelranges re-encoded (2(mid-min), mid, 2(max-mid)); (1, 0.5, 1) = plain (1-N·V)²
+  glm::vec4 fresnel_ranges{1.0f, 0.5f, 1.0f, 0.0f};
+  ToneMapConstants tonemap{};
+};
+
+/// The CPU re-encoding of $phongfresnelranges (§4.4).
+inline glm::vec4 encode_fresnel_ranges(float min, float mid, float max) {
+  return glm::vec4((mid - min) * 2.0f, mid, (max - mid) * 2.0f, 0.0f);
+}
+
+template <Lane L>
+struct VertexLitInputs {
+  float2<L> uv;
+  float3<L> world_pos;
+  float3<L> normal;             ///< world space, interpolated (not unit)
+  float3<L> tangent, binormal;  ///< bump only
+  float4<L> attenuation{1.0f};  ///< per-vertex attenuation of lights 0..3 (pixel_attenuation = false)
+};
+
+/// The SDK's attenuation (§3.2, VertexAttenInternal) of one light at a point, over any lane:
+/// 1 / (a0 + a1 d + a2 d²), × spot sat(max(1e-4, (dot(axis, -L) - cosOuter) invRange)^exponent),
+/// selected per light type by color.w / spot.w. Also returns the unit vector toward the light
+/// (0 for a light exactly at the point: normalize(0) = 0, distance factor 1 / a0).
+template <Lane L>
+inline L light_attenuation(const float3<L>& world_pos, const LocalLight& light, float3<L>& to_light) {
+  const float4<L> pos = constant<L>(light.position);
+  const float4<L> color = constant<L>(light.color);
+  const float4<L> axis = constant<L>(light.spot_direction);
+  const float4<L> sp = constant<L>(light.spot_params);
+  const float4<L> att = constant<L>(light.attenuation);
+  const float3<L> v = pos.xyz() - world_pos * pos.w;
+  const L d2 = dot(v, v);
+  const L d = sqrt(d2);
+  to_light = normalize(v);
+  const L distance = 1.0f / dot(float3<L>(L(1.0f), d, d2), att.xyz());
+  L spot = (dot(axis.xyz(), -to_light) - sp.z) * sp.w;
+  spot = saturate(pow(max(spot, L(0.0001f)), sp.x));
+  const L a = lerp(distance, distance * spot, axis.w);
+  return lerp(a, L(1.0f), color.w);
+}
+
+/// The vertex stage's version (the SDK's): float lane, returns the attenuation only.
+inline float vertex_light_attenuation(const glm::vec3& world_pos, const LocalLight& light) {
+  float3<float> l;
+  return light_attenuation<float>(float3<float>(world_pos.x, world_pos.y, world_pos.z), light, l);
+}
+
+/// The Phong-side textures.
+template <Lane L>
+struct VertexLitTexels {
+  float4<L> base{1.0f};
+  float4<L> bump{0.5f, 0.5f, 1.0f, 1.0f};
+  float4<L> exponent{1.0f};
+};
+
+template <VertexLitCombo C, Lane L>
+inline VertexLitTexels<L> vertexlit_fetch(const VertexLitInputs<L>& in, const VertexLitParams& p) {
+  VertexLitTexels<L> t;
+  t.base = tex2D(p.base, in.uv);
+  if constexpr (C.bump) t.bump = tex2D(p.bump, in.uv);
+  if constexpr (C.exponent_texture) t.exponent = tex2D(p.phong_exponent, in.uv);
+  return t;
+}
+
+template <VertexLitCombo C, Lane L>
+inline float4<L> vertexlit_combine(const VertexLitTexels<L>& t, const VertexLitInputs<L>& in, const VertexLitParams& p) {
+  float3<L> n;
+  if constexpr (C.bump) {
+    const float3<L> tn = t.bump.xyz() * 2.0f - 1.0f;
+    n = normalize(tn.x * in.tangent + tn.y * in.binormal + tn.z * in.normal);
+  } else {
+    n = normalize(in.normal);
+  }
+  float3<L> diffuse = ambient_light(n, p.ambient);
+  float3<L> spec(0.0f), rim(0.0f);
+  float3<L> view;
+  L exponent;
+  if constexpr (C.phong) {
+    view = normalize(constant<L>(p.eye_position).xyz() - in.world_pos);
+    exponent = C.exponent_texture ? L(t.exponent.x * 149.0f + 1.0f) : L(constant<L>(p.phong_params).x);
+  }
+  for (int i = 0; i < C.lights; ++i) {
+    const LocalLight& light = p.lights[static_cast<size_t>(i)];
+    float3<L> to_light;
+    L atten;
+    if constexpr (C.pixel_attenuation) {
+      atten = light_attenuation(in.world_pos, light, to_light);
+    } else {
+      const float4<L> pos = constant<L>(light.position);
+      to_light = normalize(pos.xyz() - in.world_pos * pos.w);
+      atten = in.attenuation[i];
+    }
+    const float3<L> color = constant<L>(light.color).rgb() * atten;
+    const L n_dot_l = dot(n, to_light);
+    const L term = C.half_lambert ? half_lambert(n_dot_l) : saturate(n_dot_l);
+    diffuse = diffuse + color * term;
+    if constexpr (C.phong) {
+      // §4.1: R = 2 N (N·V) - V; s = sat(R·L)^exp · sat(N·L) · color · atten.
+      const float3<L> r = (2.0f * dot(n, view)) * n - view;
+      const L r_dot_l = saturate(dot(r, to_light));
+      const float3<L> lit = color * saturate(n_dot_l);
+      spec = spec + lit * pow(r_dot_l, exponent);
+      if constexpr (C.rim) rim = rim + lit * pow(r_dot_l, L(constant<L>(p.phong_params).y));
+    }
+  }
+  const float4<L> modulation = constant<L>(p.modulation);
+  const float3<L> albedo = t.base.rgb() * modulation.rgb();
+  float3<L> color = albedo * diffuse;
+  if constexpr (C.phong) {
+    // §4.4: f = sat(1 - N·V)²; ranges piecewise linear around 0.5.
+    const L one_minus = saturate(1.0f - dot(n, view));
+    const L f = one_minus * one_minus;
+    const float4<L> ranges = constant<L>(p.fresnel_ranges);
+    const L g = f - 0.5f;
+    const L fresnel = ranges.y + g * select(g >= L(0.0f), ranges.z, ranges.x);
+    const L mask = C.bump ? L(t.bump.w) : L(t.base.w);
+    const float4<L> tint_boost = constant<L>(p.phong_tint_boost);
+    spec = spec * (mask * fresnel * tint_boost.w);
+    if constexpr (C.rim) {
+      // §4.5: rim fresnel (1 - N·V)^4, mask, max with the specular, then ambient along V gated by N.z.
+      const float4<L> pp = constant<L>(p.phong_params);
+      const L rim_fresnel = f * f;
+      const L rim_mask = C.exponent_texture ? L(lerp(L(1.0f), t.exponent.w, pp.w)) : L(1.0f);
+      const L m = rim_mask * rim_fresnel;
+      spec = max(spec, rim * m);
+      spec = spec + ambient_light(view, p.ambient) * (pp.z * saturate(m * n.z));
+    }
+    color = color + spec * tint_boost.rgb();
+  }
+  return final_output<ToneMap::linear>(float4<L>(color, t.base.w * modulation.w), p.tonemap);
+}
+
+template <VertexLitCombo C, Lane L>
+inline float4<L> vertexlit_generic(const VertexLitInputs<L>& in, const VertexLitParams& p) {
+  return vertexlit_combine<C>(vertexlit_fetch<C>(in, p), in, p);
+}
+
+template <VertexLitCombo C>
+inline VertexLitInputs<Counted> vertexlit_counted_inputs(CountedInputs& in) {
+  VertexLitInputs<Counted> r;
+  r.uv = in.vector<2>();
+  r.world_pos = in.vector<3>();
+  r.normal = in.vector<3>();
+  if constexpr (C.bump) {
+    r.tangent = in.vector<3>();
+    r.binormal = in.vector<3>();
+  }
+  if constexpr (!C.pixel_attenuation && C.lights > 0) r.attenuation = in.vector<4>();
+  return r;
+}
+
+template <VertexLitCombo C>
+inline Cost measure_vertexlit_generic(ShaderModel model) {
+  const VertexLitParams params{};
+  return measure(model, [&](CountedInputs& in) { return vertexlit_generic<C>(vertexlit_counted_inputs<C>(in), params); });
+}
+
+}  // namespace luxel::shading::source

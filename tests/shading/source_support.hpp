@@ -1,0 +1,93 @@
+#pragma once
+// Helpers for the Source shader tests: run one shader body on the SIMD lane and on the scalar lane
+// with the same random inputs, and compare the 8-bit values the output merger would store.
+
+#include "lanes.hpp"
+#include "luxel/shading/source/common.hpp"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cfloat>
+#include <cmath>
+#include <limits>
+#include <random>
+#include <string>
+#include <vector>
+
+namespace luxel::shading::source::testing {
+
+using shading::testing::lane_of;
+
+/// Inputs that break things: zeros, denormals, ±1, huge, NaN, infinities.
+inline const std::vector<float>& hard_values() {
+  static const std::vector<float> v = {0.0f, -0.0f, 1.0f, -1.0f, 0.5f, 1e-40f, -1e-42f, FLT_MIN, 1000.0f, 4096.0f,
+                                       -1000.0f, 65504.0f, std::numeric_limits<float>::quiet_NaN(),
+                                       std::numeric_limits<float>::infinity(), 150.0f, 0.70710678f};
+  return v;
+}
+
+/// A draw in [lo, hi], or one in `hard_every` a hard value.
+struct Draw {
+  float lo = 0.0f, hi = 1.0f;
+  int hard_every = 0;
+  float operator()(std::mt19937& rng) const {
+    if (hard_every > 0 && std::uniform_int_distribution<int>(0, hard_every - 1)(rng) == 0) {
+      return hard_values()[std::uniform_int_distribution<size_t>(0, hard_values().size() - 1)(rng)];
+    }
+    return std::uniform_real_distribution<float>(lo, hi)(rng);
+  }
+};
+
+struct LaneComparison {
+  int max_step = 0;        ///< max |simd byte - scalar byte| over all channels
+  int max_step_vs_double = 0;  ///< max |scalar byte - double-precision encode of the scalar value|
+  long pixels = 0;
+  double sum_sq = 0.0;     ///< of byte differences SIMD vs scalar
+  double psnr() const {
+    if (sum_sq == 0.0) return std::numeric_limits<double>::infinity();
+    return 10.0 * std::log10(255.0 * 255.0 / (sum_sq / (4.0 * pixels)));
+  }
+};
+
+/// `shade` is a generic lambda `[&]<class L>(const auto& get) -> float4<L>` where get(i) is the
+/// i-th input as lane L. Runs `batches` SIMD stamps and every lane again as scalar.
+template <int K, class Shade>
+LaneComparison compare_lanes(Shade&& shade, const std::vector<Draw>& draws, int batches, uint32_t seed) {
+  std::mt19937 rng(seed);
+  LaneComparison r;
+  for (int b = 0; b < batches; ++b) {
+    alignas(64) float in[K][simd::kLanes];
+    for (int i = 0; i < K; ++i)
+      for (int l = 0; l < simd::kLanes; ++l) in[i][l] = draws[static_cast<size_t>(i) % draws.size()](rng);
+    const auto simd_get = [&](int i) { return simd::Float::load_aligned(in[i]); };
+    const float4<simd::Float> fast = encode_srgb8(shade.template operator()<simd::Float>(simd_get));
+    for (int l = 0; l < simd::kLanes; ++l) {
+      const auto scalar_get = [&](int i) { return in[i][l]; };
+      const float4<float> value = shade.template operator()<float>(scalar_get);
+      const float4<float> ref = encode_srgb8(value);
+      for (int c = 0; c < 4; ++c) {
+        const float fb = lane_of(fast[c], l);
+        EXPECT_TRUE(fb >= 0.0f && fb <= 255.0f && fb == std::floor(fb)) << "garbage byte " << fb;
+        const int d = std::abs(static_cast<int>(fb) - static_cast<int>(ref[c]));
+        r.max_step = std::max(r.max_step, d);
+        r.sum_sq += static_cast<double>(d) * d;
+        const int exact = c < 3 ? srgb8_reference(value[c])
+                                : static_cast<int>(std::floor(std::clamp(std::isnan(value[c]) ? 0.0 : double(value[c]),
+                                                                         0.0, 1.0) * 255.0 + 0.5));
+        r.max_step_vs_double = std::max(r.max_step_vs_double, std::abs(exact - static_cast<int>(ref[c])));
+      }
+      ++r.pixels;
+    }
+  }
+  return r;
+}
+
+/// A smooth analytic stand-in for the cube map, over the lane: bright toward +Z, HDR up to 8.
+template <Lane L>
+inline float3<L> analytic_env(const float3<L>& r) {
+  const float3<L> d = normalize(r);
+  return float3<L>(saturate(d.z) * 8.0f + 0.1f, saturate(d.x * 0.5f + 0.5f), saturate(d.y * 0.5f + 0.5f));
+}
+
+}  // namespace luxel::shading::source::testing

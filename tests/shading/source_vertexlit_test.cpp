@@ -1,0 +1,266 @@
+// VertexLitGeneric: ambient cube, local lights (point, spot, directional) with the SDK's
+// attenuation, squared Half-Lambert, Phong with Fresnel ranges and rim; light folding into the
+// ambient cube; SIMD vs scalar on random and hard inputs; every combo's DX9 budget; the ambient
+// cube's count beside Valve's published ones.
+
+#include "source_support.hpp"
+
+#include "luxel/shading/source/light_folding.hpp"
+#include "luxel/shading/source/vertexlit_generic.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cstdio>
+
+namespace luxel::shading::source {
+namespace {
+
+using testing::compare_lanes;
+using testing::Draw;
+
+AmbientCube test_cube() {
+  AmbientCube c;
+  c.color = {glm::vec3(1, 0, 0), glm::vec3(0, 1, 0), glm::vec3(0, 0, 1), glm::vec3(1, 1, 0), glm::vec3(0, 1, 1),
+             glm::vec3(1, 0, 1)};
+  return c;
+}
+
+template <VertexLitCombo C>
+float4<float> shade(const VertexLitParams& p, const float3<float>& pos, const float3<float>& normal,
+                    const VertexLitTexels<float>& t = {}) {
+  VertexLitInputs<float> in;
+  in.world_pos = pos;
+  in.normal = normal;
+  in.tangent = float3<float>(1.0f, 0.0f, 0.0f);
+  in.binormal = float3<float>(0.0f, 1.0f, 0.0f);
+  return vertexlit_combine<C>(t, in, p);
+}
+
+constexpr VertexLitCombo kAmbientOnly{0, false, false, false, false, true, true};
+constexpr VertexLitCombo kTwoLights{2, false, false, false, false, true, true};
+constexpr VertexLitCombo kTwoLambert{2, false, false, false, false, false, true};
+
+TEST(SourceVertexLit, AmbientCubeAxisNormalsAndDiagonal) {
+  VertexLitParams p;
+  p.ambient = test_cube();
+  for (int j = 0; j < 6; ++j) {
+    float3<float> n(0.0f);
+    n[j / 2] = (j % 2 == 0) ? 2.0f : -2.0f;  // not unit: the shader normalizes
+    const float4<float> c = shade<kAmbientOnly>(p, float3<float>(0.0f), n);
+    for (int k = 0; k < 3; ++k) EXPECT_NEAR(c[k], p.ambient.color[j][k], 1e-6f) << "side " << j;
+  }
+  const float4<float> d = shade<kAmbientOnly>(p, float3<float>(0.0f), float3<float>(1.0f, -1.0f, 0.0f));
+  EXPECT_NEAR(d.x, 0.5f * 1 + 0.5f * 1, 1e-6f);  // +X red + -Y yellow
+  EXPECT_NEAR(d.y, 0.5f, 1e-6f);
+  const float4<float> zero = shade<kAmbientOnly>(p, float3<float>(0.0f), float3<float>(0.0f));
+  EXPECT_EQ(zero.x, 0.0f) << "zero-length normal: normalize(0) = 0, no ambient";
+}
+
+TEST(SourceVertexLit, PointLightAttenuationAndHalfLambert) {
+  VertexLitParams p;
+  LightDesc d;
+  d.position = glm::vec3(0.0f, 0.0f, 10.0f);
+  d.color = glm::vec3(100.0f);
+  d.attenuation = glm::vec3(1.0f, 0.5f, 0.02f);
+  p.lights[0] = to_local_light(d);
+  const float expected_atten = 100.0f / (1.0f + 5.0f + 2.0f);
+  // N·L = 1: half-Lambert 1. N·L = -1: 0. N ⟂ L: 0.25.
+  EXPECT_NEAR(shade<kTwoLights>(p, float3<float>(0.0f), float3<float>(0, 0, 1)).x, expected_atten, 1e-4f);
+  EXPECT_NEAR(shade<kTwoLights>(p, float3<float>(0.0f), float3<float>(0, 0, -1)).x, 0.0f, 1e-6f);
+  EXPECT_NEAR(shade<kTwoLights>(p, float3<float>(0.0f), float3<float>(1, 0, 0)).x, expected_atten * 0.25f, 1e-4f);
+  EXPECT_NEAR(shade<kTwoLambert>(p, float3<float>(0.0f), float3<float>(1, 0, 0)).x, 0.0f, 1e-6f);
+  EXPECT_NEAR(vertex_light_attenuation(glm::vec3(0.0f), p.lights[0]), 1.0f / 8.0f, 1e-6f);
+  // A light exactly on the surface: L = normalize(0) = 0, distance factor 1/a0, N·L = 0.
+  d.position = glm::vec3(0.0f);
+  p.lights[0] = to_local_light(d);
+  const float4<float> on = shade<kTwoLights>(p, float3<float>(0.0f), float3<float>(0, 0, 1));
+  EXPECT_NEAR(on.x, 100.0f * 0.25f, 1e-4f);
+}
+
+TEST(SourceVertexLit, SpotConeAndDirectionalLight) {
+  VertexLitParams p;
+  LightDesc s;
+  s.type = LightDesc::Type::spot;
+  s.position = glm::vec3(0.0f, 0.0f, 10.0f);
+  s.direction = glm::vec3(0.0f, 0.0f, -1.0f);
+  s.color = glm::vec3(1.0f);
+  s.spot_exponent = 1.0f;
+  p.lights[0] = to_local_light(s);
+  EXPECT_NEAR(shade<kTwoLights>(p, float3<float>(0.0f), float3<float>(0, 0, 1)).x, 1.0f, 1e-5f) << "on the axis";
+  // Far outside the cone: the SDK's 1e-4 floor, raised to the exponent (1): not exactly 0.
+  const float outside = shade<kTwoLights>(p, float3<float>(100.0f, 0.0f, 9.0f), float3<float>(0, 0, 1)).x;
+  EXPECT_LT(outside, 1e-4f);
+  LightDesc d;
+  d.type = LightDesc::Type::directional;
+  d.direction = glm::vec3(0.0f, 0.0f, -1.0f);  // travels down: lights +Z normals
+  d.color = glm::vec3(0.5f);
+  p.lights[0] = to_local_light(d);
+  EXPECT_NEAR(shade<kTwoLights>(p, float3<float>(1e4f, -3e3f, 7.0f), float3<float>(0, 0, 1)).x, 0.5f, 1e-6f);
+}
+
+TEST(SourceVertexLit, PhongFresnelRangesAndExponentQuirks) {
+  constexpr VertexLitCombo kPhong{2, false, true, false, false, true, true};
+  VertexLitParams p;
+  p.eye_position = glm::vec4(0.0f, 0.0f, 10.0f, 1.0f);
+  LightDesc d;
+  d.type = LightDesc::Type::directional;
+  d.direction = glm::vec3(0.0f, 0.0f, -1.0f);
+  d.color = glm::vec3(1.0f);
+  p.lights[0] = to_local_light(d);
+  p.fresnel_ranges = encode_fresnel_ranges(0.2f, 0.5f, 1.0f);
+  VertexLitTexels<float> t;
+  t.base = float4<float>(0.0f, 0.0f, 0.0f, 1.0f);  // black albedo: only specular; base alpha = mask
+  // Head on: R = L, s = 1; Fresnel f = 0 -> min = 0.2.
+  EXPECT_NEAR(shade<kPhong>(p, float3<float>(0.0f), float3<float>(0, 0, 1), t).x, 0.2f, 1e-5f);
+  // Exponent 0 (the fast path's undefined $phongexponent): pow(x, 0) = 1, pow(0, 0) = 1.
+  p.phong_params.x = 0.0f;
+  p.eye_position = glm::vec4(10.0f, 0.0f, 0.0f, 1.0f);  // grazing view: R·L = 0, f = 1 -> max
+  EXPECT_NEAR(shade<kPhong>(p, float3<float>(0.0f), float3<float>(0, 0, 1), t).x, 1.0f, 1e-5f);
+  p.phong_params.x = 150.0f;
+  EXPECT_NEAR(shade<kPhong>(p, float3<float>(0.0f), float3<float>(0, 0, 1), t).x, 0.0f, 1e-6f);
+}
+
+TEST(SourceVertexLit, FoldedDirectionalLightIsExactForAxisNormals) {
+  for (bool hl : {true, false}) {
+    LightDesc d;
+    d.type = LightDesc::Type::directional;
+    d.direction = glm::normalize(glm::vec3(-0.3f, 0.5f, -0.8f));
+    d.color = glm::vec3(0.7f, 0.4f, 0.2f);
+    LightDesc strong = d;
+    strong.color = glm::vec3(5.0f);
+    const LightDesc lights[] = {d, strong};
+    const FoldedLights f = fold_lights(lights, 1, glm::vec3(0.0f), AmbientCube{}, hl);
+    ASSERT_EQ(f.kept.size(), 1u);
+    EXPECT_EQ(f.kept[0].color.x, 5.0f) << "the brighter light is kept";
+    VertexLitParams folded;
+    folded.ambient = f.cube;
+    constexpr VertexLitCombo kHL{2, false, false, false, false, true, true};
+    constexpr VertexLitCombo kL{2, false, false, false, false, false, true};
+    VertexLitParams direct;
+    direct.lights[0] = to_local_light(d);
+    for (int j = 0; j < 6; ++j) {
+      float3<float> n(0.0f);
+      n[j / 2] = (j % 2 == 0) ? 1.0f : -1.0f;
+      const float4<float> a = shade<kAmbientOnly>(folded, float3<float>(0.0f), n);
+      const float4<float> b = hl ? shade<kHL>(direct, float3<float>(0.0f), n) : shade<kL>(direct, float3<float>(0.0f), n);
+      for (int k = 0; k < 3; ++k) EXPECT_NEAR(a[k], b[k], 1e-5f) << "axis " << j << (hl ? " half-Lambert" : " Lambert");
+    }
+  }
+}
+
+TEST(SourceVertexLit, SignificanceRanksByDeliveredLuminance) {
+  LightDesc near_dim, far_bright;
+  near_dim.position = glm::vec3(1.0f, 0.0f, 0.0f);
+  near_dim.color = glm::vec3(1.0f);
+  near_dim.attenuation = glm::vec3(0.0f, 0.0f, 1.0f);
+  far_bright = near_dim;
+  far_bright.position = glm::vec3(100.0f, 0.0f, 0.0f);
+  far_bright.color = glm::vec3(1000.0f);
+  EXPECT_GT(light_significance(near_dim, glm::vec3(0.0f)), light_significance(far_bright, glm::vec3(0.0f)));
+  const LightDesc lights[] = {far_bright, near_dim};
+  const FoldedLights f = fold_lights(lights, 1, glm::vec3(0.0f), AmbientCube{}, true);
+  EXPECT_EQ(f.kept[0].position.x, 1.0f);
+  EXPECT_GT(f.cube.color[0].x, 0.0f) << "the far light went into the +X side";
+}
+
+// ---- SIMD vs scalar ---------------------------------------------------------------------------
+
+template <VertexLitCombo C>
+testing::LaneComparison compare_vertexlit(int hard_every, uint32_t seed) {
+  VertexLitParams p;
+  p.ambient = test_cube();
+  p.eye_position = glm::vec4(0.5f, 2.0f, 3.0f, 1.0f);
+  LightDesc a, b, c, d;
+  a.position = glm::vec3(1.0f, 1.0f, 1.0f);
+  a.color = glm::vec3(3.0f, 2.0f, 1.0f);
+  a.attenuation = glm::vec3(0.0f, 0.0f, 1.0f);
+  b.type = LightDesc::Type::spot;
+  b.position = glm::vec3(0.0f, 0.0f, 2.0f);
+  b.direction = glm::vec3(0.0f, 0.0f, -1.0f);
+  b.cos_inner = 0.9f;
+  b.cos_outer = 0.5f;
+  b.color = glm::vec3(1200.0f);  // HDR
+  b.attenuation = glm::vec3(1.0f, 0.0f, 0.5f);
+  c.type = LightDesc::Type::directional;
+  c.direction = glm::vec3(0.0f, -1.0f, 0.0f);
+  d.position = glm::vec3(-1.0f, 0.0f, 0.0f);
+  p.lights = {to_local_light(a), to_local_light(b), to_local_light(c), to_local_light(d)};
+  p.phong_params = glm::vec4(150.0f, 4.0f, 1.0f, 1.0f);
+  p.fresnel_ranges = encode_fresnel_ranges(0.1f, 0.5f, 1.0f);
+  p.tonemap = ToneMapConstants::for_scale(0.7f);
+  auto run = [&]<class L>(const auto& get) -> float4<L> {
+    VertexLitTexels<L> t;
+    t.base = float4<L>(get(0), get(1), get(2), get(3));
+    t.bump = float4<L>(get(4), get(5), get(6), get(7));
+    t.exponent = float4<L>(get(8), get(9), get(10), get(11));
+    VertexLitInputs<L> in;
+    in.world_pos = float3<L>(get(12), get(13), get(14));
+    in.normal = float3<L>(get(15), get(16), get(17));
+    in.tangent = float3<L>(get(18), get(19), get(20));
+    in.binormal = float3<L>(get(21), get(22), get(23));
+    in.attenuation = float4<L>(get(24), get(25), get(26), get(27));
+    return vertexlit_combine<C>(t, in, p);
+  };
+  std::vector<Draw> draws(28, Draw{0.0f, 1.0f, hard_every});
+  for (int i = 12; i < 15; ++i) draws[i] = Draw{-2.0f, 2.0f, hard_every};
+  for (int i = 15; i < 24; ++i) draws[i] = Draw{-1.0f, 1.0f, hard_every};
+  return compare_lanes<28>(run, draws, 256, seed);
+}
+
+TEST(SourceVertexLit, SimdWithinOneStepOfScalarForEveryCombo) {
+  uint32_t seed = 101;
+  for_each_vertexlit_combo([&]<VertexLitCombo C>() {
+    const auto random = compare_vertexlit<C>(0, seed++);
+    const auto hard = compare_vertexlit<C>(3, seed++);
+    EXPECT_LE(random.max_step, 1) << C.name();
+    EXPECT_LE(hard.max_step, 1) << C.name() << " (hard inputs)";
+    EXPECT_LE(random.max_step_vs_double, 1) << C.name();
+    std::printf("VertexLitGeneric %-36s simd-vs-scalar max %d step(s) (hard: %d)\n", C.name().c_str(), random.max_step,
+                hard.max_step);
+  });
+}
+
+// ---- Budgets ----------------------------------------------------------------------------------
+
+TEST(SourceVertexLit, EveryValidComboFitsItsModel) {
+  int measured = 0;
+  for_each_vertexlit_combo([&]<VertexLitCombo C>() {
+    for (ShaderModel m : kPixelModels) {
+      if (!C.valid(m)) continue;
+      const Cost cost = measure_vertexlit_generic<C>(m);
+      const Verdict v = fits(cost, caps(m));
+      EXPECT_TRUE(v) << C.name() << " on " << caps(m).name << ": " << v.reason << " (" << describe(cost) << ")";
+      ++measured;
+    }
+  });
+  EXPECT_GE(measured, 25);
+}
+
+TEST(SourceVertexLit, FourLightsWithPixelAttenuationWouldNotFitPs2b) {
+  // Why the SDK attenuates per vertex: 4 x 5 light registers + the rest > 32 constants.
+  constexpr VertexLitCombo kFourPixel{4, true, true, true, true, true, true};
+  static_assert(!kFourPixel.valid(ShaderModel::ps_2_b));
+  const Cost cost = measure_vertexlit_generic<kFourPixel>(ShaderModel::ps_2_b);
+  EXPECT_FALSE(fits(cost, caps(ShaderModel::ps_2_b))) << describe(cost);
+}
+
+TEST(SourceVertexLit, AmbientCubeCountBesideThePublishedOnes) {
+  const AmbientCube cube = test_cube();
+  auto body = [&](CountedInputs& in) { return ambient_light<Counted>(in.vector<3>(), cube); };
+  const Cost ps20 = measure(ShaderModel::ps_2_0, body);
+  const Cost ps30 = measure(ShaderModel::ps_3_0, body);
+  const Cost vs20 = measure(ShaderModel::vs_2_0, body);
+  std::printf("ambient cube: ps_3_0 %d, ps_2_0 %d (incl. mov oC0), vs_2_0 %d slots; published: 11 PS / 6 VS "
+              "(2006 notes), 9 PS (SDK comment)\n",
+              ps30.arithmetic_slots, ps20.arithmetic_slots, vs20.arithmetic_slots);
+  // ps: mul n², cmp, cmp, mul, mad x5 = 9, exactly the SDK comment's list; the 2006 notes' 11
+  // predate that rewrite. The VS's 6 uses relative constant addressing (slt, mova, then indexed
+  // reads: mul, mul, mad, mad), which our lane language does not express: we select with
+  // sge/slt + lrp instead, so our vertex count is higher.
+  EXPECT_EQ(ps30.arithmetic_slots, 9);
+  EXPECT_EQ(ps20.arithmetic_slots, 10);
+  EXPECT_GT(vs20.arithmetic_slots, 6);
+}
+
+}  // namespace
+}  // namespace luxel::shading::source
