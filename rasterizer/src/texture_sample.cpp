@@ -362,8 +362,9 @@ Float4 filter_volume(const Context& ctx, const Level& g, Filter filter, const Fl
 /// Where a texel one step past an edge of a face is read: on face `face`, at column `i` and row
 /// `j` given as codes: kFirst (0), kLast (n - 1), kAlong (the texel's position along the edge),
 /// kAlongFlipped (n - 1 - that). Derived from the face bases in texture.hpp by folding the
-/// overhanging texel onto the neighbouring face; texture_reference.cpp reaches the same texels by
-/// ray casting, and the tests hold the two together.
+/// overhanging texel onto the neighbouring face (it agrees entry by entry with llvmpipe's
+/// lp_build_cube_new_coords); texture_reference.cpp reaches the same texels by ray casting, and
+/// the tests hold the two together.
 enum EdgeCode : uint8_t { kFirst, kLast, kAlong, kAlongFlipped };
 struct EdgeTarget {
   uint8_t face;

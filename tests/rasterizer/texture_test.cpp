@@ -680,7 +680,7 @@ TEST(TextureLod, SelectsLevels) {
   s.mip = MipFilter::Point;
   EXPECT_EQ(red(s, -5.0f), 1.0f);
   EXPECT_EQ(red(s, 0.49f), 1.0f);
-  EXPECT_EQ(red(s, 0.5f), 2.0f);  // a tie goes to the smaller level
+  EXPECT_EQ(red(s, 0.5f), 2.0f);  // a tie goes to the coarser level
   EXPECT_EQ(red(s, 1.4f), 2.0f);
   EXPECT_EQ(red(s, 2.6f), 8.0f);
   EXPECT_EQ(red(s, 10.0f), 8.0f);

@@ -58,7 +58,7 @@
 // - The LOD actually used is clamp(lod + shader bias + Sampler::lod_bias, min_lod, max_lod); a NaN
 //   lod counts as 0. Up to 0 the texture is magnified (Sampler::mag), above 0 minified
 //   (Sampler::min): OpenGL's crossover c = 0, which D3D does not spell out.
-// - MipFilter::Point reads level floor(lod + 0.5) (a tie goes to the smaller level);
+// - MipFilter::Point reads level floor(lod + 0.5) (a tie goes to the coarser level);
 //   MipFilter::Linear blends levels floor(lod) and floor(lod) + 1 by the fraction;
 //   MipFilter::None reads level 0. Levels clamp to [0, mip_levels - 1].
 //
@@ -66,8 +66,9 @@
 // - Face order +X, -X, +Y, -Y, +Z, -Z (D3DCUBEMAP_FACES). The face is the direction's major axis,
 //   positive or negative by its sign (0 counts as positive). Ties break toward z, then y, then x
 //   (|z| >= |x|, |y| picks a Z face; otherwise |y| >= |x| picks a Y face): the order llvmpipe
-//   implements as D3D10's rule. With seamless filtering a tie only decides which of two faces'
-//   coordinates name a point on their shared edge, so results agree up to rounding either way.
+//   implements as D3D10's rule. With seamless linear filtering a tie only decides which of two
+//   faces' coordinates name a point on their shared edge, so results agree up to rounding either
+//   way; a fixed order keeps point samples on edges deterministic.
 // - On face (sc, tc, ma): +X (-z, -y, x), -X (+z, -y, x), +Y (+x, +z, y), -Y (+x, -z, y),
 //   +Z (+x, -y, z), -Z (-x, -y, z); u = (sc / |ma| + 1) / 2, v = (tc / |ma| + 1) / 2. This is the
 //   layout of D3D's cube-map documentation (identical to OpenGL's table), v = 0 the top row.
