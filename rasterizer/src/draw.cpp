@@ -91,6 +91,10 @@ DrawPlan plan_draw(const Framebuffer& fb, const PipelineState& state, int varyin
     dc.clip_x1 = std::min(dc.clip_x1, state.scissor.x1);
     dc.clip_y1 = std::min(dc.clip_y1, state.scissor.y1);
   }
+  dc.reject_min_x = (static_cast<float>(dc.clip_x0) - dc.vp_x) / dc.half_w - 1.0f;
+  dc.reject_max_x = (static_cast<float>(dc.clip_x1) - dc.vp_x) / dc.half_w - 1.0f;
+  dc.reject_max_y = 1.0f - (static_cast<float>(dc.clip_y0) - dc.vp_y) / dc.half_h;
+  dc.reject_min_y = 1.0f - (static_cast<float>(dc.clip_y1) - dc.vp_y) / dc.half_h;
   dc.tiles_x = plan.layout.tiles_x;
   dc.tiles_y = plan.layout.tiles_y;
   dc.samples = plan.layout.samples;

@@ -250,10 +250,11 @@ void setup_and_bin(const DrawConstants& dc, const float* const v[3], ChunkBins& 
   }
 }
 
-/// Which clip-space half-spaces a position lies outside of: bits 0-5 the view volume
-/// (-x, +x, -y, +y, near, far), bits 6-9 the guard band (-x, +x, -y, +y).
+/// Which clip-space half-spaces a position lies outside of: bits 0-3 the writable pixel
+/// rectangle (-x, +x, -y, +y), bits 4-5 near and far, bits 6-9 the guard band (-x, +x, -y, +y).
 unsigned outcode(const DrawConstants& dc, const glm::vec4& p) {
-  return unsigned(p.x < -p.w) | unsigned(p.x > p.w) << 1 | unsigned(p.y < -p.w) << 2 | unsigned(p.y > p.w) << 3 |
+  return unsigned(p.x < dc.reject_min_x * p.w) | unsigned(p.x > dc.reject_max_x * p.w) << 1 |
+         unsigned(p.y < dc.reject_min_y * p.w) << 2 | unsigned(p.y > dc.reject_max_y * p.w) << 3 |
          unsigned(p.z < 0) << 4 | unsigned(p.z > p.w) << 5 | unsigned(p.x < dc.guard_min_x * p.w) << 6 |
          unsigned(p.x > dc.guard_max_x * p.w) << 7 | unsigned(p.y < dc.guard_min_y * p.w) << 8 |
          unsigned(p.y > dc.guard_max_y * p.w) << 9;
@@ -282,7 +283,7 @@ void process_triangle(const DrawConstants& dc, const glm::vec4* const vertices[3
     return;
   }
   const unsigned c0 = outcode(dc, p0), c1 = outcode(dc, p1), c2 = outcode(dc, p2);
-  if (c0 & c1 & c2 & 0x3f) {  // all three outside one plane of the view volume
+  if (c0 & c1 & c2 & 0x3f) {  // all three beyond one side of the writable rectangle, near or far
     ++stats.outside;
     return;
   }

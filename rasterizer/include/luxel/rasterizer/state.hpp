@@ -3,8 +3,9 @@
 //
 // Conventions (D3D rules; where D3D9 left a choice to vendors, D3D10's):
 // - Screen space: x right, y down, pixel (x, y) covers [x, x+1) x [y, y+1); its center is at
-//   (x + 0.5, y + 0.5) (D3D10). D3D9 put pixel centers on integers; a D3D9 application gets its
-//   exact mapping with Viewport::x = y = -0.5 (the famous half-pixel offset, moved here).
+//   (x + 0.5, y + 0.5) (D3D10). D3D9 put pixel centers on integers, so a D3D9 screen position s
+//   is the position s + 0.5 here: a D3D9 application gets its exact mapping with
+//   Viewport::x = y = +0.5 (the famous half-pixel offset, moved into the viewport).
 // - Viewports are whole-pixel rectangles in D3D9 and D3D10 (fractional ones arrived with D3D11).
 //   A fractional origin here only shifts the mapping; the pixels that may be written are those
 //   the rectangle [x, x + width) x [y, y + height) overlaps, further limited by the scissor.

@@ -25,6 +25,10 @@ struct DrawConstants {
   float min_depth = 0, max_depth = 1;
   // The guard band in NDC: outside it triangles are clipped.
   float guard_min_x = -1, guard_max_x = 1, guard_min_y = -1, guard_max_y = 1;
+  // The writable pixel rectangle (clip_*) in NDC: a triangle wholly beyond one of its sides is
+  // rejected. It, not the viewport, bounds the samples a draw can reach, so a triangle outside a
+  // fractional viewport but inside a pixel the viewport overlaps is drawn, as its neighbours are.
+  float reject_min_x = -1, reject_max_x = 1, reject_min_y = -1, reject_max_y = 1;
   // Pixels that may be written: scissor, viewport and target intersected; half-open.
   int clip_x0 = 0, clip_y0 = 0, clip_x1 = 0, clip_y1 = 0;
   int tiles_x = 0, tiles_y = 0;
