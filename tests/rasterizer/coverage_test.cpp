@@ -19,12 +19,6 @@
 namespace luxel::rasterizer::test {
 namespace {
 
-std::string join(const std::vector<std::string>& lines) {
-  std::string s;
-  for (const std::string& l : lines) s += l + "\n";
-  return s;
-}
-
 // Thousands of seeded random triangles of every kind (TriKind), every configuration, 1/2/4/8
 // samples, cull none/cw/ccw, both windings, both winding conventions; half the batches count
 // each triangle's coverage through its own bit, half check that the last covering triangle wins.

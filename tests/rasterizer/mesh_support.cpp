@@ -19,6 +19,23 @@ void add_triangle(Mesh& m, uint32_t a, uint32_t b, uint32_t c, std::mt19937& rng
   m.indices.insert(m.indices.end(), {a, b, c});
 }
 
+/// Two triangles per cell of an (nx + 1) x (ny + 1) vertex grid (row-major), each
+/// cell split along a random diagonal.
+void triangulate_grid(Mesh& m, int nx, int ny, std::mt19937& rng) {
+  auto id = [&](int i, int j) { return uint32_t(j * (nx + 1) + i); };
+  for (int j = 0; j < ny; ++j)
+    for (int i = 0; i < nx; ++i) {
+      const uint32_t a = id(i, j), b = id(i + 1, j), c = id(i + 1, j + 1), d = id(i, j + 1);
+      if (rng() & 1) {
+        add_triangle(m, a, b, c, rng);
+        add_triangle(m, a, c, d, rng);
+      } else {
+        add_triangle(m, a, b, d, rng);
+        add_triangle(m, b, c, d, rng);
+      }
+    }
+}
+
 /// Point at perimeter parameter t (clockwise from the top-left corner), along-edge coordinate
 /// on the 2^-10 grid so the point is exact.
 glm::dvec2 perimeter_point(const ScreenRect& r, double t) {
@@ -72,18 +89,7 @@ Mesh jittered_grid(const ViewportMap& map, const ScreenRect& r, int nx, int ny, 
         m.clip.push_back(approx_clip(map, {x, y}));
       }
     }
-  auto id = [&](int i, int j) { return uint32_t(j * (nx + 1) + i); };
-  for (int j = 0; j < ny; ++j)
-    for (int i = 0; i < nx; ++i) {
-      const uint32_t a = id(i, j), b = id(i + 1, j), c = id(i + 1, j + 1), d = id(i, j + 1);
-      if (rng() & 1) {
-        add_triangle(m, a, b, c, rng);
-        add_triangle(m, a, c, d, rng);
-      } else {
-        add_triangle(m, a, b, d, rng);
-        add_triangle(m, b, c, d, rng);
-      }
-    }
+  triangulate_grid(m, nx, ny, rng);
   return m;
 }
 
@@ -158,18 +164,7 @@ Mesh perspective_floor(float half_x, float w0, float w1, float near, int nx, int
   corners[1] = vertex(half_x, w0);
   corners[2] = vertex(half_x, w1);
   corners[3] = vertex(-half_x, w1);
-  auto id = [&](int i, int k) { return uint32_t(k * (nx + 1) + i); };
-  for (int k = 0; k < nz; ++k)
-    for (int i = 0; i < nx; ++i) {
-      const uint32_t a = id(i, k), b = id(i + 1, k), c = id(i + 1, k + 1), d = id(i, k + 1);
-      if (rng() & 1) {
-        add_triangle(m, a, b, c, rng);
-        add_triangle(m, a, c, d, rng);
-      } else {
-        add_triangle(m, a, b, d, rng);
-        add_triangle(m, b, c, d, rng);
-      }
-    }
+  triangulate_grid(m, nx, nz, rng);
   return m;
 }
 

@@ -12,12 +12,6 @@
 namespace luxel::rasterizer::test {
 namespace {
 
-std::string join(const std::vector<std::string>& lines) {
-  std::string s;
-  for (const std::string& l : lines) s += l + "\n";
-  return s;
-}
-
 TEST(OutputMerger, RandomScenesMatchTheScalarReference) {
   const int scenes = budget(800, 60);
   Context ctx(2);

@@ -310,4 +310,10 @@ std::string describe(const glm::dvec2 screen[3]) {
   return o.str();
 }
 
+std::string join(const std::vector<std::string>& lines) {
+  std::string s;
+  for (const std::string& l : lines) s += l + "\n";
+  return s;
+}
+
 }  // namespace luxel::rasterizer::test

@@ -210,6 +210,8 @@ inline size_t sample_index(int w, int samples, int x, int y, int s) {
 
 /// Short description of a clip-space triangle, for failure messages.
 std::string describe(const glm::vec4 clip[3]);
+/// Failure messages, one per line.
+std::string join(const std::vector<std::string>& lines);
 std::string describe(const glm::dvec2 screen[3]);
 
 }  // namespace luxel::rasterizer::test
