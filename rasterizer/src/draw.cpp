@@ -73,7 +73,8 @@ DrawPlan plan_draw(const Framebuffer& fb, const PipelineState& state, int varyin
   dc.half_h = vp_h * 0.5f;
   dc.min_depth = vp.min_depth;
   dc.max_depth = vp.max_depth;
-  // Guard band in NDC, one pixel inside kGuardBand so rounding cannot step over it.
+  // Guard band in NDC, one pixel inside kGuardBand (what rounding in clipping can still do:
+  // setup_and_bin).
   const float g = static_cast<float>(kGuardBand - 1);
   dc.guard_min_x = (-g - dc.vp_x) / dc.half_w - 1.0f;
   dc.guard_max_x = (g - dc.vp_x) / dc.half_w - 1.0f;

@@ -133,6 +133,16 @@ void setup_and_bin(const DrawConstants& dc, const float* const v[3], ChunkBins& 
     const float nx = v[k][0] * inv_w, ny = v[k][1] * inv_w, nz = v[k][2] * inv_w;
     const float sx = dc.vp_x + (nx + 1.0f) * dc.half_w;
     const float sy = dc.vp_y + (1.0f - ny) * dc.half_h;
+    // Clipping leaves every vertex inside the guard band up to rounding, which is a few pixels
+    // when a near-plane intersection has w close to 0 (seen: 8 px), and unbounded when an
+    // intersection parameter rounds to 1 between vertices whose w differ by 30 orders of
+    // magnitude (garbage input): the outside vertex itself comes back. Twice the band keeps
+    // the former, whose 64-bit edge constants still fit with room to spare, and drops the latter,
+    // whose subpixel coordinates would overflow.
+    if (!(std::abs(sx) <= 2.0f * kGuardBand && std::abs(sy) <= 2.0f * kGuardBand)) {
+      ++stats.degenerate;
+      return;
+    }
     s[k].X = static_cast<int32_t>(std::nearbyint(sx * kSubpixelsPerPixel));
     s[k].Y = static_cast<int32_t>(std::nearbyint(sy * kSubpixelsPerPixel));
     s[k].x = static_cast<float>(s[k].X) * (1.0f / kSubpixelsPerPixel);
@@ -287,25 +297,25 @@ void process_triangle(const DrawConstants& dc, const glm::vec4* const vertices[3
     ++stats.outside;
     return;
   }
-  // Planes to clip against: near, far and the guard band (clip_polygon's plane order).
-  auto clip_bits = [](unsigned c) {
-    return ((c >> 4) & 1) | ((c >> 5) & 1) << 1 | ((c >> 6) & 1) << 2 | ((c >> 7) & 1) << 3 | ((c >> 8) & 1) << 4 |
-           ((c >> 9) & 1) << 5;
-  };
-  const unsigned outside_mask = clip_bits(c0 | c1 | c2);
-  const ClipPlanes planes = make_clip_planes(dc);
-  if (outside_mask == 0) {
+  // Bits 4-9: some vertex lies beyond the near, far or a guard-band plane.
+  if (((c0 | c1 | c2) & 0x3f0) == 0) {
     setup_and_bin(dc, v, bins, stats);
     return;
   }
 
   ++stats.clipped;
+  const ClipPlanes planes = make_clip_planes(dc);
   const int floats = 4 * (1 + dc.varyings);
   ClipVertex buffer[2][kMaxClipVertices];
   for (int k = 0; k < 3; ++k) std::copy(v[k], v[k] + floats, buffer[0][k].v);
   int n = 3, current = 0;
   for (int i = 0; i < 6 && n >= 3; ++i) {
-    if (!(outside_mask & (1u << i))) continue;
+    // Each plane tests the polygon as it is now, not the original vertices: a vertex an earlier
+    // plane made (a near-plane intersection has w close to 0) can lie beyond a guard-band plane
+    // that all three original vertices respected.
+    const ClipVertex* polygon = buffer[current];
+    if (std::all_of(polygon, polygon + n, [&](const ClipVertex& c) { return plane_distance(planes.plane[i], c.v) >= 0; }))
+      continue;
     n = clip_polygon(planes.plane[i], buffer[current], n, buffer[1 - current], floats);
     current = 1 - current;
   }

@@ -20,8 +20,9 @@ inline constexpr int kMaxTargetSize = 8192;
 
 /// Guard band: after the viewport transform, x and y must lie in [-kGuardBand, +kGuardBand]
 /// pixels, or the triangle is clipped against the band in homogeneous space. This bounds every
-/// snapped coordinate to 2^22 subpixels, so edge-function constants fit comfortably in 64 bits
-/// (|C| < 2^47) and the per-sample steps of edges shorter than a few thousand pixels fit in 32.
+/// snapped coordinate to 2^22 subpixels (2^23 with what rounding in clipping may add; setup
+/// drops anything beyond), so edge-function constants fit comfortably in 64 bits (|C| < 2^49)
+/// and the per-sample steps of edges shorter than a few thousand pixels fit in 32.
 inline constexpr int kGuardBand = 16384;
 static_assert(kGuardBand >= 2 * kMaxTargetSize, "the guard band must contain any viewport");
 static_assert(kGuardBand * kSubpixelsPerPixel <= (1 << 22), "snapped coordinates must fit 23 bits");
