@@ -70,7 +70,8 @@ inline constexpr float kHistogramLuminance[3] = {0.2125f, 0.7154f, 0.0721f};
 
 /// c0 for the bucket [min, max] (§7.1-7.2): max 1.0 exactly becomes 10000; the scale is the
 /// tone-map scale in FLOAT mode only.
-inline glm::vec3 luminance_range_constant(float min, float max, HdrType hdr = HdrType::integer, float tonemap_scale = 1.0f) {
+inline glm::vec3 luminance_range_constant(float min, float max, HdrType hdr = HdrType::integer,
+                                          float tonemap_scale = 1.0f) {
   return glm::vec3(min, max == 1.0f ? 10000.0f : max, hdr == HdrType::floating ? tonemap_scale : 1.0f);
 }
 
@@ -91,7 +92,8 @@ struct LuminanceRangeOutput {
 template <LuminanceRangeCombo C, Lane L>
 inline LuminanceRangeOutput<L> luminance_range_combine(const float3<L>& texel, const LuminanceRangeParams& p) {
   const float3<L> c0 = constant<L>(p.min_max_scale);
-  const L luminance = dot(texel * c0.z, float3<L>(kHistogramLuminance[0], kHistogramLuminance[1], kHistogramLuminance[2]));
+  const float3<L> weights(kHistogramLuminance[0], kHistogramLuminance[1], kHistogramLuminance[2]);
+  const L luminance = dot(texel * c0.z, weights);
   const L in_range = step(c0.x, luminance) * step(luminance, c0.y);
   LuminanceRangeOutput<L> out;
   out.color = float4<L>(in_range);
