@@ -6,7 +6,11 @@
 // counted DX9 slots beside it).
 
 #include "luxel/shading/source/lightmapped_generic.hpp"
+#include "luxel/shading/source/luminance_range_test.hpp"
+#include "luxel/shading/source/sky.hpp"
+#include "luxel/shading/source/unlit_generic.hpp"
 #include "luxel/shading/source/vertexlit_generic.hpp"
+#include "luxel/shading/source/water.hpp"
 
 #include <benchmark/benchmark.h>
 
@@ -96,6 +100,68 @@ void BM_VertexLit(benchmark::State& state) {
   });
 }
 
+template <class L, UnlitCombo C>
+void BM_Unlit(benchmark::State& state) {
+  UnlitGenericParams p;
+  p.envmap_contrast = glm::vec4(0.5f);
+  run<L>(state, [&]<class M>(const auto& get) {
+    UnlitTexels<M> t;
+    t.base = float4<M>(get(0), get(1), get(2), get(3));
+    t.detail = float4<M>(get(4), get(5), get(6), get(7));
+    t.mask = float3<M>(get(8), get(9), get(10));
+    UnlitInputs<M> in;
+    in.vertex_color = float4<M>(get(11), get(12), get(13), get(14));
+    in.eye_vector = float3<M>(get(15), get(16), get(17));
+    in.normal = float3<M>(get(18), get(19), get(20));
+    return unlit_generic_combine<C>(t, in, p, [](const float3<M>& r) { return r * r; });
+  });
+}
+
+template <class L, SkyCombo C>
+void BM_Sky(benchmark::State& state) {
+  SkyParams p;
+  p.input_scale = glm::vec4(sky_input_scale(SkyFormat::rgba16), 1.0f);
+  run<L>(state, [&]<class M>(const auto& get) {
+    SkyTexels<M> t;
+    t.base = float4<M>(get(0), get(1), get(2), get(3));
+    t.s00 = float4<M>(get(4), get(5), get(6), get(7));
+    t.s01 = float4<M>(get(8), get(9), get(10), get(11));
+    t.s10 = float4<M>(get(12), get(13), get(14), get(15));
+    t.s11 = float4<M>(get(16), get(17), get(18), get(19));
+    SkyInputs<M> in;
+    in.uv_in_texels = float2<M>(get(20), get(21));
+    return sky_combine<C>(t, in, p);
+  });
+}
+
+template <class L, WaterCombo C>
+void BM_Water(benchmark::State& state) {
+  const WaterParams p = water_constants(WaterMaterial{}, HdrType::integer, ToneMapConstants{});
+  run<L>(state, [&]<class M>(const auto& get) {
+    WaterNormalTexels<M> t;
+    t.n0 = float4<M>(get(0), get(1), get(2), get(3));
+    t.n1 = float4<M>(get(4), get(5), get(6), get(7));
+    t.n2 = float4<M>(get(8), get(9), get(10), get(11));
+    WaterInputs<M> in;
+    in.tangent_eye = float3<M>(get(12), get(13), get(14));
+    in.reflect_refract = float4<M>(get(15), get(16), get(17), get(18));
+    in.w = get(19);
+    in.proj_z = get(20);
+    // Analytic render targets: the reads' texture cost is not part of this benchmark.
+    auto target = [](const float2<M>& uv) { return float4<M>(uv.x, uv.y, uv.x * uv.y, uv.y); };
+    return water_combine<C>(t, in, p, target, target);
+  });
+}
+
+template <class L, LuminanceRangeCombo C>
+void BM_LuminanceRange(benchmark::State& state) {
+  LuminanceRangeParams p;
+  p.min_max_scale = luminance_range_constant(0.2f, 0.6f);
+  run<L>(state, [&]<class M>(const auto& get) {
+    return luminance_range_combine<C>(float3<M>(get(0), get(1), get(2)), p).color;
+  });
+}
+
 std::string models_of(const VertexLitCombo& c) {
   std::string r;
   for (ShaderModel m : kPixelModels)
@@ -115,6 +181,29 @@ const bool registered = [] {
       if (ch == ' ') ch = '_';
     benchmark::RegisterBenchmark((name + "/simd").c_str(), BM_VertexLit<simd::Float, C>);
     benchmark::RegisterBenchmark((name + "/scalar").c_str(), BM_VertexLit<float, C>);
+  });
+  for_each_unlit_combo([]<UnlitCombo C>() {
+    const std::string name = "UnlitGeneric/" + C.name() + "/ps_2_0,ps_2_b,ps_3_0";
+    benchmark::RegisterBenchmark((name + "/simd").c_str(), BM_Unlit<simd::Float, C>);
+    benchmark::RegisterBenchmark((name + "/scalar").c_str(), BM_Unlit<float, C>);
+  });
+  for_each_sky_combo([]<SkyCombo C>() {
+    const std::string name = "Sky_HDR/" + C.name() + "/ps_2_0,ps_2_b,ps_3_0";
+    benchmark::RegisterBenchmark((name + "/simd").c_str(), BM_Sky<simd::Float, C>);
+    benchmark::RegisterBenchmark((name + "/scalar").c_str(), BM_Sky<float, C>);
+  });
+  for_each_water_combo([]<WaterCombo C>() {
+    std::string models;
+    for (ShaderModel m : kPixelModels)
+      if (C.valid(m)) models += std::string(models.empty() ? "" : ",") + std::string(caps(m).name);
+    const std::string name = "Water/" + C.name() + "/" + models;
+    benchmark::RegisterBenchmark((name + "/simd").c_str(), BM_Water<simd::Float, C>);
+    benchmark::RegisterBenchmark((name + "/scalar").c_str(), BM_Water<float, C>);
+  });
+  for_each_luminance_range_combo([]<LuminanceRangeCombo C>() {
+    const std::string name = "LuminanceRange/" + C.name() + "/ps_2_0,ps_2_b,ps_3_0";
+    benchmark::RegisterBenchmark((name + "/simd").c_str(), BM_LuminanceRange<simd::Float, C>);
+    benchmark::RegisterBenchmark((name + "/scalar").c_str(), BM_LuminanceRange<float, C>);
   });
   return true;
 }();

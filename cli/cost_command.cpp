@@ -1,12 +1,16 @@
-// luxel cost [--shader all|lightmapped|vertexlit] [--pixels N]: every Source shader variant on
-// every pixel-shader model — counted DX9 slots, temps, constants, the model's limits, whether it
-// fits — and measured ns/pixel on the SIMD and scalar lanes (a short timing loop: a report, not a
-// benchmark; bench/shading_source_bench.cpp has the careful numbers).
+// luxel cost [--shader all|lightmapped|vertexlit|unlit|sky|water|luminance] [--pixels N]: every
+// Source shader variant on every pixel-shader model — counted DX9 slots, temps, constants, the
+// model's limits, whether it fits — and measured ns/pixel on the SIMD and scalar lanes (a short
+// timing loop: a report, not a benchmark; bench/shading_source_bench.cpp has the careful numbers).
 
 #include "commands.hpp"
 
 #include "luxel/shading/source/lightmapped_generic.hpp"
+#include "luxel/shading/source/luminance_range_test.hpp"
+#include "luxel/shading/source/sky.hpp"
+#include "luxel/shading/source/unlit_generic.hpp"
 #include "luxel/shading/source/vertexlit_generic.hpp"
+#include "luxel/shading/source/water.hpp"
 
 #include <chrono>
 #include <cstdio>
@@ -141,6 +145,88 @@ void report_vertexlit(int pixels) {
   });
 }
 
+void report_unlit(int pixels) {
+  src::UnlitGenericParams p;
+  p.envmap_contrast = glm::vec4(0.5f);
+  src::for_each_unlit_combo([&]<src::UnlitCombo C>() {
+    auto shade = [&]<class L>(const auto& get) {
+      src::UnlitTexels<L> t;
+      t.base = shading::float4<L>(get(0), get(1), get(2), get(3));
+      t.detail = shading::float4<L>(get(4), get(5), get(6), get(7));
+      t.mask = shading::float3<L>(get(8), get(9), get(10));
+      src::UnlitInputs<L> in;
+      in.vertex_color = shading::float4<L>(get(11), get(12), get(13), get(14));
+      in.eye_vector = shading::float3<L>(get(15), get(16), get(17));
+      in.normal = shading::float3<L>(get(18), get(19), get(20));
+      return src::unlit_generic_combine<C>(t, in, p, [](const shading::float3<L>& r) { return r * r; });
+    };
+    const auto [simd_ns, scalar_ns] = time_shader(shade, 21, pixels);
+    for (ShaderModel m : src::kPixelModels) {
+      print_row("UnlitGeneric", C.name(), m, src::measure_unlit_generic<C>(m), simd_ns, scalar_ns);
+    }
+  });
+}
+
+void report_sky(int pixels) {
+  src::SkyParams p;
+  p.input_scale = glm::vec4(src::sky_input_scale(src::SkyFormat::rgba16), 1.0f);
+  src::for_each_sky_combo([&]<src::SkyCombo C>() {
+    auto shade = [&]<class L>(const auto& get) {
+      src::SkyTexels<L> t;
+      t.base = shading::float4<L>(get(0), get(1), get(2), get(3));
+      t.s00 = shading::float4<L>(get(4), get(5), get(6), get(7));
+      t.s01 = shading::float4<L>(get(8), get(9), get(10), get(11));
+      t.s10 = shading::float4<L>(get(12), get(13), get(14), get(15));
+      t.s11 = shading::float4<L>(get(16), get(17), get(18), get(19));
+      src::SkyInputs<L> in;
+      in.uv_in_texels = shading::float2<L>(get(20), get(21));
+      return src::sky_combine<C>(t, in, p);
+    };
+    const auto [simd_ns, scalar_ns] = time_shader(shade, 22, pixels);
+    for (ShaderModel m : src::kPixelModels) {
+      print_row("Sky_HDR", C.name(), m, src::measure_sky<C>(m), simd_ns, scalar_ns);
+    }
+  });
+}
+
+void report_water(int pixels) {
+  const src::WaterParams p = src::water_constants(src::WaterMaterial{}, src::HdrType::integer, src::ToneMapConstants{});
+  src::for_each_water_combo([&]<src::WaterCombo C>() {
+    auto shade = [&]<class L>(const auto& get) {
+      src::WaterNormalTexels<L> t;
+      t.n0 = shading::float4<L>(get(0), get(1), get(2), get(3));
+      t.n1 = shading::float4<L>(get(4), get(5), get(6), get(7));
+      t.n2 = shading::float4<L>(get(8), get(9), get(10), get(11));
+      src::WaterInputs<L> in;
+      in.tangent_eye = shading::float3<L>(get(12), get(13), get(14));
+      in.reflect_refract = shading::float4<L>(get(15), get(16), get(17), get(18));
+      in.w = get(19);
+      in.proj_z = get(20);
+      auto target = [](const shading::float2<L>& uv) { return shading::float4<L>(uv.x, uv.y, uv.x * uv.y, uv.y); };
+      return src::water_combine<C>(t, in, p, target, target);
+    };
+    const auto [simd_ns, scalar_ns] = time_shader(shade, 21, pixels);
+    for (ShaderModel m : src::kPixelModels) {
+      if (!C.valid(m)) continue;
+      print_row("Water", C.name(), m, src::measure_water<C>(m), simd_ns, scalar_ns);
+    }
+  });
+}
+
+void report_luminance(int pixels) {
+  src::LuminanceRangeParams p;
+  p.min_max_scale = src::luminance_range_constant(0.2f, 0.6f);
+  src::for_each_luminance_range_combo([&]<src::LuminanceRangeCombo C>() {
+    auto shade = [&]<class L>(const auto& get) {
+      return src::luminance_range_combine<C>(shading::float3<L>(get(0), get(1), get(2)), p).color;
+    };
+    const auto [simd_ns, scalar_ns] = time_shader(shade, 3, pixels);
+    for (ShaderModel m : src::kPixelModels) {
+      print_row("LuminanceRange", C.name(), m, src::measure_luminance_range_test<C>(m), simd_ns, scalar_ns);
+    }
+  });
+}
+
 void report_ambient_cube() {
   src::AmbientCube cube;
   auto body = [&](shading::CountedInputs& in) { return src::ambient_light<shading::Counted>(in.vector<3>(), cube); };
@@ -159,8 +245,8 @@ void report_ambient_cube() {
 Runner add_cost_command(CLI::App& app) {
   auto options = std::make_shared<CostOptions>();
   CLI::App* cmd = app.add_subcommand("cost", "Print DX9 slot counts, limits and ns/pixel of every Source shader variant");
-  cmd->add_option("--shader", options->shader, "all, lightmapped or vertexlit")
-      ->check(CLI::IsMember({"all", "lightmapped", "vertexlit"}))
+  cmd->add_option("--shader", options->shader, "all, lightmapped, vertexlit, unlit, sky, water or luminance")
+      ->check(CLI::IsMember({"all", "lightmapped", "vertexlit", "unlit", "sky", "water", "luminance"}))
       ->capture_default_str();
   cmd->add_option("--pixels", options->pixels, "Pixels per timing loop")->check(CLI::Range(64, 1 << 24))->capture_default_str();
   return [cmd, options]() -> int {
@@ -168,6 +254,10 @@ Runner add_cost_command(CLI::App& app) {
     print_header();
     if (options->shader == "all" || options->shader == "lightmapped") report_lightmapped(options->pixels);
     if (options->shader == "all" || options->shader == "vertexlit") report_vertexlit(options->pixels);
+    if (options->shader == "all" || options->shader == "unlit") report_unlit(options->pixels);
+    if (options->shader == "all" || options->shader == "sky") report_sky(options->pixels);
+    if (options->shader == "all" || options->shader == "water") report_water(options->pixels);
+    if (options->shader == "all" || options->shader == "luminance") report_luminance(options->pixels);
     report_ambient_cube();
     return 0;
   };

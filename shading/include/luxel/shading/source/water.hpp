@@ -1,0 +1,246 @@
+#pragma once
+// Water (the expensive DX9 water, water_ps2x.fxc / water_ps2x_helper.h / water.cpp): a normal map
+// bends the screen-space coordinates of the reflection and refraction render targets; the two
+// are blended with a Fresnel term; the refraction fades toward the fog color with depth.
+// SOURCE_FACTS §5.3 (Fresnel, fog), §6.3 (epilogue: TONEMAP NONE), §6.4 (reflection exposure).
+//
+// Order of operations (per pixel):
+//   n      = 2 tex(normal).xyz - 1, n.a kept (MULTITEXTURE: 0.33 x the sum of three reads first)
+//   depth  = refraction alpha at the undistorted coordinate (ABOVEWATER; else 1): the water depth
+//            the world shaders wrote to destination alpha
+//   offset = (n.x, n.y) x n.a x c5 x depth  (c5 = ($reflectamount, $reflectamount,
+//            $refractamount, $refractamount); BLURRY skips the x depth)
+//   reflect = tex(reflection, reflect.xy / w + offset) x c4 (reflect tint)
+//   refract = tex(refraction, refract.wz / w + offset); ABOVEWATER: depth = its alpha
+//            BLURRY (ps_2_b+): the mean of 25 reads on a 5x5 grid 0.005 apart, x c1 (refract
+//            tint), and reflect x c7.z (overbright) as well
+//   F      = (1 - sat(normalize(eye_tangent) · n))^5 x sat((depth - 0.05) x 20)
+//   refract = lerp(refract, fog x c30.x, ABOVEWATER ? sat(depth - 0.05)
+//                                                   : sat((projZ - fogStart) / (fogEnd - fogStart)))
+//   result = lerp(refract, reflect, F) (REFLECT and REFRACT), reflect alone, or refract alone;
+//   alpha 1; FinalOutput with TONEMAP NONE: both render targets were already tone-mapped.
+//
+// Quirks kept from the SDK: without BLURRY the refract tint ($refracttint, c1) is never applied
+// (water_ps2x_helper.h multiplies only the blurry result by it); with ABOVEWATER the depth comes
+// from the refraction texture even in a REFLECT-only combo, so that texture must be bound.
+//
+// Reflection exposure (§6.4, INTEGER HDR): the reflection view is rendered with 0.25 x the linear
+// tone-map scale so its 8-bit sRGB target keeps up to 4x overbright, and water.cpp multiplies
+// the linear reflect tint by 4 to undo it (water_reflection_scale(), water_constants()). So a
+// reflected surface of linear radiance L arrives as s L (s = tone-map scale) as long as
+// s L <= 4, and clips at 4 instead of 1. The "reflectivity-scaled exposure" is this fixed
+// 0.25 / x4 pair: the SDK has no exposure that depends on the water's reflectivity (§6.4). The
+// blurry variant multiplies by the overbright constant c7.z = 4 *and* by the x4 tint, i.e. 16x
+// in INTEGER mode: an SDK bug we reproduce (water_constants(..., faithful) can turn it off).
+//
+// Not implemented: BASETEXTURE (lightmapped base on water), cheap water (WaterCheap, envmap
+// only), flow maps, pixel fog on the result, depth to dest alpha, NORMAL_DECODE_MODE != 0.
+
+#include "luxel/shading/source/common.hpp"
+#include "luxel/shading/source/hdr_type.hpp"
+#include "luxel/shading/source/material_color.hpp"
+
+#include <iterator>
+#include <string>
+#include <utility>
+
+namespace luxel::shading::source {
+
+struct WaterCombo {
+  bool reflect = true;
+  bool refract = true;
+  bool above_water = true;
+  bool multitexture = false;  ///< three normal-map reads ($scroll1 set)
+  bool blurry_refract = false;  ///< $blurrefract: ps_2_b and up
+
+  constexpr bool valid(ShaderModel m) const {
+    if (!reflect && !refract) return false;  // the SDK returns black; never drawn
+    if (blurry_refract && (m == ShaderModel::ps_2_0 || !refract)) return false;
+    return true;
+  }
+  std::string name() const {
+    std::string n = reflect && refract ? "reflect+refract" : reflect ? "reflect" : "refract";
+    n += above_water ? "+above" : "+below";
+    if (multitexture) n += "+multitexture";
+    if (blurry_refract) n += "+blurry";
+    return n;
+  }
+};
+
+inline constexpr WaterCombo kWaterCombos[] = {
+    {true, true, true, false, false},  {true, true, false, false, false}, {true, false, true, false, false},
+    {false, true, true, false, false}, {true, true, true, true, false},   {true, true, true, false, true},
+    {true, true, false, true, true},
+};
+
+template <class F>
+inline void for_each_water_combo(F&& f) {
+  [&]<size_t... I>(std::index_sequence<I...>) {
+    (f.template operator()<kWaterCombos[I]>(), ...);
+  }(std::make_index_sequence<std::size(kWaterCombos)>());
+}
+
+/// Samplers and constants (registers as in water_ps2x.fxc).
+struct WaterParams {
+  Sampler2D refraction{0};  ///< _rt_WaterRefraction: sRGB read; alpha = water depth
+  Sampler2D reflection{2};  ///< _rt_WaterReflection: sRGB read
+  Sampler2D normal{4};
+  glm::vec4 refract_tint{1.0f};     ///< c1: linear (blurry only)
+  glm::vec4 reflect_tint{1.0f};     ///< c4: linear, x4 in INTEGER HDR
+  glm::vec4 reflect_refract_scale{0.8f, 0.8f, 0.0f, 0.0f};  ///< c5: $reflectamount in xy, $refractamount in zw
+  glm::vec4 fog_color{0.0f};        ///< c6: $fogcolor, linear
+  glm::vec4 fog_params{0.0f, 1.0f, 1.0f, 0.0f};  ///< c7: fog start, end - start, reflect overbright
+  ToneMapConstants tonemap{};
+};
+
+/// The material parameters (gamma-space colors, as in the .vmt).
+struct WaterMaterial {
+  glm::vec3 reflect_tint{1.0f};
+  glm::vec3 refract_tint{1.0f};
+  glm::vec3 fog_color{0.0f};
+  float reflect_amount = 0.8f;
+  float refract_amount = 0.0f;
+  float fog_start = 0.0f, fog_end = 1.0f;
+};
+
+/// The tone-map scale to render the reflection view with (§6.4): 0.25 s in INTEGER HDR, else s.
+inline float water_reflection_scale(float tonemap_scale, HdrType hdr) {
+  return hdr == HdrType::integer ? 0.25f * tonemap_scale : tonemap_scale;
+}
+
+/// water.cpp's constants for a material. `faithful_blurry_overbright = false` leaves c7.z at 1,
+/// so the blurry variant does not apply the INTEGER x4 twice.
+inline WaterParams water_constants(const WaterMaterial& m, HdrType hdr, const ToneMapConstants& tonemap,
+                                   bool faithful_blurry_overbright = true) {
+  WaterParams p;
+  glm::vec3 reflect;
+  if (hdr == HdrType::integer) {
+    for (int i = 0; i < 3; ++i) reflect[i] = mathlib_gamma_to_linear(m.reflect_tint[i]) * 4.0f;
+  } else {
+    reflect = material_gamma_to_linear(m.reflect_tint);
+  }
+  p.reflect_tint = glm::vec4(reflect, 1.0f);
+  p.refract_tint = glm::vec4(material_gamma_to_linear(m.refract_tint), 1.0f);
+  p.fog_color = glm::vec4(material_gamma_to_linear(m.fog_color), 1.0f);
+  p.reflect_refract_scale = glm::vec4(m.reflect_amount, m.reflect_amount, m.refract_amount, m.refract_amount);
+  const float overbright = hdr == HdrType::integer && faithful_blurry_overbright ? 4.0f : 1.0f;
+  p.fog_params = glm::vec4(m.fog_start, m.fog_end - m.fog_start, overbright, 0.0f);
+  p.tonemap = tonemap;
+  return p;
+}
+
+template <Lane L>
+struct WaterInputs {
+  float2<L> bump_uv;
+  float4<L> extra_bump_uv;   ///< MULTITEXTURE: two more normal-map coordinates
+  float3<L> tangent_eye;     ///< eye vector in tangent space, unnormalised
+  float4<L> reflect_refract; ///< projective: reflection .xy, refraction .wz (times w)
+  L w;                       ///< projection w
+  L proj_z;                  ///< projection z (below-water fog)
+};
+
+/// The normal map read (texels only: the rest depends on it).
+template <Lane L>
+struct WaterNormalTexels {
+  float4<L> n0{0.5f, 0.5f, 1.0f, 1.0f}, n1{0.5f, 0.5f, 1.0f, 1.0f}, n2{0.5f, 0.5f, 1.0f, 1.0f};
+};
+
+/// The shader with its render-target reads behind `read_refraction(uv)` / `read_reflection(uv)`,
+/// so tests can drive the arithmetic with analytic images; water() binds them to tex2D.
+template <WaterCombo C, Lane L, class RefractFn, class ReflectFn>
+inline float4<L> water_combine(const WaterNormalTexels<L>& t, const WaterInputs<L>& in, const WaterParams& p,
+                               RefractFn&& read_refraction, ReflectFn&& read_reflection) {
+  float4<L> n = t.n0;
+  if constexpr (C.multitexture) n = (t.n0 + t.n1 + t.n2) * 0.33f;
+  n = float4<L>(n.xyz() * 2.0f - 1.0f, n.w);
+
+  const L oo_w = 1.0f / in.w;
+  const float4<L> projected = in.reflect_refract * oo_w;
+  L depth = L(1.0f);
+  float4<L> scale = constant<L>(p.reflect_refract_scale);
+  if constexpr (!C.blurry_refract) {
+    if constexpr (C.above_water) depth = read_refraction(float2<L>(projected.w, projected.z)).w;
+    scale = scale * depth;
+  }
+  // reflect = .xy, refract = .wz: one mad for both.
+  const float4<L> coords = float4<L>(n.x, n.y, n.y, n.x) * n.w * scale + projected;
+  const float2<L> reflect_uv = coords.xy();
+  const float2<L> refract_uv(coords.w, coords.z);
+
+  const float4<L> fog = constant<L>(p.fog_color) * constant<L>(p.tonemap.c30).x;
+  float3<L> reflect(0.0f), refract(0.0f);
+  if constexpr (C.reflect) reflect = read_reflection(reflect_uv).rgb() * constant<L>(p.reflect_tint).rgb();
+  if constexpr (C.blurry_refract) {
+    float4<L> sum(0.0f);
+    for (int i = -2; i <= 2; ++i)
+      for (int j = -2; j <= 2; ++j) sum = sum + read_refraction(refract_uv + float2<L>(L(0.005f * i), L(0.005f * j)));
+    const float4<L> blurred = sum * (1.0f / 25.0f);
+    refract = blurred.rgb() * constant<L>(p.refract_tint).rgb();
+    reflect = reflect * constant<L>(p.fog_params).z;
+    if constexpr (C.above_water) depth = blurred.w;
+  } else if constexpr (C.refract || C.above_water) {
+    const float4<L> r = read_refraction(refract_uv);
+    refract = r.rgb();
+    if constexpr (C.above_water) depth = r.w;
+  }
+
+  // §5.3: Fresnel (1 - sat(V·N))^5, faded to 0 where the water is shallow.
+  const L n_dot_v = saturate(dot(normalize(in.tangent_eye), n.xyz()));
+  const L fresnel = pow(1.0f - n_dot_v, L(5.0f)) * saturate((depth - 0.05f) * 20.0f);
+  L fog_amount;
+  if constexpr (C.above_water) {
+    fog_amount = saturate(depth - 0.05f);
+  } else {
+    const float4<L> fp = constant<L>(p.fog_params);
+    fog_amount = saturate((in.proj_z - fp.x) / fp.y);
+  }
+  refract = lerp(refract, fog.rgb(), fog_amount);
+
+  float3<L> result;
+  if constexpr (C.reflect && C.refract) {
+    result = lerp(refract, reflect, fresnel);
+  } else if constexpr (C.reflect) {
+    result = reflect;
+  } else {
+    result = refract;
+  }
+  return final_output<ToneMap::none>(float4<L>(result, L(1.0f)), p.tonemap);
+}
+
+template <WaterCombo C, Lane L>
+inline WaterNormalTexels<L> water_fetch_normals(const WaterInputs<L>& in, const WaterParams& p) {
+  WaterNormalTexels<L> t;
+  t.n0 = tex2D(p.normal, in.bump_uv);
+  if constexpr (C.multitexture) {
+    t.n1 = tex2D(p.normal, in.extra_bump_uv.xy());
+    t.n2 = tex2D(p.normal, in.extra_bump_uv.zw());
+  }
+  return t;
+}
+
+template <WaterCombo C, Lane L>
+inline float4<L> water(const WaterInputs<L>& in, const WaterParams& p) {
+  return water_combine<C>(
+      water_fetch_normals<C>(in, p), in, p, [&](const float2<L>& uv) { return tex2D(p.refraction, uv); },
+      [&](const float2<L>& uv) { return tex2D(p.reflection, uv); });
+}
+
+template <WaterCombo C>
+inline WaterInputs<Counted> water_counted_inputs(CountedInputs& in) {
+  WaterInputs<Counted> r;
+  r.bump_uv = in.vector<2>();
+  r.tangent_eye = in.vector<3>();
+  r.reflect_refract = in.vector<4>();
+  r.w = in.scalar();
+  r.proj_z = in.scalar();
+  if constexpr (C.multitexture) r.extra_bump_uv = in.vector<4>();
+  return r;
+}
+
+template <WaterCombo C>
+inline Cost measure_water(ShaderModel model) {
+  const WaterParams params{};
+  return measure(model, [&](CountedInputs& in) { return water<C>(water_counted_inputs<C>(in), params); });
+}
+
+}  // namespace luxel::shading::source
