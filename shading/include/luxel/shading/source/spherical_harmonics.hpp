@@ -210,7 +210,8 @@ inline Sh9Ambient sh9_ambient_constants(const Sh9& irradiance) {
 }
 
 /// E(n)/π from the nine registers, for a unit normal n. 11 slots on ps_3_0 (measured in
-/// sh9_test.cpp and shown by `luxel cost`).
+/// sh9_test.cpp and shown by `luxel cost`). A zero normal (normalize(0) = 0) gives k0 where the
+/// cube gives black: both are arbitrary for a normal that has no direction.
 template <Lane L>
 inline float3<L> sh9_ambient_light(const float3<L>& n, const Sh9Ambient& sh) {
   const float3<L> n2 = n * n;
