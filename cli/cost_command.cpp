@@ -8,6 +8,7 @@
 #include "luxel/shading/source/lightmapped_generic.hpp"
 #include "luxel/shading/source/luminance_range_test.hpp"
 #include "luxel/shading/source/sky.hpp"
+#include "luxel/shading/source/spherical_harmonics.hpp"
 #include "luxel/shading/source/unlit_generic.hpp"
 #include "luxel/shading/source/vertexlit_generic.hpp"
 #include "luxel/shading/source/water.hpp"
@@ -238,6 +239,13 @@ void report_ambient_cube() {
               ps30, ps20, vs20);
   std::printf("  PS = the SDK's 9 (mul, cmp, cmp, mul, mad x5; the notes' 11 predate it); VS 6 needs relative "
               "addressing (mova), we select with slt/sge + lrp instead.\n");
+  const src::Sh9Ambient sh9;
+  const shading::Cost sh = shading::measure(ShaderModel::ps_3_0, [&](shading::CountedInputs& in) {
+    return src::sh9_ambient_light<shading::Counted>(in.vector<3>(), sh9);
+  });
+  std::printf("SH9 ambient (ps_3_0 option): %d slots, %d constant registers (cube: %d slots, 6 registers); "
+              "error vs ground truth: tests/shading/sh9_test.cpp, bench/README.md\n",
+              sh.arithmetic_slots, sh.uniform_registers, ps30);
 }
 
 }  // namespace

@@ -169,6 +169,7 @@ template <VertexLitCombo C>
 testing::LaneComparison compare_vertexlit(int hard_every, uint32_t seed) {
   VertexLitParams p;
   p.ambient = test_cube();
+  p.ambient_sh9 = sh9_ambient_constants(sh9_from_ambient_cube(p.ambient));  // the +sh9 combos
   p.eye_position = glm::vec4(0.5f, 2.0f, 3.0f, 1.0f);
   LightDesc a, b, c, d;
   a.position = glm::vec3(1.0f, 1.0f, 1.0f);

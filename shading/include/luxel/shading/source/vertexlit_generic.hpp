@@ -1,8 +1,9 @@
 #pragma once
 // VertexLitGeneric (models), DX9 pixel shader with per-pixel lighting: albedo x (ambient cube +
 // Σ local lights with squared Half-Lambert or Lambert), and on ps_2_b / ps_3_0 the Phong ("skin")
-// terms: exponent and mask textures, Fresnel ranges, rim lighting. SOURCE_FACTS §2.1 (ambient
-// cube), §3.2 (attenuation, spot), §3.3 (diffuse), §3.4 (light counts), §4.1-4.6 (Phong), §6.3.
+// terms: exponent and mask textures, Fresnel ranges, rim lighting; on ps_3_0 optionally SH9
+// ambient instead of the cube (spherical_harmonics.hpp). SOURCE_FACTS §2.1 (ambient cube), §3.2
+// (attenuation, spot), §3.3 (diffuse), §3.4 (light counts), §4.1-4.6 (Phong), §6.3.
 //
 // Static combos: the template parameter VertexLitCombo (light count, bump, Phong, exponent
 // texture, rim, Half-Lambert, where the attenuation is computed); the shader model is a separate
@@ -27,6 +28,7 @@
 // tint ($phongalbedotint), $blendtintbybasealpha, fog.
 
 #include "luxel/shading/source/common.hpp"
+#include "luxel/shading/source/spherical_harmonics.hpp"
 
 #include <array>
 #include <iterator>
@@ -44,6 +46,7 @@ struct VertexLitCombo {
   bool rim = false;               ///< rim lighting (needs Phong)
   bool half_lambert = true;       ///< squared Half-Lambert (the skin shader always uses it)
   bool pixel_attenuation = true;  ///< attenuation per pixel (luxel) or per vertex, interpolated (SDK)
+  bool sh9_ambient = false;       ///< ambient from 9 SH coefficients instead of the cube (ps_3_0 only)
 
   constexpr bool valid(ShaderModel m) const {
     if (lights < 0 || lights > 4) return false;
@@ -54,6 +57,11 @@ struct VertexLitCombo {
     // Two lights attenuated per pixel cost 65-73 arithmetic slots: over ps_2_0's 64 (measured,
     // see the budget test), so ps_2_0 attenuates per vertex, as the SDK does.
     if (m == ShaderModel::ps_2_0 && lights > 0 && pixel_attenuation) return false;
+    // SH9 ambient is the ps_3_0 option (issue #3), where the SDK's separate VertexLitGeneric
+    // ps_3_0 builds live (SOURCE_FACTS §11). A product choice, not a budget: it costs 2 slots and
+    // 3 constant registers more than the cube, and even the largest combo would fit ps_2_b with it
+    // (25 of 32 constants, measured in sh9_test.cpp).
+    if (sh9_ambient && m != ShaderModel::ps_3_0) return false;
     return true;
   }
   std::string name() const {
@@ -64,6 +72,7 @@ struct VertexLitCombo {
     if (rim) n += "+rim";
     if (!half_lambert) n += "+lambert";
     if (lights > 0 && !pixel_attenuation) n += "+vertexatten";
+    if (sh9_ambient) n += "+sh9";
     return n;
   }
 };
@@ -82,6 +91,9 @@ inline constexpr VertexLitCombo kVertexLitCombos[] = {
     {2, true, true, true, true, true, true},
     {2, false, true, false, false, true, true},
     {4, true, true, true, true, true, false},
+    {0, false, false, false, false, true, true, true},
+    {2, true, true, true, true, true, true, true},
+    {4, true, true, true, true, true, false, true},
 };
 
 template <class F>
@@ -105,6 +117,7 @@ struct VertexLitParams {
   Sampler2D bump{3};
   Sampler2D phong_exponent{7};
   AmbientCube ambient{};
+  Sh9Ambient ambient_sh9{};  ///< read instead of `ambient` by the sh9_ambient combos
   std::array<LocalLight, 4> lights{};
   glm::vec4 eye_position{0.0f};
   glm::vec4 modulation{1.0f};                          ///< $color (linear) and alpha
@@ -175,6 +188,16 @@ inline VertexLitTexels<L> vertexlit_fetch(const VertexLitInputs<L>& in, const Ve
   return t;
 }
 
+/// The ambient term along a unit direction: the cube, or SH9 on the sh9_ambient combos (E/π both).
+template <VertexLitCombo C, Lane L>
+inline float3<L> vertexlit_ambient(const float3<L>& n, const VertexLitParams& p) {
+  if constexpr (C.sh9_ambient) {
+    return sh9_ambient_light(n, p.ambient_sh9);
+  } else {
+    return ambient_light(n, p.ambient);
+  }
+}
+
 template <VertexLitCombo C, Lane L>
 inline float4<L> vertexlit_combine(const VertexLitTexels<L>& t, const VertexLitInputs<L>& in, const VertexLitParams& p) {
   float3<L> n;
@@ -184,7 +207,7 @@ inline float4<L> vertexlit_combine(const VertexLitTexels<L>& t, const VertexLitI
   } else {
     n = normalize(in.normal);
   }
-  float3<L> diffuse = ambient_light(n, p.ambient);
+  float3<L> diffuse = vertexlit_ambient<C>(n, p);
   float3<L> spec(0.0f), rim(0.0f);
   float3<L> view;
   L exponent;
@@ -236,7 +259,7 @@ inline float4<L> vertexlit_combine(const VertexLitTexels<L>& t, const VertexLitI
       const L rim_mask = C.exponent_texture ? L(lerp(L(1.0f), t.exponent.w, pp.w)) : L(1.0f);
       const L m = rim_mask * rim_fresnel;
       spec = max(spec, rim * m);
-      spec = spec + ambient_light(view, p.ambient) * (pp.z * saturate(m * n.z));
+      spec = spec + vertexlit_ambient<C>(view, p) * (pp.z * saturate(m * n.z));
     }
     color = color + spec * tint_boost.rgb();
   }
