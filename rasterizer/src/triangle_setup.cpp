@@ -194,23 +194,40 @@ void setup_and_bin(const DrawConstants& dc, const float* const v[3], ChunkBins& 
     const float slope = std::max(std::abs(t.z.dqdx), std::abs(t.z.dqdy));
     t.z.q0 += dc.rasterizer.depth_bias + dc.rasterizer.slope_scaled_depth_bias * slope;
   }
-  // Perspective-correct barycentrics: b_k = (b_k / w) / (1 / w). With equal w at the three
-  // vertices (2D, orthographic) they are affine and the pixel loop skips the division.
-  t.affine = s[0].inv_w == s[1].inv_w && s[0].inv_w == s[2].inv_w;
-  if (t.affine) {
-    t.inv_w = {s[0].inv_w, 0.0f, 0.0f};
-    t.b1_w = basis.plane(0.0, 1.0, 0.0);
-    t.b2_w = basis.plane(0.0, 0.0, 1.0);
-  } else {
-    t.inv_w = basis.plane(s[0].inv_w, s[1].inv_w, s[2].inv_w);
-    t.b1_w = basis.plane(0.0, s[1].inv_w, 0.0);
-    t.b2_w = basis.plane(0.0, 0.0, s[2].inv_w);
-  }
   t.front_facing = dc.rasterizer.front_counter_clockwise ? !clockwise : clockwise;
+  t.small = max_x - min_x < kSmallTriangleSize * kSubpixelsPerPixel &&
+            max_y - min_y < kSmallTriangleSize * kSubpixelsPerPixel;
+
+  // Flat varyings (equal and finite at the three vertices) interpolate to their value at
+  // vertex 0: the record stores that alone and no barycentrics.
+  const glm::vec4* a[3] = {reinterpret_cast<const glm::vec4*>(v[0]) + 1, reinterpret_cast<const glm::vec4*>(v[1]) + 1,
+                           reinterpret_cast<const glm::vec4*>(v[2]) + 1};
+  bool flat = true;
+  for (int i = 0; i < dc.varyings; ++i) {
+    const glm::vec4 finite = a[0][i] - a[0][i];  // 0 for finite components, NaN otherwise
+    flat &= a[1][i] == a[0][i] && a[2][i] == a[0][i] && finite == glm::vec4(0.0f);
+  }
+  t.flat = flat;
+  t.affine = s[0].inv_w == s[1].inv_w && s[0].inv_w == s[2].inv_w;
+  Barycentrics bary;
+  if (!flat) {
+    // Perspective-correct barycentrics: b_k = (b_k / w) / (1 / w). With equal w at the three
+    // vertices (2D, orthographic) they are affine and the pixel loop skips the division.
+    if (t.affine) {
+      bary.inv_w = {s[0].inv_w, 0.0f, 0.0f};
+      bary.b1_w = basis.plane(0.0, 1.0, 0.0);
+      bary.b2_w = basis.plane(0.0, 0.0, 1.0);
+    } else {
+      bary.inv_w = basis.plane(s[0].inv_w, s[1].inv_w, s[2].inv_w);
+      bary.b1_w = basis.plane(0.0, s[1].inv_w, 0.0);
+      bary.b2_w = basis.plane(0.0, 0.0, s[2].inv_w);
+    }
+  }
+  const size_t size = triangle_record_size(dc.varyings, flat);
+  t.record_blocks = static_cast<uint8_t>(size / 16);
 
   // Bin: the record goes into every tile the bounds touch, less those wholly outside an edge.
   ++stats.rasterized;
-  const size_t size = triangle_record_size(dc.varyings);
   const std::byte* first = nullptr;
   auto emit = [&](int tile) {
     RecordStream& records = bins.tile_records[tile];
@@ -221,12 +238,18 @@ void setup_and_bin(const DrawConstants& dc, const float* const v[3], ChunkBins& 
       return;
     }
     std::memcpy(out, &t, sizeof(TriangleSetup));
-    glm::vec4* varyings = reinterpret_cast<glm::vec4*>(out + sizeof(TriangleSetup));
-    for (int i = 0; i < dc.varyings; ++i) {
-      const glm::vec4 a0 = reinterpret_cast<const glm::vec4*>(v[0])[1 + i];
-      varyings[3 * i] = a0;
-      varyings[3 * i + 1] = reinterpret_cast<const glm::vec4*>(v[1])[1 + i] - a0;
-      varyings[3 * i + 2] = reinterpret_cast<const glm::vec4*>(v[2])[1 + i] - a0;
+    std::byte* tail = out + sizeof(TriangleSetup);
+    if (flat) {
+      for (int i = 0; i < dc.varyings; ++i) std::memcpy(tail + 16 * i, &a[0][i], 16);
+    } else {
+      std::memcpy(tail, &bary, sizeof(Barycentrics));
+      glm::vec4 d[3];
+      for (int i = 0; i < dc.varyings; ++i) {
+        d[0] = a[0][i];
+        d[1] = a[1][i] - a[0][i];
+        d[2] = a[2][i] - a[0][i];
+        std::memcpy(tail + sizeof(Barycentrics) + 48 * i, d, 48);
+      }
     }
     first = out;
   };

@@ -97,6 +97,8 @@ class TileRasterizer {
   static_assert(kTileSize % kBlockSize == 0 && kBlockSize % simd::kStampWidth == 0);
 
   void rasterize(const TriangleSetup& t, int x0, int y0, int x1, int y1);
+  /// The path for small triangles (TriangleSetup::small): 32-bit edge values throughout.
+  void rasterize_small(const TriangleSetup& t, int sx0, int sy0, int x1, int y1);
   void rasterize_stamps(const TriangleSetup& t, const StampEdges& edges, int x0, int y0, int x1, int y1);
   /// Per-sample coverage of a partly covered stamp of a triangle with wide edges.
   bool wide_coverage(const TriangleSetup& t, int px, int py, const Int& clip, Int* coverage);
@@ -109,10 +111,14 @@ class TileRasterizer {
     return simd::mask_of(x >= Int(clip_x0_)) & simd::mask_of(x < Int(clip_x1_)) & simd::mask_of(y >= Int(clip_y0_)) &
            simd::mask_of(y < Int(clip_y1_));
   }
+  /// The pixel functor's interpolants at the pixel centers (cx, cy relative to vertex 0),
+  /// perspective-correct.
+  void interpolate(const TriangleSetup& t, const Float& cx, const Float& cy, PixelInput<N>& in);
   /// Coverage is carried as one mask per sample: all-ones lanes are covered.
   void shade_stamp(const TriangleSetup& t, int px, int py, Int* coverage);
   Int depth_stencil_test(const TriangleSetup& t, const Float& dx, const Float& dy, int stamp, int s,
                          const Int& coverage, const Float* shader_depth);
+  /// Blending and write masks (plain writes are shade_stamp's).
   void write_color(int stamp, int s, const Int& coverage, const simd::Float4& color, const Int& packed);
   template <CompareFunc kFunc>
   Int early_depth(const TriangleSetup& t, const Float& dx, const Float& dy, int stamp, Int* coverage);
@@ -144,7 +150,11 @@ void TileRasterizer<PS, N, kEarlyZ, S>::triangle(const TriangleSetup& t) {
   const int x1 = std::min<int>(t.x1, clip_x1_), y1 = std::min<int>(t.y1, clip_y1_);
   if (x0 >= x1 || y0 >= y1) return;
   const int sx0 = x0 & ~(simd::kStampWidth - 1), sy0 = y0 & ~(simd::kStampHeight - 1);
-  rasterize(t, sx0, sy0, x1, y1);
+  if (t.small) {
+    rasterize_small(t, sx0, sy0, x1, y1);
+  } else {
+    rasterize(t, sx0, sy0, x1, y1);
+  }
 }
 
 /// Edge bounds over a w x h subpixel rectangle from its corner: [min, max] added to the corner's value.
@@ -201,6 +211,55 @@ void TileRasterizer<PS, N, kEarlyZ, S>::rasterize(const TriangleSetup& t, int sx
           shade_stamp(t, px, py, coverage);
         }
       }
+    }
+  }
+}
+
+template <class PS, int N, bool kEarlyZ, int S>
+void TileRasterizer<PS, N, kEarlyZ, S>::rasterize_small(const TriangleSetup& t, int sx0, int sy0, int x1, int y1) {
+  ++stats.small_walks;
+  // Edge values relative to the first stamp's corner fit 32 bits (see kSmallTriangleSize):
+  // per edge, its value at that corner, its steps to the next stamp in x and y, its bounds over a
+  // stamp (for scalar reject and accept), and its per-lane, per-sample offsets.
+  constexpr int kStampW = simd::kStampWidth * kSubpixelsPerPixel, kStampH = simd::kStampHeight * kSubpixelsPerPixel;
+  int32_t corner[3], step_x[3], step_y[3], lo[3], hi[3];
+  Int offset[3][S];
+  for (int e = 0; e < 3; ++e) {
+    const Edge& E = t.edge[e];
+    corner[e] = static_cast<int32_t>(E.c + (int64_t(E.a) * sx0 + int64_t(E.b) * sy0) * kSubpixelsPerPixel);
+    step_x[e] = E.a * kStampW;
+    step_y[e] = E.b * kStampH;
+    const int32_t ax = E.a * (kStampW - 1), by = E.b * (kStampH - 1);
+    lo[e] = std::min(0, ax) + std::min(0, by);
+    hi[e] = std::max(0, ax) + std::max(0, by);
+    const Int pixel = Int(E.a) * lanes_.x_sub + Int(E.b) * lanes_.y_sub;
+    for (int s = 0; s < S; ++s) offset[e][s] = pixel + Int(E.a * sample_x_[s] + E.b * sample_y_[s]);
+  }
+  Int coverage[S];
+  for (int py = sy0; py < y1; py += simd::kStampHeight) {
+    int32_t v[3] = {corner[0], corner[1], corner[2]};
+    for (int e = 0; e < 3; ++e) corner[e] += step_y[e];
+    for (int px = sx0; px < x1; px += simd::kStampWidth) {
+      const int32_t e0 = v[0], e1 = v[1], e2 = v[2];
+      for (int e = 0; e < 3; ++e) v[e] += step_x[e];
+      if ((e0 + hi[0]) < 0 || (e1 + hi[1]) < 0 || (e2 + hi[2]) < 0) continue;
+      const Int clip = clip_mask(px, py);
+      if ((e0 + lo[0]) >= 0 && (e1 + lo[1]) >= 0 && (e2 + lo[2]) >= 0) {
+        for (int s = 0; s < S; ++s) coverage[s] = clip;
+        ++stats.stamps_full;
+      } else {
+        const Int c0(e0), c1(e1), c2(e2);
+        Int any(0);
+        for (int s = 0; s < S; ++s) {
+          // Negative in any edge: the sign bit marks the lanes outside.
+          const Int outside = (c0 + offset[0][s]) | (c1 + offset[1][s]) | (c2 + offset[2][s]);
+          coverage[s] = clip & ~(outside >> 31);
+          any |= coverage[s];
+        }
+        if (!simd::sign_bits(any)) continue;
+        ++stats.stamps_partial;
+      }
+      shade_stamp(t, px, py, coverage);
     }
   }
 }
@@ -332,10 +391,6 @@ void TileRasterizer<PS, N, kEarlyZ, S>::write_color(int stamp, int s, const Int&
                                                    const Int& packed) {
   int32_t* dst = reinterpret_cast<int32_t*>(color_ + s * kTilePixels + stamp * simd::kLanes);
   const Int old = Int::load_aligned(dst);
-  if (plain_color_) {
-    simd::select(coverage, packed, old).store_aligned(dst);
-    return;
-  }
   Int value = packed;
   const BlendState& b = state_.blend;
   if (b.enable) {
@@ -346,6 +401,29 @@ void TileRasterizer<PS, N, kEarlyZ, S>::write_color(int stamp, int s, const Int&
   const Int write(static_cast<int32_t>(plan_.color_write_mask));
   value = (value & write) | (old & ~write);
   simd::select(coverage, value, old).store_aligned(dst);
+}
+
+template <class PS, int N, bool kEarlyZ, int S>
+void TileRasterizer<PS, N, kEarlyZ, S>::interpolate(const TriangleSetup& t, const Float& cx, const Float& cy,
+                                                   PixelInput<N>& in) {
+  const float* a = t.varyings();
+  if (t.flat) {
+    for (int i = 0; i < N; ++i, a += 4) in.varyings[i] = {Float(a[0]), Float(a[1]), Float(a[2]), Float(a[3])};
+    return;
+  }
+  const Barycentrics& bary = t.barycentrics();
+  Float b1 = eval_plane(bary.b1_w, cx, cy), b2 = eval_plane(bary.b2_w, cx, cy);
+  if (!t.affine) {
+    const Float w = Float(1.0f) / eval_plane(bary.inv_w, cx, cy);
+    b1 *= w;
+    b2 *= w;
+  }
+  for (int i = 0; i < N; ++i, a += 12) {  // a0 (4 floats), a1 - a0, a2 - a0
+    in.varyings[i].x = xsimd::fma(b2, Float(a[8]), xsimd::fma(b1, Float(a[4]), Float(a[0])));
+    in.varyings[i].y = xsimd::fma(b2, Float(a[9]), xsimd::fma(b1, Float(a[5]), Float(a[1])));
+    in.varyings[i].z = xsimd::fma(b2, Float(a[10]), xsimd::fma(b1, Float(a[6]), Float(a[2])));
+    in.varyings[i].w = xsimd::fma(b2, Float(a[11]), xsimd::fma(b1, Float(a[7]), Float(a[3])));
+  }
 }
 
 template <class PS, int N, bool kEarlyZ, int S>
@@ -384,26 +462,10 @@ void TileRasterizer<PS, N, kEarlyZ, S>::shade_stamp(const TriangleSetup& t, int 
     for (int s = 0; s < S; ++s) live |= coverage[s];
   }
 
-  // Interpolants at the pixel centers, perspective-correct.
   PixelInput<N> in;
-  const Float cx = dx + lanes_.center_x, cy = dy + lanes_.center_y;
   in.x = Float(float(px)) + lanes_.center_x;
   in.y = Float(float(py)) + lanes_.center_y;
-  if constexpr (N > 0) {
-    Float b1 = eval_plane(t.b1_w, cx, cy), b2 = eval_plane(t.b2_w, cx, cy);
-    if (!t.affine) {
-      const Float w = Float(1.0f) / eval_plane(t.inv_w, cx, cy);
-      b1 *= w;
-      b2 *= w;
-    }
-    const float* a = t.varyings();
-    for (int i = 0; i < N; ++i, a += 12) {  // a0 (4 floats), a1 - a0, a2 - a0
-      in.varyings[i].x = xsimd::fma(b2, Float(a[8]), xsimd::fma(b1, Float(a[4]), Float(a[0])));
-      in.varyings[i].y = xsimd::fma(b2, Float(a[9]), xsimd::fma(b1, Float(a[5]), Float(a[1])));
-      in.varyings[i].z = xsimd::fma(b2, Float(a[10]), xsimd::fma(b1, Float(a[6]), Float(a[2])));
-      in.varyings[i].w = xsimd::fma(b2, Float(a[11]), xsimd::fma(b1, Float(a[7]), Float(a[3])));
-    }
-  }
+  if constexpr (N > 0) interpolate(t, dx + lanes_.center_x, dy + lanes_.center_y, in);
   in.live = simd::sign_bits(live);
   in.front_facing = t.front_facing;
   PixelOutput out;
@@ -430,6 +492,20 @@ void TileRasterizer<PS, N, kEarlyZ, S>::shade_stamp(const TriangleSetup& t, int 
   if (count_samples_)
     for (int s = 0; s < S; ++s) samples_passed += std::popcount(simd::sign_bits(coverage[s]));
   if (!color_ || !plan_.color_write_mask) return;
+  if (plain_color_) {
+    // No blending, all channels: packing clamps by itself, and a sample plane whose lanes are
+    // all covered takes one store.
+    const Int packed = state_.blend.srgb_write ? pack_srgb8(out.color) : pack_unorm8(out.color);
+    int32_t* dst = reinterpret_cast<int32_t*>(color_ + stamp * simd::kLanes);
+    for (int s = 0; s < S; ++s, dst += kTilePixels) {
+      if (simd::sign_bits(coverage[s]) == simd::kAllLanes) {
+        packed.store_aligned(dst);
+      } else {
+        simd::select(coverage[s], packed, Int::load_aligned(dst)).store_aligned(dst);
+      }
+    }
+    return;
+  }
   const simd::Float4 color = saturate(out.color);
   const Int packed = state_.blend.enable ? Int(0) : (state_.blend.srgb_write ? pack_srgb8(color) : pack_unorm8(color));
   for (int s = 0; s < S; ++s) write_color(stamp, s, coverage[s], color, packed);
@@ -528,11 +604,11 @@ class DrawCommand final : public Command {
 
   template <class Rasterizer>
   void run(Rasterizer rasterizer, int tile, TileCounters& counters) {
-    const size_t size = triangle_record_size(N);
     for (const ChunkBins* bins : chunks_) {
       const RecordStream& records = bins->tile_records[tile];
-      for (size_t offset = 0; offset < records.size(); offset += size)
-        rasterizer.triangle(*reinterpret_cast<const TriangleSetup*>(records.data() + offset));
+      const auto* end = reinterpret_cast<const TriangleSetup*>(records.data() + records.size());
+      for (auto* t = reinterpret_cast<const TriangleSetup*>(records.data()); t != end; t = t->next())
+        rasterizer.triangle(*t);
     }
     if (query_slot_ >= 0) counters.query_samples[query_slot_] += rasterizer.samples_passed;
     *counters.stats += rasterizer.stats;
