@@ -11,6 +11,9 @@
 #include <stdexcept>
 #include <vector>
 
+/// The per-stamp helpers of shade_stamp: inlined, so that a stamp's lanes stay in registers.
+#define LUXEL_STAMP_INLINE [[gnu::always_inline]] inline
+
 namespace luxel::rasterizer::detail {
 
 /// Everything about a draw the tile rasterizer needs, decided once per draw.
@@ -70,6 +73,8 @@ class TileRasterizer {
     for (int s = 0; s < S; ++s) {
       sample_x_[s] = sample_subpixel(plan.sample_offsets[s].x);
       sample_y_[s] = sample_subpixel(plan.sample_offsets[s].y);
+      sample_X_[s] = lanes_.x_sub + Int(sample_x_[s]);
+      sample_Y_[s] = lanes_.y_sub + Int(sample_y_[s]);
       sample_dx_[s] = simd::lanes([&](int l) { return simd::lane_x(l) + sample_x_[s] / 256.0f; });
       sample_dy_[s] = simd::lanes([&](int l) { return simd::lane_y(l) + sample_y_[s] / 256.0f; });
     }
@@ -113,15 +118,15 @@ class TileRasterizer {
   }
   /// The pixel functor's interpolants at the pixel centers (cx, cy relative to vertex 0),
   /// perspective-correct.
-  void interpolate(const TriangleSetup& t, const Float& cx, const Float& cy, PixelInput<N>& in);
+  LUXEL_STAMP_INLINE void interpolate(const TriangleSetup& t, const Float& cx, const Float& cy, PixelInput<N>& in);
   /// Coverage is carried as one mask per sample: all-ones lanes are covered.
-  void shade_stamp(const TriangleSetup& t, int px, int py, Int* coverage);
+  LUXEL_STAMP_INLINE void shade_stamp(const TriangleSetup& t, int px, int py, Int* coverage);
   Int depth_stencil_test(const TriangleSetup& t, const Float& dx, const Float& dy, int stamp, int s,
                          const Int& coverage, const Float* shader_depth);
   /// Blending and write masks (plain writes are shade_stamp's).
   void write_color(int stamp, int s, const Int& coverage, const simd::Float4& color, const Int& packed);
   template <CompareFunc kFunc>
-  Int early_depth(const TriangleSetup& t, const Float& dx, const Float& dy, int stamp, Int* coverage);
+  LUXEL_STAMP_INLINE Int early_depth(const TriangleSetup& t, const Float& dx, const Float& dy, int stamp, Int* coverage);
 
   const DrawPlan& plan_;
   const PS& ps_;
@@ -140,7 +145,8 @@ class TileRasterizer {
   float* depth_;
   uint8_t* stencil_;
   int sample_x_[S], sample_y_[S];
-  Float sample_dx_[S], sample_dy_[S];
+  Int sample_X_[S], sample_Y_[S];      ///< subpixels from the stamp's corner to each lane's sample
+  Float sample_dx_[S], sample_dy_[S];  ///< the same in pixels
 };
 
 template <class PS, int N, bool kEarlyZ, int S>
@@ -170,8 +176,8 @@ void TileRasterizer<PS, N, kEarlyZ, S>::rasterize(const TriangleSetup& t, int sx
   for (int e = 0; e < 3; ++e) {
     const Edge& E = t.edge[e];
     if (t.narrow_edges) {
-      const Int pixel = Int(E.a) * lanes_.x_sub + Int(E.b) * lanes_.y_sub;
-      for (int s = 0; s < S; ++s) edges.lane_offset[e][s] = pixel + Int(E.a * sample_x_[s] + E.b * sample_y_[s]);
+      const Int a(E.a), b(E.b);
+      for (int s = 0; s < S; ++s) edges.lane_offset[e][s] = a * sample_X_[s] + b * sample_Y_[s];
     }
     edge_bounds(E, simd::kStampWidth * kSubpixelsPerPixel, simd::kStampHeight * kSubpixelsPerPixel,
                 edges.min_offset[e], edges.max_offset[e]);
@@ -232,8 +238,8 @@ void TileRasterizer<PS, N, kEarlyZ, S>::rasterize_small(const TriangleSetup& t, 
     const int32_t ax = E.a * (kStampW - 1), by = E.b * (kStampH - 1);
     lo[e] = std::min(0, ax) + std::min(0, by);
     hi[e] = std::max(0, ax) + std::max(0, by);
-    const Int pixel = Int(E.a) * lanes_.x_sub + Int(E.b) * lanes_.y_sub;
-    for (int s = 0; s < S; ++s) offset[e][s] = pixel + Int(E.a * sample_x_[s] + E.b * sample_y_[s]);
+    const Int a(E.a), b(E.b);
+    for (int s = 0; s < S; ++s) offset[e][s] = a * sample_X_[s] + b * sample_Y_[s];
   }
   Int coverage[S];
   for (int py = sy0; py < y1; py += simd::kStampHeight) {
@@ -428,8 +434,8 @@ void TileRasterizer<PS, N, kEarlyZ, S>::interpolate(const TriangleSetup& t, cons
 
 template <class PS, int N, bool kEarlyZ, int S>
 void TileRasterizer<PS, N, kEarlyZ, S>::shade_stamp(const TriangleSetup& t, int px, int py, Int* coverage) {
-  const int stamp = ((py - tile_y_) / simd::kStampHeight) * (kTileSize / simd::kStampWidth) +
-                    (px - tile_x_) / simd::kStampWidth;
+  const int stamp = static_cast<int>((unsigned(py - tile_y_) / simd::kStampHeight) * (kTileSize / simd::kStampWidth) +
+                                     unsigned(px - tile_x_) / simd::kStampWidth);
   // Offsets of the stamp's corner from the triangle's reference vertex: exact in float.
   const Float dx(float(px) - t.ref_x), dy(float(py) - t.ref_y);
   Int live(0);
