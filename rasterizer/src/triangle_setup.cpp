@@ -8,6 +8,7 @@
 #include "luxel/rasterizer/simd.hpp"
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
 #include <cstdlib>
 #include <cstring>
@@ -176,11 +177,15 @@ void setup_and_bin(const DrawConstants& dc, const float* const v[3], ChunkBins& 
   t.edge[0] = make_edge(s[0].X, s[0].Y, s[i1].X, s[i1].Y);
   t.edge[1] = make_edge(s[i1].X, s[i1].Y, s[i2].X, s[i2].Y);
   t.edge[2] = make_edge(s[i2].X, s[i2].Y, s[0].X, s[0].Y);
-  t.narrow_edges = true;
-  for (const Edge& e : t.edge) {
-    const int64_t span = std::abs(int64_t(e.a)) * (simd::kStampWidth * kSubpixelsPerPixel) +
-                         std::abs(int64_t(e.b)) * (simd::kStampHeight * kSubpixelsPerPixel);
-    if (span > kNarrowEdgeLimit) t.narrow_edges = false;
+  t.small = max_x - min_x < kSmallTriangleSize * kSubpixelsPerPixel &&
+            max_y - min_y < kSmallTriangleSize * kSubpixelsPerPixel;
+  t.narrow_edges = true;  // always for small triangles
+  if (!t.small) {
+    for (const Edge& e : t.edge) {
+      const int64_t span = std::abs(int64_t(e.a)) * (simd::kStampWidth * kSubpixelsPerPixel) +
+                           std::abs(int64_t(e.b)) * (simd::kStampHeight * kSubpixelsPerPixel);
+      if (span > kNarrowEdgeLimit) t.narrow_edges = false;
+    }
   }
 
   // Planes, in the vertices' own order.
@@ -195,17 +200,17 @@ void setup_and_bin(const DrawConstants& dc, const float* const v[3], ChunkBins& 
     t.z.q0 += dc.rasterizer.depth_bias + dc.rasterizer.slope_scaled_depth_bias * slope;
   }
   t.front_facing = dc.rasterizer.front_counter_clockwise ? !clockwise : clockwise;
-  t.small = max_x - min_x < kSmallTriangleSize * kSubpixelsPerPixel &&
-            max_y - min_y < kSmallTriangleSize * kSubpixelsPerPixel;
 
-  // Flat varyings (equal and finite at the three vertices) interpolate to their value at
+  // Flat varyings (the same finite bits at the three vertices) interpolate to their value at
   // vertex 0: the record stores that alone and no barycentrics.
   const glm::vec4* a[3] = {reinterpret_cast<const glm::vec4*>(v[0]) + 1, reinterpret_cast<const glm::vec4*>(v[1]) + 1,
                            reinterpret_cast<const glm::vec4*>(v[2]) + 1};
   bool flat = true;
-  for (int i = 0; i < dc.varyings; ++i) {
-    const glm::vec4 finite = a[0][i] - a[0][i];  // 0 for finite components, NaN otherwise
-    flat &= a[1][i] == a[0][i] && a[2][i] == a[0][i] && finite == glm::vec4(0.0f);
+  for (int i = 0; i < dc.varyings && flat; ++i) {
+    const glm::vec4& a0 = a[0][i];
+    const float zero = a0.x * 0.0f + a0.y * 0.0f + a0.z * 0.0f + a0.w * 0.0f;  // NaN unless all finite
+    flat = std::memcmp(&a[1][i], &a0, sizeof(glm::vec4)) == 0 && std::memcmp(&a[2][i], &a0, sizeof(glm::vec4)) == 0 &&
+           zero == 0.0f;
   }
   t.flat = flat;
   t.affine = s[0].inv_w == s[1].inv_w && s[0].inv_w == s[2].inv_w;
@@ -253,8 +258,10 @@ void setup_and_bin(const DrawConstants& dc, const float* const v[3], ChunkBins& 
     }
     first = out;
   };
-  const int tx0 = t.x0 / kTileSize, tx1 = (t.x1 - 1) / kTileSize;
-  const int ty0 = t.y0 / kTileSize, ty1 = (t.y1 - 1) / kTileSize;
+  static_assert(std::has_single_bit(unsigned(kTileSize)));
+  constexpr int kTileShift = std::countr_zero(unsigned(kTileSize));
+  const int tx0 = x0 >> kTileShift, tx1 = (x1 - 1) >> kTileShift;  // bounds are >= 0
+  const int ty0 = y0 >> kTileShift, ty1 = (y1 - 1) >> kTileShift;
   if (tx0 == tx1 && ty0 == ty1) {
     emit(ty0 * dc.tiles_x + tx0);
     return;
