@@ -649,12 +649,14 @@ void draw(Context& ctx, const Framebuffer& fb, const PipelineState& state, const
     return;
 
   // Front end now, in parallel over chunks of triangles; each chunk bins into its own lists.
-  const int chunk_count = static_cast<int>((triangles + kTrianglesPerChunk - 1) / kTrianglesPerChunk);
+  const uint32_t per_chunk = std::clamp<uint32_t>((triangles + kChunksPerDraw - 1) / kChunksPerDraw,
+                                                  kMinTrianglesPerChunk, kTrianglesPerChunk);
+  const int chunk_count = static_cast<int>((triangles + per_chunk - 1) / per_chunk);
   std::vector<ChunkBins*> chunks = queue.allocate_chunks(chunk_count);
   std::vector<DrawStats> chunk_stats(chunk_count);
   ctx.parallel_for(chunk_count, [&](int c, int) {
-    const uint32_t first = static_cast<uint32_t>(c) * kTrianglesPerChunk;
-    const uint32_t last = std::min<uint32_t>(triangles, first + kTrianglesPerChunk);
+    const uint32_t first = static_cast<uint32_t>(c) * per_chunk;
+    const uint32_t last = std::min<uint32_t>(triangles, first + per_chunk);
     front_end_chunk(plan.constants, geometry, vertex_shader, first, last, *chunks[c], chunk_stats[c]);
   });
   for (const DrawStats& s : chunk_stats) queue.front_end_stats() += s;
