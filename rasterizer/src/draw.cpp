@@ -18,6 +18,7 @@ DrawStats& DrawStats::operator+=(const DrawStats& o) {
   culled += o.culled;
   degenerate += o.degenerate;
   rasterized += o.rasterized;
+  small_walks += o.small_walks;
   blocks_full += o.blocks_full;
   stamps_full += o.stamps_full;
   stamps_partial += o.stamps_partial;

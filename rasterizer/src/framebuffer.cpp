@@ -55,10 +55,6 @@ uint32_t pack_rgba8(glm::vec4 c) {
   return out;
 }
 
-glm::vec4 unpack_rgba8(uint32_t rgba) {
-  return glm::vec4(rgba & 255, (rgba >> 8) & 255, (rgba >> 16) & 255, rgba >> 24) / 255.0f;
-}
-
 namespace {
 
 /// Makes the pending frame use `layout`, flushing a frame of another tiling first.

@@ -8,6 +8,7 @@
 #include "luxel/rasterizer/simd.hpp"
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
 #include <cstdlib>
 #include <cstring>
@@ -186,11 +187,15 @@ void setup_and_bin(const DrawConstants& dc, const float* const v[3], ChunkBins& 
   t.edge[0] = make_edge(s[0].X, s[0].Y, s[i1].X, s[i1].Y);
   t.edge[1] = make_edge(s[i1].X, s[i1].Y, s[i2].X, s[i2].Y);
   t.edge[2] = make_edge(s[i2].X, s[i2].Y, s[0].X, s[0].Y);
-  t.narrow_edges = true;
-  for (const Edge& e : t.edge) {
-    const int64_t span = std::abs(int64_t(e.a)) * (simd::kStampWidth * kSubpixelsPerPixel) +
-                         std::abs(int64_t(e.b)) * (simd::kStampHeight * kSubpixelsPerPixel);
-    if (span > kNarrowEdgeLimit) t.narrow_edges = false;
+  t.small = max_x - min_x < kSmallTriangleSize * kSubpixelsPerPixel &&
+            max_y - min_y < kSmallTriangleSize * kSubpixelsPerPixel;
+  t.narrow_edges = true;  // always for small triangles
+  if (!t.small) {
+    for (const Edge& e : t.edge) {
+      const int64_t span = std::abs(int64_t(e.a)) * (simd::kStampWidth * kSubpixelsPerPixel) +
+                           std::abs(int64_t(e.b)) * (simd::kStampHeight * kSubpixelsPerPixel);
+      if (span > kNarrowEdgeLimit) t.narrow_edges = false;
+    }
   }
 
   // Planes, in the vertices' own order.
@@ -204,23 +209,40 @@ void setup_and_bin(const DrawConstants& dc, const float* const v[3], ChunkBins& 
     const float slope = std::max(std::abs(t.z.dqdx), std::abs(t.z.dqdy));
     t.z.q0 += dc.rasterizer.depth_bias + dc.rasterizer.slope_scaled_depth_bias * slope;
   }
-  // Perspective-correct barycentrics: b_k = (b_k / w) / (1 / w). With equal w at the three
-  // vertices (2D, orthographic) they are affine and the pixel loop skips the division.
-  t.affine = s[0].inv_w == s[1].inv_w && s[0].inv_w == s[2].inv_w;
-  if (t.affine) {
-    t.inv_w = {s[0].inv_w, 0.0f, 0.0f};
-    t.b1_w = basis.plane(0.0, 1.0, 0.0);
-    t.b2_w = basis.plane(0.0, 0.0, 1.0);
-  } else {
-    t.inv_w = basis.plane(s[0].inv_w, s[1].inv_w, s[2].inv_w);
-    t.b1_w = basis.plane(0.0, s[1].inv_w, 0.0);
-    t.b2_w = basis.plane(0.0, 0.0, s[2].inv_w);
-  }
   t.front_facing = dc.rasterizer.front_counter_clockwise ? !clockwise : clockwise;
+
+  // Flat varyings (the same finite bits at the three vertices) interpolate to their value at
+  // vertex 0: the record stores that alone and no barycentrics.
+  const glm::vec4* a[3] = {reinterpret_cast<const glm::vec4*>(v[0]) + 1, reinterpret_cast<const glm::vec4*>(v[1]) + 1,
+                           reinterpret_cast<const glm::vec4*>(v[2]) + 1};
+  bool flat = true;
+  for (int i = 0; i < dc.varyings && flat; ++i) {
+    const glm::vec4& a0 = a[0][i];
+    const float zero = a0.x * 0.0f + a0.y * 0.0f + a0.z * 0.0f + a0.w * 0.0f;  // NaN unless all finite
+    flat = std::memcmp(&a[1][i], &a0, sizeof(glm::vec4)) == 0 && std::memcmp(&a[2][i], &a0, sizeof(glm::vec4)) == 0 &&
+           zero == 0.0f;
+  }
+  t.flat = flat;
+  t.affine = s[0].inv_w == s[1].inv_w && s[0].inv_w == s[2].inv_w;
+  Barycentrics bary;
+  if (!flat) {
+    // Perspective-correct barycentrics: b_k = (b_k / w) / (1 / w). With equal w at the three
+    // vertices (2D, orthographic) they are affine and the pixel loop skips the division.
+    if (t.affine) {
+      bary.inv_w = {s[0].inv_w, 0.0f, 0.0f};
+      bary.b1_w = basis.plane(0.0, 1.0, 0.0);
+      bary.b2_w = basis.plane(0.0, 0.0, 1.0);
+    } else {
+      bary.inv_w = basis.plane(s[0].inv_w, s[1].inv_w, s[2].inv_w);
+      bary.b1_w = basis.plane(0.0, s[1].inv_w, 0.0);
+      bary.b2_w = basis.plane(0.0, 0.0, s[2].inv_w);
+    }
+  }
+  const size_t size = triangle_record_size(dc.varyings, flat);
+  t.record_blocks = static_cast<uint8_t>(size / 16);
 
   // Bin: the record goes into every tile the bounds touch, less those wholly outside an edge.
   ++stats.rasterized;
-  const size_t size = triangle_record_size(dc.varyings);
   const std::byte* first = nullptr;
   auto emit = [&](int tile) {
     RecordStream& records = bins.tile_records[tile];
@@ -231,17 +253,25 @@ void setup_and_bin(const DrawConstants& dc, const float* const v[3], ChunkBins& 
       return;
     }
     std::memcpy(out, &t, sizeof(TriangleSetup));
-    glm::vec4* varyings = reinterpret_cast<glm::vec4*>(out + sizeof(TriangleSetup));
-    for (int i = 0; i < dc.varyings; ++i) {
-      const glm::vec4 a0 = reinterpret_cast<const glm::vec4*>(v[0])[1 + i];
-      varyings[3 * i] = a0;
-      varyings[3 * i + 1] = reinterpret_cast<const glm::vec4*>(v[1])[1 + i] - a0;
-      varyings[3 * i + 2] = reinterpret_cast<const glm::vec4*>(v[2])[1 + i] - a0;
+    std::byte* tail = out + sizeof(TriangleSetup);
+    if (flat) {
+      for (int i = 0; i < dc.varyings; ++i) std::memcpy(tail + 16 * i, &a[0][i], 16);
+    } else {
+      std::memcpy(tail, &bary, sizeof(Barycentrics));
+      glm::vec4 d[3];
+      for (int i = 0; i < dc.varyings; ++i) {
+        d[0] = a[0][i];
+        d[1] = a[1][i] - a[0][i];
+        d[2] = a[2][i] - a[0][i];
+        std::memcpy(tail + sizeof(Barycentrics) + 48 * i, d, 48);
+      }
     }
     first = out;
   };
-  const int tx0 = t.x0 / kTileSize, tx1 = (t.x1 - 1) / kTileSize;
-  const int ty0 = t.y0 / kTileSize, ty1 = (t.y1 - 1) / kTileSize;
+  static_assert(std::has_single_bit(unsigned(kTileSize)));
+  constexpr int kTileShift = std::countr_zero(unsigned(kTileSize));
+  const int tx0 = x0 >> kTileShift, tx1 = (x1 - 1) >> kTileShift;  // bounds are >= 0
+  const int ty0 = y0 >> kTileShift, ty1 = (y1 - 1) >> kTileShift;
   if (tx0 == tx1 && ty0 == ty1) {
     emit(ty0 * dc.tiles_x + tx0);
     return;

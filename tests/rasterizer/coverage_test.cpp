@@ -25,7 +25,7 @@ namespace {
 TEST(Coverage, RandomTrianglesMatchTheOracle) {
   const int batches = budget(48, 3);  // of 32 triangles, per configuration and sample count
   Context ctx(2);
-  uint64_t unknown = 0, covered = 0, wide_checked = 0, triangles = 0;
+  uint64_t unknown = 0, covered = 0, wide_checked = 0, triangles = 0, small_walks = 0, generic_stamps = 0;
   int failed_batches = 0;
   uint32_t seed = 1;
   for (const CoverageConfig& base : coverage_configs(true)) {
@@ -44,6 +44,8 @@ TEST(Coverage, RandomTrianglesMatchTheOracle) {
         std::vector<std::string> messages;
         const int bad = check_coverage_batch(ctx, target, cfg, batch, mode, messages, 6, &unknown, &covered);
         triangles += batch.size();
+        small_walks += ctx.stats().small_walks;
+        generic_stamps += ctx.stats().stamps_wide_edges + ctx.stats().blocks_full;
         EXPECT_EQ(ctx.stats().triangles, batch.size());
         if (bad) {
           ++failed_batches;
@@ -83,6 +85,9 @@ TEST(Coverage, RandomTrianglesMatchTheOracle) {
               (unsigned long long)wide_checked);
   EXPECT_GT(triangles, 1000u * (kReducedRun ? 0 : 1));
   EXPECT_GT(wide_checked, 0u) << "no wide-edge triangle covered a sample: the 64-bit path went untested";
+  // Both walks are checked: the 32-bit small-triangle path and the generic one (blocks, wide edges).
+  EXPECT_GT(small_walks, 100u) << "the small-triangle path went untested";
+  EXPECT_GT(generic_stamps, 100u) << "the generic path went untested";
   // The fuzzy oracle must stay meaningful: few samples near clipped boundaries.
   EXPECT_LT(unknown, covered / 50) << unknown << " unknown vs " << covered << " covered samples";
 }

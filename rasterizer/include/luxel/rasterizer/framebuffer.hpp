@@ -126,7 +126,10 @@ struct Framebuffer {
 
 /// Packs a color with round-to-nearest after clamping to [0, 1] (NaN becomes 0).
 uint32_t pack_rgba8(glm::vec4 color);
-glm::vec4 unpack_rgba8(uint32_t rgba);
+/// Inline: vertex functors unpack per-vertex colors with it.
+inline glm::vec4 unpack_rgba8(uint32_t rgba) {
+  return glm::vec4(rgba & 255, (rgba >> 8) & 255, (rgba >> 16) & 255, rgba >> 24) / 255.0f;
+}
 
 /// Records a clear of every sample (runs at the next flush, like draws).
 void clear_color(Context& ctx, ColorTarget& target, glm::vec4 color);

@@ -38,5 +38,10 @@ inline constexpr int kMaxSamples = 8;
 /// triangles, run in parallel; each chunk has its own bins, and a tile replays the chunks in
 /// order, so submission order is kept for any thread count.
 inline constexpr int kTrianglesPerChunk = 8192;
+/// Smaller draws are cut into about kChunksPerDraw chunks of at least kMinTrianglesPerChunk, so
+/// that their front end, too, runs on every thread (the chunking never changes the output).
+inline constexpr int kChunksPerDraw = 8;
+inline constexpr int kMinTrianglesPerChunk = 512;
+static_assert(kMinTrianglesPerChunk <= kTrianglesPerChunk);
 
 }  // namespace luxel::rasterizer

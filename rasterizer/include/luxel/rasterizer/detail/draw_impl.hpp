@@ -11,6 +11,9 @@
 #include <stdexcept>
 #include <vector>
 
+/// The per-stamp helpers of shade_stamp: inlined, so that a stamp's lanes stay in registers.
+#define LUXEL_STAMP_INLINE [[gnu::always_inline]] inline
+
 namespace luxel::rasterizer::detail {
 
 /// Everything about a draw the tile rasterizer needs, decided once per draw.
@@ -70,6 +73,8 @@ class TileRasterizer {
     for (int s = 0; s < S; ++s) {
       sample_x_[s] = sample_subpixel(plan.sample_offsets[s].x);
       sample_y_[s] = sample_subpixel(plan.sample_offsets[s].y);
+      sample_X_[s] = lanes_.x_sub + Int(sample_x_[s]);
+      sample_Y_[s] = lanes_.y_sub + Int(sample_y_[s]);
       sample_dx_[s] = simd::lanes([&](int l) { return simd::lane_x(l) + sample_x_[s] / 256.0f; });
       sample_dy_[s] = simd::lanes([&](int l) { return simd::lane_y(l) + sample_y_[s] / 256.0f; });
     }
@@ -97,6 +102,8 @@ class TileRasterizer {
   static_assert(kTileSize % kBlockSize == 0 && kBlockSize % simd::kStampWidth == 0);
 
   void rasterize(const TriangleSetup& t, int x0, int y0, int x1, int y1);
+  /// The path for small triangles (TriangleSetup::small): 32-bit edge values throughout.
+  void rasterize_small(const TriangleSetup& t, int sx0, int sy0, int x1, int y1);
   void rasterize_stamps(const TriangleSetup& t, const StampEdges& edges, int x0, int y0, int x1, int y1);
   /// Per-sample coverage of a partly covered stamp of a triangle with wide edges.
   bool wide_coverage(const TriangleSetup& t, int px, int py, const Int& clip, Int* coverage);
@@ -109,13 +116,17 @@ class TileRasterizer {
     return simd::mask_of(x >= Int(clip_x0_)) & simd::mask_of(x < Int(clip_x1_)) & simd::mask_of(y >= Int(clip_y0_)) &
            simd::mask_of(y < Int(clip_y1_));
   }
+  /// The pixel functor's interpolants at the pixel centers (cx, cy relative to vertex 0),
+  /// perspective-correct.
+  LUXEL_STAMP_INLINE void interpolate(const TriangleSetup& t, const Float& cx, const Float& cy, PixelInput<N>& in);
   /// Coverage is carried as one mask per sample: all-ones lanes are covered.
-  void shade_stamp(const TriangleSetup& t, int px, int py, Int* coverage);
+  LUXEL_STAMP_INLINE void shade_stamp(const TriangleSetup& t, int px, int py, Int* coverage);
   Int depth_stencil_test(const TriangleSetup& t, const Float& dx, const Float& dy, int stamp, int s,
                          const Int& coverage, const Float* shader_depth);
+  /// Blending and write masks (plain writes are shade_stamp's).
   void write_color(int stamp, int s, const Int& coverage, const simd::Float4& color, const Int& packed);
   template <CompareFunc kFunc>
-  Int early_depth(const TriangleSetup& t, const Float& dx, const Float& dy, int stamp, Int* coverage);
+  LUXEL_STAMP_INLINE Int early_depth(const TriangleSetup& t, const Float& dx, const Float& dy, int stamp, Int* coverage);
 
   const DrawPlan& plan_;
   const PS& ps_;
@@ -134,7 +145,8 @@ class TileRasterizer {
   float* depth_;
   uint8_t* stencil_;
   int sample_x_[S], sample_y_[S];
-  Float sample_dx_[S], sample_dy_[S];
+  Int sample_X_[S], sample_Y_[S];      ///< subpixels from the stamp's corner to each lane's sample
+  Float sample_dx_[S], sample_dy_[S];  ///< the same in pixels
 };
 
 template <class PS, int N, bool kEarlyZ, int S>
@@ -144,7 +156,11 @@ void TileRasterizer<PS, N, kEarlyZ, S>::triangle(const TriangleSetup& t) {
   const int x1 = std::min<int>(t.x1, clip_x1_), y1 = std::min<int>(t.y1, clip_y1_);
   if (x0 >= x1 || y0 >= y1) return;
   const int sx0 = x0 & ~(simd::kStampWidth - 1), sy0 = y0 & ~(simd::kStampHeight - 1);
-  rasterize(t, sx0, sy0, x1, y1);
+  if (t.small) {
+    rasterize_small(t, sx0, sy0, x1, y1);
+  } else {
+    rasterize(t, sx0, sy0, x1, y1);
+  }
 }
 
 /// Edge bounds over a w x h subpixel rectangle from its corner: [min, max] added to the corner's value.
@@ -160,8 +176,8 @@ void TileRasterizer<PS, N, kEarlyZ, S>::rasterize(const TriangleSetup& t, int sx
   for (int e = 0; e < 3; ++e) {
     const Edge& E = t.edge[e];
     if (t.narrow_edges) {
-      const Int pixel = Int(E.a) * lanes_.x_sub + Int(E.b) * lanes_.y_sub;
-      for (int s = 0; s < S; ++s) edges.lane_offset[e][s] = pixel + Int(E.a * sample_x_[s] + E.b * sample_y_[s]);
+      const Int a(E.a), b(E.b);
+      for (int s = 0; s < S; ++s) edges.lane_offset[e][s] = a * sample_X_[s] + b * sample_Y_[s];
     }
     edge_bounds(E, simd::kStampWidth * kSubpixelsPerPixel, simd::kStampHeight * kSubpixelsPerPixel,
                 edges.min_offset[e], edges.max_offset[e]);
@@ -201,6 +217,55 @@ void TileRasterizer<PS, N, kEarlyZ, S>::rasterize(const TriangleSetup& t, int sx
           shade_stamp(t, px, py, coverage);
         }
       }
+    }
+  }
+}
+
+template <class PS, int N, bool kEarlyZ, int S>
+void TileRasterizer<PS, N, kEarlyZ, S>::rasterize_small(const TriangleSetup& t, int sx0, int sy0, int x1, int y1) {
+  ++stats.small_walks;
+  // Edge values relative to the first stamp's corner fit 32 bits (see kSmallTriangleSize):
+  // per edge, its value at that corner, its steps to the next stamp in x and y, its bounds over a
+  // stamp (for scalar reject and accept), and its per-lane, per-sample offsets.
+  constexpr int kStampW = simd::kStampWidth * kSubpixelsPerPixel, kStampH = simd::kStampHeight * kSubpixelsPerPixel;
+  int32_t corner[3], step_x[3], step_y[3], lo[3], hi[3];
+  Int offset[3][S];
+  for (int e = 0; e < 3; ++e) {
+    const Edge& E = t.edge[e];
+    corner[e] = static_cast<int32_t>(E.c + (int64_t(E.a) * sx0 + int64_t(E.b) * sy0) * kSubpixelsPerPixel);
+    step_x[e] = E.a * kStampW;
+    step_y[e] = E.b * kStampH;
+    const int32_t ax = E.a * (kStampW - 1), by = E.b * (kStampH - 1);
+    lo[e] = std::min(0, ax) + std::min(0, by);
+    hi[e] = std::max(0, ax) + std::max(0, by);
+    const Int a(E.a), b(E.b);
+    for (int s = 0; s < S; ++s) offset[e][s] = a * sample_X_[s] + b * sample_Y_[s];
+  }
+  Int coverage[S];
+  for (int py = sy0; py < y1; py += simd::kStampHeight) {
+    int32_t v[3] = {corner[0], corner[1], corner[2]};
+    for (int e = 0; e < 3; ++e) corner[e] += step_y[e];
+    for (int px = sx0; px < x1; px += simd::kStampWidth) {
+      const int32_t e0 = v[0], e1 = v[1], e2 = v[2];
+      for (int e = 0; e < 3; ++e) v[e] += step_x[e];
+      if ((e0 + hi[0]) < 0 || (e1 + hi[1]) < 0 || (e2 + hi[2]) < 0) continue;
+      const Int clip = clip_mask(px, py);
+      if ((e0 + lo[0]) >= 0 && (e1 + lo[1]) >= 0 && (e2 + lo[2]) >= 0) {
+        for (int s = 0; s < S; ++s) coverage[s] = clip;
+        ++stats.stamps_full;
+      } else {
+        const Int c0(e0), c1(e1), c2(e2);
+        Int any(0);
+        for (int s = 0; s < S; ++s) {
+          // Negative in any edge: the sign bit marks the lanes outside.
+          const Int outside = (c0 + offset[0][s]) | (c1 + offset[1][s]) | (c2 + offset[2][s]);
+          coverage[s] = clip & ~(outside >> 31);
+          any |= coverage[s];
+        }
+        if (!simd::sign_bits(any)) continue;
+        ++stats.stamps_partial;
+      }
+      shade_stamp(t, px, py, coverage);
     }
   }
 }
@@ -332,10 +397,6 @@ void TileRasterizer<PS, N, kEarlyZ, S>::write_color(int stamp, int s, const Int&
                                                    const Int& packed) {
   int32_t* dst = reinterpret_cast<int32_t*>(color_ + s * kTilePixels + stamp * simd::kLanes);
   const Int old = Int::load_aligned(dst);
-  if (plain_color_) {
-    simd::select(coverage, packed, old).store_aligned(dst);
-    return;
-  }
   Int value = packed;
   const BlendState& b = state_.blend;
   if (b.enable) {
@@ -349,9 +410,32 @@ void TileRasterizer<PS, N, kEarlyZ, S>::write_color(int stamp, int s, const Int&
 }
 
 template <class PS, int N, bool kEarlyZ, int S>
+void TileRasterizer<PS, N, kEarlyZ, S>::interpolate(const TriangleSetup& t, const Float& cx, const Float& cy,
+                                                   PixelInput<N>& in) {
+  const float* a = t.varyings();
+  if (t.flat) {
+    for (int i = 0; i < N; ++i, a += 4) in.varyings[i] = {Float(a[0]), Float(a[1]), Float(a[2]), Float(a[3])};
+    return;
+  }
+  const Barycentrics& bary = t.barycentrics();
+  Float b1 = eval_plane(bary.b1_w, cx, cy), b2 = eval_plane(bary.b2_w, cx, cy);
+  if (!t.affine) {
+    const Float w = Float(1.0f) / eval_plane(bary.inv_w, cx, cy);
+    b1 *= w;
+    b2 *= w;
+  }
+  for (int i = 0; i < N; ++i, a += 12) {  // a0 (4 floats), a1 - a0, a2 - a0
+    in.varyings[i].x = xsimd::fma(b2, Float(a[8]), xsimd::fma(b1, Float(a[4]), Float(a[0])));
+    in.varyings[i].y = xsimd::fma(b2, Float(a[9]), xsimd::fma(b1, Float(a[5]), Float(a[1])));
+    in.varyings[i].z = xsimd::fma(b2, Float(a[10]), xsimd::fma(b1, Float(a[6]), Float(a[2])));
+    in.varyings[i].w = xsimd::fma(b2, Float(a[11]), xsimd::fma(b1, Float(a[7]), Float(a[3])));
+  }
+}
+
+template <class PS, int N, bool kEarlyZ, int S>
 void TileRasterizer<PS, N, kEarlyZ, S>::shade_stamp(const TriangleSetup& t, int px, int py, Int* coverage) {
-  const int stamp = ((py - tile_y_) / simd::kStampHeight) * (kTileSize / simd::kStampWidth) +
-                    (px - tile_x_) / simd::kStampWidth;
+  const int stamp = static_cast<int>((unsigned(py - tile_y_) / simd::kStampHeight) * (kTileSize / simd::kStampWidth) +
+                                     unsigned(px - tile_x_) / simd::kStampWidth);
   // Offsets of the stamp's corner from the triangle's reference vertex: exact in float.
   const Float dx(float(px) - t.ref_x), dy(float(py) - t.ref_y);
   Int live(0);
@@ -384,26 +468,10 @@ void TileRasterizer<PS, N, kEarlyZ, S>::shade_stamp(const TriangleSetup& t, int 
     for (int s = 0; s < S; ++s) live |= coverage[s];
   }
 
-  // Interpolants at the pixel centers, perspective-correct.
   PixelInput<N> in;
-  const Float cx = dx + lanes_.center_x, cy = dy + lanes_.center_y;
   in.x = Float(float(px)) + lanes_.center_x;
   in.y = Float(float(py)) + lanes_.center_y;
-  if constexpr (N > 0) {
-    Float b1 = eval_plane(t.b1_w, cx, cy), b2 = eval_plane(t.b2_w, cx, cy);
-    if (!t.affine) {
-      const Float w = Float(1.0f) / eval_plane(t.inv_w, cx, cy);
-      b1 *= w;
-      b2 *= w;
-    }
-    const float* a = t.varyings();
-    for (int i = 0; i < N; ++i, a += 12) {  // a0 (4 floats), a1 - a0, a2 - a0
-      in.varyings[i].x = xsimd::fma(b2, Float(a[8]), xsimd::fma(b1, Float(a[4]), Float(a[0])));
-      in.varyings[i].y = xsimd::fma(b2, Float(a[9]), xsimd::fma(b1, Float(a[5]), Float(a[1])));
-      in.varyings[i].z = xsimd::fma(b2, Float(a[10]), xsimd::fma(b1, Float(a[6]), Float(a[2])));
-      in.varyings[i].w = xsimd::fma(b2, Float(a[11]), xsimd::fma(b1, Float(a[7]), Float(a[3])));
-    }
-  }
+  if constexpr (N > 0) interpolate(t, dx + lanes_.center_x, dy + lanes_.center_y, in);
   in.live = simd::sign_bits(live);
   in.front_facing = t.front_facing;
   PixelOutput out;
@@ -430,6 +498,20 @@ void TileRasterizer<PS, N, kEarlyZ, S>::shade_stamp(const TriangleSetup& t, int 
   if (count_samples_)
     for (int s = 0; s < S; ++s) samples_passed += std::popcount(simd::sign_bits(coverage[s]));
   if (!color_ || !plan_.color_write_mask) return;
+  if (plain_color_) {
+    // No blending, all channels: packing clamps by itself, and a sample plane whose lanes are
+    // all covered takes one store.
+    const Int packed = state_.blend.srgb_write ? pack_srgb8(out.color) : pack_unorm8(out.color);
+    int32_t* dst = reinterpret_cast<int32_t*>(color_ + stamp * simd::kLanes);
+    for (int s = 0; s < S; ++s, dst += kTilePixels) {
+      if (simd::sign_bits(coverage[s]) == simd::kAllLanes) {
+        packed.store_aligned(dst);
+      } else {
+        simd::select(coverage[s], packed, Int::load_aligned(dst)).store_aligned(dst);
+      }
+    }
+    return;
+  }
   const simd::Float4 color = saturate(out.color);
   const Int packed = state_.blend.enable ? Int(0) : (state_.blend.srgb_write ? pack_srgb8(color) : pack_unorm8(color));
   for (int s = 0; s < S; ++s) write_color(stamp, s, coverage[s], color, packed);
@@ -528,11 +610,11 @@ class DrawCommand final : public Command {
 
   template <class Rasterizer>
   void run(Rasterizer rasterizer, int tile, TileCounters& counters) {
-    const size_t size = triangle_record_size(N);
     for (const ChunkBins* bins : chunks_) {
       const RecordStream& records = bins->tile_records[tile];
-      for (size_t offset = 0; offset < records.size(); offset += size)
-        rasterizer.triangle(*reinterpret_cast<const TriangleSetup*>(records.data() + offset));
+      const auto* end = reinterpret_cast<const TriangleSetup*>(records.data() + records.size());
+      for (auto* t = reinterpret_cast<const TriangleSetup*>(records.data()); t != end; t = t->next())
+        rasterizer.triangle(*t);
     }
     if (query_slot_ >= 0) counters.query_samples[query_slot_] += rasterizer.samples_passed;
     *counters.stats += rasterizer.stats;
@@ -567,12 +649,14 @@ void draw(Context& ctx, const Framebuffer& fb, const PipelineState& state, const
     return;
 
   // Front end now, in parallel over chunks of triangles; each chunk bins into its own lists.
-  const int chunk_count = static_cast<int>((triangles + kTrianglesPerChunk - 1) / kTrianglesPerChunk);
+  const uint32_t per_chunk = std::clamp<uint32_t>((triangles + kChunksPerDraw - 1) / kChunksPerDraw,
+                                                  kMinTrianglesPerChunk, kTrianglesPerChunk);
+  const int chunk_count = static_cast<int>((triangles + per_chunk - 1) / per_chunk);
   std::vector<ChunkBins*> chunks = queue.allocate_chunks(chunk_count);
   std::vector<DrawStats> chunk_stats(chunk_count);
   ctx.parallel_for(chunk_count, [&](int c, int) {
-    const uint32_t first = static_cast<uint32_t>(c) * kTrianglesPerChunk;
-    const uint32_t last = std::min<uint32_t>(triangles, first + kTrianglesPerChunk);
+    const uint32_t first = static_cast<uint32_t>(c) * per_chunk;
+    const uint32_t last = std::min<uint32_t>(triangles, first + per_chunk);
     front_end_chunk(plan.constants, geometry, vertex_shader, first, last, *chunks[c], chunk_stats[c]);
   });
   for (const DrawStats& s : chunk_stats) queue.front_end_stats() += s;

@@ -49,29 +49,58 @@ struct Plane {
   float q0, dqdx, dqdy;
 };
 
-/// A binned triangle. In the bins it is followed by its varyings: per varying three float4, the
-/// value at vertex 0 and the differences a1 - a0 and a2 - a0.
+/// Perspective-correct barycentrics of vertices 1 and 2: b_k = b_k_w / inv_w.
+struct Barycentrics {
+  Plane inv_w;       ///< 1/w
+  Plane b1_w, b2_w;  ///< barycentrics of vertices 1 and 2, divided by w
+};
+
+/// A binned triangle. Records differ in size: the header is followed, unless every varying is
+/// flat (equal at the three vertices, as in flat-shaded or per-primitive data), by Barycentrics
+/// and per varying three float4 (the value at vertex 0 and the differences a1 - a0, a2 - a0);
+/// with flat varyings only one float4 per varying follows, and no barycentrics are needed.
 struct alignas(16) TriangleSetup {
   Edge edge[3];
   int16_t x0, y0, x1, y1;  ///< pixel bounds (half-open), inside the draw's clip rectangle
   float ref_x, ref_y;      ///< pixels: vertex 0, snapped
   Plane z;                 ///< screen-linear depth, bias included
-  Plane inv_w;             ///< 1/w
-  Plane b1_w, b2_w;        ///< perspective barycentrics of vertices 1 and 2, divided by w
-  bool front_facing;
-  bool narrow_edges;       ///< per-sample edge values of a stamp fit 32-bit integers
-  bool affine;             ///< equal w at the vertices: b1_w, b2_w are the barycentrics themselves
-  const float* varyings() const { return reinterpret_cast<const float*>(this + 1); }
+  uint8_t record_blocks;   ///< size of this record in 16-byte blocks
+  bool front_facing : 1;
+  bool narrow_edges : 1;   ///< per-sample edge values of a stamp fit 32-bit integers
+  bool small : 1;          ///< spans less than kSmallTriangleSize pixels in x and in y
+  bool affine : 1;         ///< equal w at the vertices: b1_w, b2_w are the barycentrics themselves
+  bool flat : 1;           ///< every varying is flat (then there are no Barycentrics)
+
+  const Barycentrics& barycentrics() const { return *reinterpret_cast<const Barycentrics*>(this + 1); }
+  const float* varyings() const {
+    const std::byte* after = reinterpret_cast<const std::byte*>(this + 1);
+    return reinterpret_cast<const float*>(flat ? after : after + sizeof(Barycentrics));
+  }
+  const TriangleSetup* next() const {
+    return reinterpret_cast<const TriangleSetup*>(reinterpret_cast<const std::byte*>(this) + 16 * record_blocks);
+  }
 };
 static_assert(kMaxTargetSize <= INT16_MAX, "pixel bounds are stored in 16 bits");
+static_assert(sizeof(TriangleSetup) == 80, "a small flat-shaded triangle takes 96 bytes with one varying");
 
 /// Bound on |a| * stamp width + |b| * stamp height (subpixels) for the 32-bit per-sample path.
 inline constexpr int64_t kNarrowEdgeLimit = int64_t(1) << 29;
 
+/// Triangles narrower and shorter than this (pixels) are "small": their edge values anywhere
+/// within kTileSize pixels of their vertices fit comfortably in 32 bits (|a|, |b| < 2^13
+/// subpixels, distances < 2^15 subpixels: |E| < 2^29), so the tile rasterizer evaluates them
+/// in 32-bit lanes from the first stamp on, without 64-bit row setup or per-stamp bounds.
+inline constexpr int kSmallTriangleSize = 32;
+static_assert(int64_t(kSmallTriangleSize) * kSubpixelsPerPixel * (kTileSize + kSmallTriangleSize) *
+                      kSubpixelsPerPixel * 2 < (int64_t(1) << 30));
+
 /// Bytes of one binned triangle with `varyings` float4 interpolants.
-constexpr size_t triangle_record_size(int varyings) {
-  return sizeof(TriangleSetup) + sizeof(float) * 12 * varyings;
+constexpr size_t triangle_record_size(int varyings, bool flat) {
+  const size_t bytes = sizeof(TriangleSetup) + (flat ? sizeof(float) * 4 * varyings
+                                                     : sizeof(Barycentrics) + sizeof(float) * 12 * varyings);
+  return (bytes + 15) / 16 * 16;
 }
+static_assert(triangle_record_size(kMaxVaryings, false) / 16 <= UINT8_MAX);
 
 /// A growable byte stream that, unlike std::vector, does not zero what it appends.
 class RecordStream {
