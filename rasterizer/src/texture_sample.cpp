@@ -30,27 +30,23 @@ using simd::kLanes;
 using FloatMask = simd::FloatMask;
 using IntMask = simd::IntMask;
 
-// GCC leaves some of the small helpers below as calls, passing batches through memory; they are
-// a few instructions each and run several times per texel.
-#define LUXEL_TEXTURE_INLINE [[gnu::always_inline]] inline
-
 // --- Small lane helpers -----------------------------------------------------------------------
 
-LUXEL_TEXTURE_INLINE Int to_int(const Float& x) { return xsimd::to_int(x); }  // exact on floor()ed values
-LUXEL_TEXTURE_INLINE Float to_float(const Int& i) { return xsimd::to_float(i); }
-LUXEL_TEXTURE_INLINE FloatMask float_mask(const IntMask& m) { return xsimd::bool_cast(m); }
-LUXEL_TEXTURE_INLINE IntMask int_mask(const FloatMask& m) { return xsimd::bool_cast(m); }
-LUXEL_TEXTURE_INLINE Float lerp(const Float& a, const Float& b, const Float& t) {
+LUXEL_INLINE Int to_int(const Float& x) { return xsimd::to_int(x); }  // exact on floor()ed values
+LUXEL_INLINE Float to_float(const Int& i) { return xsimd::to_float(i); }
+LUXEL_INLINE FloatMask float_mask(const IntMask& m) { return xsimd::bool_cast(m); }
+LUXEL_INLINE IntMask int_mask(const FloatMask& m) { return xsimd::bool_cast(m); }
+LUXEL_INLINE Float lerp(const Float& a, const Float& b, const Float& t) {
   return xsimd::fma(t, b - a, a);
 }
-LUXEL_TEXTURE_INLINE Float4 lerp(const Float4& a, const Float4& b, const Float& t) {
+LUXEL_INLINE Float4 lerp(const Float4& a, const Float4& b, const Float& t) {
   return {lerp(a.x, b.x, t), lerp(a.y, b.y, t), lerp(a.z, b.z, t), lerp(a.w, b.w, t)};
 }
-LUXEL_TEXTURE_INLINE Float4 select(const FloatMask& m, const Float4& a, const Float4& b) {
+LUXEL_INLINE Float4 select(const FloatMask& m, const Float4& a, const Float4& b) {
   return {xsimd::select(m, a.x, b.x), xsimd::select(m, a.y, b.y), xsimd::select(m, a.z, b.z),
           xsimd::select(m, a.w, b.w)};
 }
-LUXEL_TEXTURE_INLINE Float4 broadcast(const glm::vec4& v) {
+LUXEL_INLINE Float4 broadcast(const glm::vec4& v) {
   return {Float(v.x), Float(v.y), Float(v.z), Float(v.w)};
 }
 
@@ -58,14 +54,14 @@ LUXEL_TEXTURE_INLINE Float4 broadcast(const glm::vec4& v) {
 /// the rounded reciprocal and one Markstein correction step (e = x - q d is exact with an FMA).
 /// Checked equal to x / d for every integer and 10^7 random x in [0, d]; a third of a divide's cost.
 template <int kDivisor>
-LUXEL_TEXTURE_INLINE Float divide_by(const Float& x) {
+LUXEL_INLINE Float divide_by(const Float& x) {
   const Float d(static_cast<float>(kDivisor)), r(1.0f / static_cast<float>(kDivisor));
   const Float q = x * r;
   return xsimd::fma(xsimd::fnma(q, d, x), r, q);
 }
 
 /// 32-bit words at base[index[l]].
-LUXEL_TEXTURE_INLINE Int gather(const int32_t* base, const Int& index) {
+LUXEL_INLINE Int gather(const int32_t* base, const Int& index) {
 #if defined(__SANITIZE_ADDRESS__)
   // Hardware gathers are invisible to AddressSanitizer; scalar loads let it check every read.
   alignas(64) int32_t i[kLanes], out[kLanes];
@@ -77,7 +73,7 @@ LUXEL_TEXTURE_INLINE Int gather(const int32_t* base, const Int& index) {
 #endif
 }
 
-LUXEL_TEXTURE_INLINE Float gather(const float* base, const Int& index) {
+LUXEL_INLINE Float gather(const float* base, const Int& index) {
 #if defined(__SANITIZE_ADDRESS__)
   alignas(64) int32_t i[kLanes];
   alignas(64) float out[kLanes];
@@ -93,7 +89,7 @@ LUXEL_TEXTURE_INLINE Float gather(const float* base, const Int& index) {
 /// (exponent plus a degree-8 polynomial in the mantissa around 1, interpolating at Chebyshev
 /// nodes), -inf for 0, x itself for +inf and NaN. No division and no branch, unlike xsimd::log2;
 /// D3D11 asks for only 8 bits of LOD fraction (D3D11_MIP_LOD_FRACTIONAL_BIT_COUNT).
-LUXEL_TEXTURE_INLINE Float lod_log2(const Float& x) {
+LUXEL_INLINE Float lod_log2(const Float& x) {
   const Int bits = xsimd::bitwise_cast<Int>(x);
   Float m = xsimd::bitwise_cast<Float>((bits & Int(0x007fffff)) | Int(0x3f800000));  // [1, 2)
   const FloatMask high = m > Float(1.41421356f);  // -> [sqrt(1/2), sqrt(2)), where p is fitted
@@ -121,7 +117,7 @@ LUXEL_TEXTURE_INLINE Float lod_log2(const Float& x) {
 
 struct Rgba8 {
   static constexpr int kWords = 1;
-  LUXEL_TEXTURE_INLINE static Float4 fetch(const int32_t* words, const Int& index) {
+  LUXEL_INLINE static Float4 fetch(const int32_t* words, const Int& index) {
     const Int w = gather(words, index), byte(0xff);
     return {to_float(w & byte), to_float((w >> 8) & byte), to_float((w >> 16) & byte),
             to_float((w >> 24) & byte)};
@@ -134,7 +130,7 @@ struct Rgba8 {
 
 struct Rgba8Srgb {
   static constexpr int kWords = 1;
-  LUXEL_TEXTURE_INLINE static Float4 fetch(const int32_t* words, const Int& index) {
+  LUXEL_INLINE static Float4 fetch(const int32_t* words, const Int& index) {
     const float* table = texture_detail::kSrgbToLinear.data();
     const Int w = gather(words, index), byte(0xff);
     return {gather(table, w & byte), gather(table, (w >> 8) & byte), gather(table, (w >> 16) & byte),
@@ -146,7 +142,7 @@ struct Rgba8Srgb {
 
 struct Rgba16f {
   static constexpr int kWords = 2;
-  LUXEL_TEXTURE_INLINE static Float4 fetch(const int32_t* words, const Int& index) {
+  LUXEL_INLINE static Float4 fetch(const int32_t* words, const Int& index) {
     Float4 t;
     simd::unpack_halves(gather(words, index), t.x, t.y);
     simd::unpack_halves(gather(words, index + Int(1)), t.z, t.w);
@@ -158,7 +154,7 @@ struct Rgba16f {
 
 struct Rgba16 {
   static constexpr int kWords = 2;
-  LUXEL_TEXTURE_INLINE static Float4 fetch(const int32_t* words, const Int& index) {
+  LUXEL_INLINE static Float4 fetch(const int32_t* words, const Int& index) {
     const Int rg = gather(words, index), ba = gather(words, index + Int(1)), low(0xffff);
     return {to_float(rg & low), to_float((rg >> 16) & low), to_float(ba & low), to_float((ba >> 16) & low)};
   }
@@ -171,7 +167,7 @@ struct Rgba16 {
 
 struct R32f {
   static constexpr int kWords = 1;
-  LUXEL_TEXTURE_INLINE static Float4 fetch(const int32_t* words, const Int& index) {
+  LUXEL_INLINE static Float4 fetch(const int32_t* words, const Int& index) {
     const Float one(1.0f);
     return {gather(reinterpret_cast<const float*>(words), index), one, one, one};
   }
@@ -196,7 +192,7 @@ struct Level {
   Int offset;  ///< first word of the level within a face
 };
 
-LUXEL_TEXTURE_INLINE Level level_geometry(const Texture& t, const Int& level) {
+LUXEL_INLINE Level level_geometry(const Texture& t, const Int& level) {
   alignas(64) int32_t l[kLanes];
   level.store_aligned(l);
   Level g;
@@ -221,7 +217,7 @@ LUXEL_TEXTURE_INLINE Level level_geometry(const Texture& t, const Int& level) {
 // --- Addressing -------------------------------------------------------------------------------
 
 /// One period of the coordinate (see texture.hpp); NaN -> 0.
-LUXEL_TEXTURE_INLINE Float reduce(const Float& c, Address mode) {
+LUXEL_INLINE Float reduce(const Float& c, Address mode) {
   const Float zero(0.0f);
   Float x = xsimd::select(xsimd::isnan(c), zero, c);
   switch (mode) {
@@ -237,7 +233,7 @@ LUXEL_TEXTURE_INLINE Float reduce(const Float& c, Address mode) {
 
 /// Texel index along an axis of n texels. The reduced coordinate bounds i to [-1, n] under Wrap,
 /// [-1, 2n] under Mirror; Border sets `outside` and clamps (so every read stays in the level).
-LUXEL_TEXTURE_INLINE Int address(Int i, const Int& n, Address mode, IntMask& outside) {
+LUXEL_INLINE Int address(Int i, const Int& n, Address mode, IntMask& outside) {
   const Int zero(0), one(1);
   switch (mode) {
     case Address::Wrap: {
@@ -268,7 +264,7 @@ struct LinearAxis {
   IntMask outside0 = IntMask(false), outside1 = IntMask(false);  ///< set by Border only
 };
 
-LUXEL_TEXTURE_INLINE LinearAxis linear_axis(const Float& c, const Int& n, const Float& fn, Address mode) {
+LUXEL_INLINE LinearAxis linear_axis(const Float& c, const Int& n, const Float& fn, Address mode) {
   const Float x = c * fn - Float(0.5f);
   const Float first = xsimd::floor(x);
   LinearAxis a;
@@ -279,18 +275,18 @@ LUXEL_TEXTURE_INLINE LinearAxis linear_axis(const Float& c, const Int& n, const 
   return a;
 }
 
-LUXEL_TEXTURE_INLINE Int point_axis(const Float& c, const Int& n, const Float& fn, Address mode,
+LUXEL_INLINE Int point_axis(const Float& c, const Int& n, const Float& fn, Address mode,
                                     IntMask& outside) {
   return address(to_int(xsimd::floor(c * fn)), n, mode, outside);
 }
 
 template <class Format>
-LUXEL_TEXTURE_INLINE Int word_index(const Int& offset, const Int& texel) {
+LUXEL_INLINE Int word_index(const Int& offset, const Int& texel) {
   return Format::kWords == 1 ? offset + texel : offset + (texel << 1);
 }
 
 /// Replaces the lanes of `t` outside the level with the border color.
-LUXEL_TEXTURE_INLINE void apply_border(const Context& ctx, const IntMask& outside, Float4& t) {
+LUXEL_INLINE void apply_border(const Context& ctx, const IntMask& outside, Float4& t) {
   if (xsimd::any(outside)) t = select(float_mask(outside), ctx.border, t);
 }
 
@@ -396,7 +392,7 @@ struct CubeCoords {
   Float u, v;
 };
 
-LUXEL_TEXTURE_INLINE CubeCoords project_to_faces(const TexCoord& d) {
+LUXEL_INLINE CubeCoords project_to_faces(const TexCoord& d) {
   const Float ax = xsimd::abs(d.x), ay = xsimd::abs(d.y), az = xsimd::abs(d.z);
   const FloatMask on_z = (az >= ax) & (az >= ay);
   const FloatMask on_y = (!on_z) & (ay >= ax);

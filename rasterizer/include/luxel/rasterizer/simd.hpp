@@ -17,6 +17,18 @@
 #include <immintrin.h>
 #endif
 
+/// Forces inlining of the small functions per-pixel work is made of (the lane language, texture
+/// filtering, the stamp path), as Mitsuba's and Enoki's ENOKI_INLINE does: in a translation unit
+/// that instantiates many shaders, GCC's unit-growth limits otherwise leave them out of line,
+/// which made SIMD shaders up to 10x slower. Sanitizer builds leave inlining to the compiler:
+/// there, forced inlining of instrumented code multiplied compile times (over 10 minutes for one
+/// file) and buys nothing.
+#if defined(LUXEL_SANITIZE_BUILD)
+#define LUXEL_INLINE inline
+#else
+#define LUXEL_INLINE [[gnu::always_inline]] inline
+#endif
+
 namespace luxel::rasterizer::simd {
 
 using Arch = xsimd::default_arch;

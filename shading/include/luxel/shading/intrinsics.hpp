@@ -59,31 +59,31 @@ namespace detail::math {
 // differ on a denormal operand (minps flushes it, a blend passes its bits). Adding +0 flushes it
 // in both (and turns -0 into +0 in both), so the lanes agree whatever instructions were chosen.
 template <NumericLane L>
-LUXEL_LANE_INLINE L min(const L& a, const L& b) {
+LUXEL_INLINE L min(const L& a, const L& b) {
   return lane::select(a < b, a, b) + L(0.0f);
 }
 template <NumericLane L>
-LUXEL_LANE_INLINE L max(const L& a, const L& b) {
+LUXEL_INLINE L max(const L& a, const L& b) {
   return lane::select(a > b, a, b) + L(0.0f);
 }
 template <NumericLane L>
-LUXEL_LANE_INLINE L saturate(const L& x) {
+LUXEL_INLINE L saturate(const L& x) {
   return min(max(x, L(0.0f)), L(1.0f));
 }
 template <NumericLane L>
-LUXEL_LANE_INLINE L frac(const L& x) {
+LUXEL_INLINE L frac(const L& x) {
   return x - lane::floor(x);
 }
 template <NumericLane L>
-LUXEL_LANE_INLINE L rcp(const L& x) {
+LUXEL_INLINE L rcp(const L& x) {
   return L(1.0f) / x;
 }
 template <NumericLane L>
-LUXEL_LANE_INLINE L rsqrt(const L& x) {
+LUXEL_INLINE L rsqrt(const L& x) {
   return L(1.0f) / lane::sqrt(lane::abs(x));
 }
 template <NumericLane L>
-LUXEL_LANE_INLINE L sqrt(const L& x) {
+LUXEL_INLINE L sqrt(const L& x) {
   return lane::sqrt(lane::abs(x));
 }
 
@@ -92,7 +92,7 @@ LUXEL_LANE_INLINE L sqrt(const L& x) {
 /// the exponent bits in two halves so that 2^n for n in [-151, 129] never leaves the normal range
 /// before the final product, which rounds once (to a denormal, 0 or +inf where it must).
 template <NumericLane L>
-LUXEL_LANE_INLINE L exp2(const L& x) {
+LUXEL_INLINE L exp2(const L& x) {
   using I = typename LaneTraits<L>::Int;
   const L clamped = min(max(x, L(-151.0f)), L(129.0f));
   const L n = lane::round_even(clamped);
@@ -116,7 +116,7 @@ LUXEL_LANE_INLINE L exp2(const L& x) {
 /// t = (m - 1) / (m + 1), |t| <= 0.1716, by its series up to t^9 (truncation error 2e-9 relative).
 /// Denormal inputs are scaled by 2^23 first. log2(0) = -FLT_MAX as the DX9 log instruction.
 template <NumericLane L>
-LUXEL_LANE_INLINE L log2(const L& x) {
+LUXEL_INLINE L log2(const L& x) {
   using I = typename LaneTraits<L>::Int;
   const L ax = lane::abs(x);
   const auto tiny = ax < L(FLT_MIN);
@@ -143,7 +143,7 @@ LUXEL_LANE_INLINE L log2(const L& x) {
 /// sin(2 pi u) for |u| <= 1/4: u P(u^2), P of degree 5 interpolating at the Chebyshev nodes
 /// (error 3e-11 before rounding).
 template <NumericLane L>
-LUXEL_LANE_INLINE L sin_turns(const L& u) {
+LUXEL_INLINE L sin_turns(const L& u) {
   const L w = u * u;
   L p = L(-14.393966340619201f);
   p = p * w + L(42.009779310595135f);
@@ -158,7 +158,7 @@ LUXEL_LANE_INLINE L sin_turns(const L& u) {
 /// frac(x / 2 pi + 1/2); both from one polynomial by symmetry (sin(pi - a) = sin(a),
 /// cos(a) = sin(pi / 2 - |a|)).
 template <NumericLane L>
-LUXEL_LANE_INLINE void sincos_reduced(const L& r, L& s, L& c) {
+LUXEL_INLINE void sincos_reduced(const L& r, L& s, L& c) {
   const L t = r - L(0.5f);
   const L at = lane::abs(t);
   const L folded = lane::select(t < L(0.0f), L(-0.5f), L(0.5f)) - t;
@@ -173,60 +173,60 @@ namespace detail {
 template <counted::Op op, class Kernel>
 struct LanewiseIntrinsic {
   template <ShaderValue T>
-  LUXEL_LANE_INLINE auto operator()(const T& x) const {
+  LUXEL_INLINE auto operator()(const T& x) const {
     return lanewise<op>([](const auto& v) { return Kernel{}(v); }, x);
   }
 };
 
 struct SaturateKernel {
   template <class L>
-  LUXEL_LANE_INLINE L operator()(const L& x) const { return math::saturate(x); }
+  LUXEL_INLINE L operator()(const L& x) const { return math::saturate(x); }
 };
 struct FracKernel {
   template <class L>
-  LUXEL_LANE_INLINE L operator()(const L& x) const { return math::frac(x); }
+  LUXEL_INLINE L operator()(const L& x) const { return math::frac(x); }
 };
 struct FloorKernel {
   template <class L>
-  LUXEL_LANE_INLINE L operator()(const L& x) const { return lane::floor(x); }
+  LUXEL_INLINE L operator()(const L& x) const { return lane::floor(x); }
 };
 struct RcpKernel {
   template <class L>
-  LUXEL_LANE_INLINE L operator()(const L& x) const { return math::rcp(x); }
+  LUXEL_INLINE L operator()(const L& x) const { return math::rcp(x); }
 };
 struct RsqrtKernel {
   template <class L>
-  LUXEL_LANE_INLINE L operator()(const L& x) const { return math::rsqrt(x); }
+  LUXEL_INLINE L operator()(const L& x) const { return math::rsqrt(x); }
 };
 struct SqrtKernel {
   template <class L>
-  LUXEL_LANE_INLINE L operator()(const L& x) const { return math::sqrt(x); }
+  LUXEL_INLINE L operator()(const L& x) const { return math::sqrt(x); }
 };
 struct Exp2Kernel {
   template <class L>
-  LUXEL_LANE_INLINE L operator()(const L& x) const { return math::exp2(x); }
+  LUXEL_INLINE L operator()(const L& x) const { return math::exp2(x); }
 };
 struct Log2Kernel {
   template <class L>
-  LUXEL_LANE_INLINE L operator()(const L& x) const { return math::log2(x); }
+  LUXEL_INLINE L operator()(const L& x) const { return math::log2(x); }
 };
 
 struct MinFn {
   template <class A, class B>
-  LUXEL_LANE_INLINE auto operator()(const A& a, const B& b) const {
+  LUXEL_INLINE auto operator()(const A& a, const B& b) const {
     return lanewise<counted::Op::min>([](const auto& x, const auto& y) { return math::min(x, y); }, a, b);
   }
 };
 struct MaxFn {
   template <class A, class B>
-  LUXEL_LANE_INLINE auto operator()(const A& a, const B& b) const {
+  LUXEL_INLINE auto operator()(const A& a, const B& b) const {
     return lanewise<counted::Op::max>([](const auto& x, const auto& y) { return math::max(x, y); }, a, b);
   }
 };
 
 struct AbsFn {
   template <ShaderValue T>
-  LUXEL_LANE_INLINE T operator()(const T& x) const {
+  LUXEL_INLINE T operator()(const T& x) const {
     using L = lane_of<T>;
     if constexpr (kIsCounted<L>) {
       if (counted::active_model().abs_modifier) {  // the free _abs source modifier
@@ -247,7 +247,7 @@ struct AbsFn {
 
 struct DotFn {
   template <Lane L, int N>
-  LUXEL_LANE_INLINE L operator()(const Vec<L, N>& a, const Vec<L, N>& b) const {
+  LUXEL_INLINE L operator()(const Vec<L, N>& a, const Vec<L, N>& b) const {
     if constexpr (kIsCounted<L>) {
       std::array<counted::Ref, 2 * N> refs;
       counted_refs<N>(a, refs.data());
@@ -263,7 +263,7 @@ struct DotFn {
 
 struct NormalizeFn {
   template <Lane L, int N>
-  LUXEL_LANE_INLINE Vec<L, N> operator()(const Vec<L, N>& v) const {
+  LUXEL_INLINE Vec<L, N> operator()(const Vec<L, N>& v) const {
     if constexpr (kIsCounted<L>) {
       std::array<counted::Ref, N> refs;
       counted_refs<N>(v, refs.data());
@@ -279,7 +279,7 @@ struct NormalizeFn {
 struct SelectFn {
   /// mask ? a : b per lane (and per component for vector masks).
   template <class M, class A, class B>
-  LUXEL_LANE_INLINE auto operator()(const M& m, const A& a, const B& b) const {
+  LUXEL_INLINE auto operator()(const M& m, const A& a, const B& b) const {
     using L = lane_of<M, A, B>;
     constexpr int N = kWidth<M, A, B>;
     constexpr bool kVec = kAnyVec<A, B> || Shape<M>::boolvec;
@@ -332,39 +332,39 @@ namespace detail {
 
 struct PowFn {
   template <class A, class B>
-  LUXEL_LANE_INLINE auto operator()(const A& x, const B& y) const {
+  LUXEL_INLINE auto operator()(const A& x, const B& y) const {
     return shading::exp2(y * shading::log2(x));
   }
 };
 struct LerpFn {
   /// a + (b - a) * t (HLSL's definition; lrp's 2 slots on Counted as add + mad).
   template <class A, class B, class T>
-  LUXEL_LANE_INLINE auto operator()(const A& a, const B& b, const T& t) const {
+  LUXEL_INLINE auto operator()(const A& a, const B& b, const T& t) const {
     return a + (b - a) * t;
   }
 };
 struct LengthFn {
   template <Lane L, int N>
-  LUXEL_LANE_INLINE L operator()(const Vec<L, N>& v) const {
+  LUXEL_INLINE L operator()(const Vec<L, N>& v) const {
     return shading::sqrt(shading::dot(v, v));
   }
 };
 struct DistanceFn {
   template <Lane L, int N>
-  LUXEL_LANE_INLINE L operator()(const Vec<L, N>& a, const Vec<L, N>& b) const {
+  LUXEL_INLINE L operator()(const Vec<L, N>& a, const Vec<L, N>& b) const {
     return LengthFn{}(a - b);
   }
 };
 struct CrossFn {
   template <Lane L>
-  LUXEL_LANE_INLINE Vec<L, 3> operator()(const Vec<L, 3>& a, const Vec<L, 3>& b) const {
+  LUXEL_INLINE Vec<L, 3> operator()(const Vec<L, 3>& a, const Vec<L, 3>& b) const {
     return a.yzx() * b.zxy() - a.zxy() * b.yzx();
   }
 };
 struct StepFn {
   /// x >= edge ? 1 : 0.
   template <class E, class X>
-  LUXEL_LANE_INLINE auto operator()(const E& edge, const X& x) const {
+  LUXEL_INLINE auto operator()(const E& edge, const X& x) const {
     using L = lane_of<E, X>;
     if constexpr (Shape<X>::vec || Shape<E>::vec) {
       return shading::select(x >= edge, 1.0f, 0.0f);
@@ -375,7 +375,7 @@ struct StepFn {
 };
 struct ClampFn {
   template <class X, class A, class B>
-  LUXEL_LANE_INLINE auto operator()(const X& x, const A& lo, const B& hi) const {
+  LUXEL_INLINE auto operator()(const X& x, const A& lo, const B& hi) const {
     if constexpr (std::is_arithmetic_v<A> && std::is_arithmetic_v<B>) {
       if (lo == 0 && hi == 1) return shading::saturate(x);
     }
@@ -385,7 +385,7 @@ struct ClampFn {
 struct SmoothstepFn {
   /// t = saturate((x - a) / (b - a)); t * t * (3 - 2 t).
   template <class A, class B, class X>
-  LUXEL_LANE_INLINE auto operator()(const A& a, const B& b, const X& x) const {
+  LUXEL_INLINE auto operator()(const A& a, const B& b, const X& x) const {
     const auto t = shading::saturate((x - a) / (b - a));
     return t * t * (3.0f - 2.0f * t);
   }
@@ -393,7 +393,7 @@ struct SmoothstepFn {
 struct ReflectFn {
   /// i - 2 dot(n, i) n.
   template <Lane L, int N>
-  LUXEL_LANE_INLINE Vec<L, N> operator()(const Vec<L, N>& i, const Vec<L, N>& n) const {
+  LUXEL_INLINE Vec<L, N> operator()(const Vec<L, N>& i, const Vec<L, N>& n) const {
     return i - (L(2.0f) * shading::dot(n, i)) * n;
   }
 };
@@ -403,7 +403,7 @@ struct SinCosFn {
   /// instruction (which wants [-pi, pi]): r = frac(x / 2 pi + 1/2), a mad and a frc; then
   /// sincos (8 slots per component) with the mad back to radians.
   template <ShaderValue T>
-  LUXEL_LANE_INLINE void operator()(const T& x, T& s, T& c) const {
+  LUXEL_INLINE void operator()(const T& x, T& s, T& c) const {
     using L = lane_of<T>;
     constexpr int N = Shape<T>::width;
     const T reduced = shading::frac(x * 0.159154943f + 0.5f);
@@ -430,7 +430,7 @@ struct SinCosFn {
 
 struct SinFn {
   template <ShaderValue T>
-  LUXEL_LANE_INLINE T operator()(const T& x) const {
+  LUXEL_INLINE T operator()(const T& x) const {
     T s, c;
     SinCosFn{}(x, s, c);
     return s;
@@ -438,7 +438,7 @@ struct SinFn {
 };
 struct CosFn {
   template <ShaderValue T>
-  LUXEL_LANE_INLINE T operator()(const T& x) const {
+  LUXEL_INLINE T operator()(const T& x) const {
     T s, c;
     SinCosFn{}(x, s, c);
     return c;
@@ -449,7 +449,7 @@ struct ClipFn {
   /// HLSL's clip(x): the lanes to discard (any component < 0), for PixelOutput::discard. On
   /// Counted a texkill (one texture slot), kept although no output reads it.
   template <ShaderValue T>
-  LUXEL_LANE_INLINE Mask<lane_of<T>> operator()(const T& x) const {
+  LUXEL_INLINE Mask<lane_of<T>> operator()(const T& x) const {
     using L = lane_of<T>;
     constexpr int N = Shape<T>::width;
     if constexpr (kIsCounted<L>) {

@@ -21,12 +21,6 @@
 #include <cstdint>
 #include <type_traits>
 
-/// Every lane-level function of the shading language (vector.hpp, intrinsics.hpp, lane.hpp) is
-/// forced inline, as Mitsuba's and Enoki's are: a shader is hundreds of these calls, and in a
-/// translation unit that instantiates many shaders GCC's unit-growth limits otherwise leave
-/// them out of line, which multiplied the SIMD lane's time per pixel by up to 10x.
-#define LUXEL_LANE_INLINE [[gnu::always_inline]] inline
-
 namespace luxel::shading {
 
 namespace simd = rasterizer::simd;
@@ -67,41 +61,41 @@ concept NumericLane = std::is_same_v<L, float> || std::is_same_v<L, simd::Float>
 /// Primitives of the numeric lanes. Same names, same IEEE results, per lane.
 namespace lane {
 
-LUXEL_LANE_INLINE float select(bool m, float a, float b) { return m ? a : b; }
-LUXEL_LANE_INLINE simd::Float select(const simd::FloatMask& m, const simd::Float& a, const simd::Float& b) {
+LUXEL_INLINE float select(bool m, float a, float b) { return m ? a : b; }
+LUXEL_INLINE simd::Float select(const simd::FloatMask& m, const simd::Float& a, const simd::Float& b) {
   return xsimd::select(m, a, b);
 }
-LUXEL_LANE_INLINE int32_t select(bool m, int32_t a, int32_t b) { return m ? a : b; }
+LUXEL_INLINE int32_t select(bool m, int32_t a, int32_t b) { return m ? a : b; }
 
-LUXEL_LANE_INLINE float sqrt(float x) { return std::sqrt(x); }
-LUXEL_LANE_INLINE simd::Float sqrt(const simd::Float& x) { return xsimd::sqrt(x); }
+LUXEL_INLINE float sqrt(float x) { return std::sqrt(x); }
+LUXEL_INLINE simd::Float sqrt(const simd::Float& x) { return xsimd::sqrt(x); }
 
-LUXEL_LANE_INLINE float floor(float x) { return std::floor(x); }
-LUXEL_LANE_INLINE simd::Float floor(const simd::Float& x) { return xsimd::floor(x); }
+LUXEL_INLINE float floor(float x) { return std::floor(x); }
+LUXEL_INLINE simd::Float floor(const simd::Float& x) { return xsimd::floor(x); }
 
 /// Round to nearest, ties to even (the default rounding mode of both lanes).
-LUXEL_LANE_INLINE float round_even(float x) { return std::nearbyint(x); }
-LUXEL_LANE_INLINE simd::Float round_even(const simd::Float& x) { return xsimd::nearbyint(x); }
+LUXEL_INLINE float round_even(float x) { return std::nearbyint(x); }
+LUXEL_INLINE simd::Float round_even(const simd::Float& x) { return xsimd::nearbyint(x); }
 
 /// |x| by clearing the sign bit (NaN stays NaN).
-LUXEL_LANE_INLINE float abs(float x) { return std::fabs(x); }
-LUXEL_LANE_INLINE simd::Float abs(const simd::Float& x) { return xsimd::abs(x); }
+LUXEL_INLINE float abs(float x) { return std::fabs(x); }
+LUXEL_INLINE simd::Float abs(const simd::Float& x) { return xsimd::abs(x); }
 
 /// NaN test. Not `x != x`: xsimd 8's != on batches is the ordered compare (NaN != NaN is false).
-LUXEL_LANE_INLINE bool is_nan(float x) { return std::isnan(x); }
-LUXEL_LANE_INLINE simd::FloatMask is_nan(const simd::Float& x) { return xsimd::isnan(x); }
+LUXEL_INLINE bool is_nan(float x) { return std::isnan(x); }
+LUXEL_INLINE simd::FloatMask is_nan(const simd::Float& x) { return xsimd::isnan(x); }
 
 /// The IEEE bits of x, and back.
-LUXEL_LANE_INLINE int32_t bits(float x) { return std::bit_cast<int32_t>(x); }
-LUXEL_LANE_INLINE simd::Int bits(const simd::Float& x) { return xsimd::bitwise_cast<simd::Int>(x); }
-LUXEL_LANE_INLINE float from_bits(int32_t b) { return std::bit_cast<float>(b); }
-LUXEL_LANE_INLINE simd::Float from_bits(const simd::Int& b) { return xsimd::bitwise_cast<simd::Float>(b); }
+LUXEL_INLINE int32_t bits(float x) { return std::bit_cast<int32_t>(x); }
+LUXEL_INLINE simd::Int bits(const simd::Float& x) { return xsimd::bitwise_cast<simd::Int>(x); }
+LUXEL_INLINE float from_bits(int32_t b) { return std::bit_cast<float>(b); }
+LUXEL_INLINE simd::Float from_bits(const simd::Int& b) { return xsimd::bitwise_cast<simd::Float>(b); }
 
 /// Conversions between float and int lanes; `to_int_exact` expects an integral value.
-LUXEL_LANE_INLINE float to_float(int32_t i) { return static_cast<float>(i); }
-LUXEL_LANE_INLINE simd::Float to_float(const simd::Int& i) { return xsimd::to_float(i); }
-LUXEL_LANE_INLINE int32_t to_int_exact(float x) { return static_cast<int32_t>(x); }
-LUXEL_LANE_INLINE simd::Int to_int_exact(const simd::Float& x) { return xsimd::to_int(x); }
+LUXEL_INLINE float to_float(int32_t i) { return static_cast<float>(i); }
+LUXEL_INLINE simd::Float to_float(const simd::Int& i) { return xsimd::to_float(i); }
+LUXEL_INLINE int32_t to_int_exact(float x) { return static_cast<int32_t>(x); }
+LUXEL_INLINE simd::Int to_int_exact(const simd::Float& x) { return xsimd::to_int(x); }
 
 }  // namespace lane
 }  // namespace luxel::shading

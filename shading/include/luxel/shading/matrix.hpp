@@ -34,7 +34,7 @@ template <Lane L>
 using float4x4 = Mat<L, 4, 4>;
 
 template <Lane L, int R, int C>
-LUXEL_LANE_INLINE Mat<L, C, R> transpose(const Mat<L, R, C>& m) {
+LUXEL_INLINE Mat<L, C, R> transpose(const Mat<L, R, C>& m) {
   Mat<L, C, R> t;
   for (int r = 0; r < R; ++r)
     for (int c = 0; c < C; ++c) t[c][r] = m[r][c];
@@ -45,14 +45,14 @@ namespace detail {
 struct MulFn {
   /// Matrix times column vector: one dot product per row.
   template <Lane L, int R, int C>
-  LUXEL_LANE_INLINE Vec<L, R> operator()(const Mat<L, R, C>& m, const Vec<L, C>& v) const {
+  LUXEL_INLINE Vec<L, R> operator()(const Mat<L, R, C>& m, const Vec<L, C>& v) const {
     Vec<L, R> r;
     for (int i = 0; i < R; ++i) r[i] = shading::dot(m[i], v);
     return r;
   }
   /// Row vector times matrix: a mul then one mad per further row.
   template <Lane L, int R, int C>
-  LUXEL_LANE_INLINE Vec<L, C> operator()(const Vec<L, R>& v, const Mat<L, R, C>& m) const {
+  LUXEL_INLINE Vec<L, C> operator()(const Vec<L, R>& v, const Mat<L, R, C>& m) const {
     Vec<L, C> r = v[0] * m[0];
     for (int i = 1; i < R; ++i) r = r + v[i] * m[i];
     return r;

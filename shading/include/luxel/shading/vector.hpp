@@ -123,7 +123,7 @@ concept Operand = std::is_arithmetic_v<T> || std::is_same_v<T, L> || std::is_sam
 
 /// Component i of an operand, as a lane value (literals converted, scalars broadcast).
 template <class L, class T>
-LUXEL_LANE_INLINE L component(const T& t, int i) {
+LUXEL_INLINE L component(const T& t, int i) {
   if constexpr (Shape<T>::vec) {
     return t[i];
   } else if constexpr (std::is_arithmetic_v<T>) {
@@ -133,7 +133,7 @@ LUXEL_LANE_INLINE L component(const T& t, int i) {
   }
 }
 template <class L, class T>
-LUXEL_LANE_INLINE Mask<L> mask_component(const T& t, int i) {
+LUXEL_INLINE Mask<L> mask_component(const T& t, int i) {
   if constexpr (Shape<T>::boolvec) {
     return t[i];
   } else {
@@ -143,7 +143,7 @@ LUXEL_LANE_INLINE Mask<L> mask_component(const T& t, int i) {
 
 /// The N references an operand contributes to a Counted instruction.
 template <int N, class T>
-LUXEL_LANE_INLINE void counted_refs(const T& t, counted::Ref* out) {
+LUXEL_INLINE void counted_refs(const T& t, counted::Ref* out) {
   if constexpr (Shape<T>::vec || Shape<T>::boolvec) {
     for (int i = 0; i < N; ++i) out[i] = t[i].ref;
   } else if constexpr (std::is_arithmetic_v<T>) {
@@ -157,7 +157,7 @@ LUXEL_LANE_INLINE void counted_refs(const T& t, counted::Ref* out) {
 /// A Counted vector from N references (no literal nodes made on the way, unlike Vec's default
 /// constructor).
 template <int N>
-LUXEL_LANE_INLINE Vec<Counted, N> counted_vec(const counted::Ref* r) {
+LUXEL_INLINE Vec<Counted, N> counted_vec(const counted::Ref* r) {
   if constexpr (N == 2) {
     return Vec<Counted, 2>(Counted(r[0]), Counted(r[1]));
   } else if constexpr (N == 3) {
@@ -169,7 +169,7 @@ LUXEL_LANE_INLINE Vec<Counted, N> counted_vec(const counted::Ref* r) {
 
 /// The value (a vector of width N, or a scalar) made of the components of Counted node `node`.
 template <int N, bool kVec>
-LUXEL_LANE_INLINE auto counted_result(uint32_t node) {
+LUXEL_INLINE auto counted_result(uint32_t node) {
   std::array<counted::Ref, N> refs;
   for (int i = 0; i < N; ++i) refs[i] = counted::Ref{node, static_cast<uint8_t>(i), 0};
   if constexpr (kVec) {
@@ -182,7 +182,7 @@ LUXEL_LANE_INLINE auto counted_result(uint32_t node) {
 /// One component-wise operation. On the numeric lanes: f applied per component. On Counted: one
 /// instruction `op` of the operation's width.
 template <counted::Op op, class F, class... Args>
-LUXEL_LANE_INLINE auto lanewise(F&& f, const Args&... args) {
+LUXEL_INLINE auto lanewise(F&& f, const Args&... args) {
   using L = lane_of<Args...>;
   constexpr int N = kWidth<Args...>;
   constexpr bool kVec = kAnyVec<Args...>;
@@ -210,7 +210,7 @@ LUXEL_LANE_INLINE auto lanewise(F&& f, const Args&... args) {
 
 /// Component-wise comparison, giving masks.
 template <counted::Comparison c, class F, class A, class B>
-LUXEL_LANE_INLINE auto compare(F&& f, const A& a, const B& b) {
+LUXEL_INLINE auto compare(F&& f, const A& a, const B& b) {
   using L = lane_of<A, B>;
   constexpr int N = kWidth<A, B>;
   static_assert(Operand<A, L, N> && Operand<B, L, N>, "operands must share one lane type and width");
@@ -233,19 +233,19 @@ LUXEL_LANE_INLINE auto compare(F&& f, const A& a, const B& b) {
 
 struct Plus {
   template <class T>
-  LUXEL_LANE_INLINE T operator()(const T& a, const T& b) const { return a + b; }
+  LUXEL_INLINE T operator()(const T& a, const T& b) const { return a + b; }
 };
 struct Minus {
   template <class T>
-  LUXEL_LANE_INLINE T operator()(const T& a, const T& b) const { return a - b; }
+  LUXEL_INLINE T operator()(const T& a, const T& b) const { return a - b; }
 };
 struct Times {
   template <class T>
-  LUXEL_LANE_INLINE T operator()(const T& a, const T& b) const { return a * b; }
+  LUXEL_INLINE T operator()(const T& a, const T& b) const { return a * b; }
 };
 struct Divide {
   template <class T>
-  LUXEL_LANE_INLINE T operator()(const T& a, const T& b) const { return a / b; }
+  LUXEL_INLINE T operator()(const T& a, const T& b) const { return a / b; }
 };
 
 /// Shared members of float2..float4: swizzles and color-name accessors.
@@ -332,18 +332,18 @@ concept VecOperands = (Shape<A>::vec || Shape<B>::vec) &&
 
 template <class A, class B>
   requires detail::VecOperands<A, B>
-LUXEL_LANE_INLINE auto operator+(const A& a, const B& b) {
+LUXEL_INLINE auto operator+(const A& a, const B& b) {
   return detail::lanewise<counted::Op::add>(detail::Plus{}, a, b);
 }
 template <Lane L, int N>
-LUXEL_LANE_INLINE Vec<L, N> operator-(const Vec<L, N>& a) {
+LUXEL_INLINE Vec<L, N> operator-(const Vec<L, N>& a) {
   Vec<L, N> r = a;
   for (int i = 0; i < N; ++i) r[i] = -a[i];  // Counted: a free negate modifier per component
   return r;
 }
 template <class A, class B>
   requires detail::VecOperands<A, B>
-LUXEL_LANE_INLINE auto operator-(const A& a, const B& b) {
+LUXEL_INLINE auto operator-(const A& a, const B& b) {
   using L = detail::lane_of<A, B>;
   if constexpr (kIsCounted<L>) {
     if constexpr (std::is_arithmetic_v<B>) {
@@ -357,36 +357,36 @@ LUXEL_LANE_INLINE auto operator-(const A& a, const B& b) {
 }
 template <class A, class B>
   requires detail::VecOperands<A, B>
-LUXEL_LANE_INLINE auto operator*(const A& a, const B& b) {
+LUXEL_INLINE auto operator*(const A& a, const B& b) {
   return detail::lanewise<counted::Op::mul>(detail::Times{}, a, b);
 }
 template <class A, class B>
   requires detail::VecOperands<A, B>
-LUXEL_LANE_INLINE auto operator/(const A& a, const B& b) {
+LUXEL_INLINE auto operator/(const A& a, const B& b) {
   return detail::lanewise<counted::Op::div>(detail::Divide{}, a, b);
 }
 
 /// v.swizzle<I...>() as a free function, which template code can call without `template`:
 /// swizzle<2, 1, 0>(v) is HLSL's v.zyx.
 template <int... I, Lane L, int N>
-LUXEL_LANE_INLINE auto swizzle(const Vec<L, N>& v) {
+LUXEL_INLINE auto swizzle(const Vec<L, N>& v) {
   return v.template swizzle<I...>();
 }
 
 template <Lane L, int N, class B>
-LUXEL_LANE_INLINE Vec<L, N>& operator+=(Vec<L, N>& a, const B& b) { return a = a + b; }
+LUXEL_INLINE Vec<L, N>& operator+=(Vec<L, N>& a, const B& b) { return a = a + b; }
 template <Lane L, int N, class B>
-LUXEL_LANE_INLINE Vec<L, N>& operator-=(Vec<L, N>& a, const B& b) { return a = a - b; }
+LUXEL_INLINE Vec<L, N>& operator-=(Vec<L, N>& a, const B& b) { return a = a - b; }
 template <Lane L, int N, class B>
-LUXEL_LANE_INLINE Vec<L, N>& operator*=(Vec<L, N>& a, const B& b) { return a = a * b; }
+LUXEL_INLINE Vec<L, N>& operator*=(Vec<L, N>& a, const B& b) { return a = a * b; }
 template <Lane L, int N, class B>
-LUXEL_LANE_INLINE Vec<L, N>& operator/=(Vec<L, N>& a, const B& b) { return a = a / b; }
+LUXEL_INLINE Vec<L, N>& operator/=(Vec<L, N>& a, const B& b) { return a = a / b; }
 
 // `!=` is !(==) per component: IEEE's unordered not-equal on both lanes (see lane.hpp).
 #define LUXEL_SHADING_COMPARISON(OP, KIND, EXPR)                                                     \
   template <class A, class B>                                                                        \
     requires detail::VecOperands<A, B>                                                               \
-  LUXEL_LANE_INLINE auto operator OP(const A& a, const B& b) {                                                  \
+  LUXEL_INLINE auto operator OP(const A& a, const B& b) {                                                  \
     return detail::compare<counted::Comparison::KIND>([](const auto& x, const auto& y) { return EXPR; }, a, b); \
   }
 LUXEL_SHADING_COMPARISON(>=, ge, x >= y)
@@ -398,19 +398,19 @@ LUXEL_SHADING_COMPARISON(!=, ne, !(x == y))
 #undef LUXEL_SHADING_COMPARISON
 
 template <Lane L, int N>
-LUXEL_LANE_INLINE BoolVec<L, N> operator!(const BoolVec<L, N>& m) {
+LUXEL_INLINE BoolVec<L, N> operator!(const BoolVec<L, N>& m) {
   BoolVec<L, N> r = m;
   for (int i = 0; i < N; ++i) r[i] = !m[i];
   return r;
 }
 template <Lane L, int N>
-LUXEL_LANE_INLINE BoolVec<L, N> operator&&(const BoolVec<L, N>& a, const BoolVec<L, N>& b) {
+LUXEL_INLINE BoolVec<L, N> operator&&(const BoolVec<L, N>& a, const BoolVec<L, N>& b) {
   BoolVec<L, N> r = a;
   for (int i = 0; i < N; ++i) r[i] = a[i] && b[i];
   return r;
 }
 template <Lane L, int N>
-LUXEL_LANE_INLINE BoolVec<L, N> operator||(const BoolVec<L, N>& a, const BoolVec<L, N>& b) {
+LUXEL_INLINE BoolVec<L, N> operator||(const BoolVec<L, N>& a, const BoolVec<L, N>& b) {
   BoolVec<L, N> r = a;
   for (int i = 0; i < N; ++i) r[i] = a[i] || b[i];
   return r;

@@ -11,9 +11,6 @@
 #include <stdexcept>
 #include <vector>
 
-/// The per-stamp helpers of shade_stamp: inlined, so that a stamp's lanes stay in registers.
-#define LUXEL_STAMP_INLINE [[gnu::always_inline]] inline
-
 namespace luxel::rasterizer::detail {
 
 /// Everything about a draw the tile rasterizer needs, decided once per draw.
@@ -118,15 +115,15 @@ class TileRasterizer {
   }
   /// The pixel functor's interpolants at the pixel centers (cx, cy relative to vertex 0),
   /// perspective-correct.
-  LUXEL_STAMP_INLINE void interpolate(const TriangleSetup& t, const Float& cx, const Float& cy, PixelInput<N>& in);
+  LUXEL_INLINE void interpolate(const TriangleSetup& t, const Float& cx, const Float& cy, PixelInput<N>& in);
   /// Coverage is carried as one mask per sample: all-ones lanes are covered.
-  LUXEL_STAMP_INLINE void shade_stamp(const TriangleSetup& t, int px, int py, Int* coverage);
+  LUXEL_INLINE void shade_stamp(const TriangleSetup& t, int px, int py, Int* coverage);
   Int depth_stencil_test(const TriangleSetup& t, const Float& dx, const Float& dy, int stamp, int s,
                          const Int& coverage, const Float* shader_depth);
   /// Blending and write masks (plain writes are shade_stamp's).
   void write_color(int stamp, int s, const Int& coverage, const simd::Float4& color, const Int& packed);
   template <CompareFunc kFunc>
-  LUXEL_STAMP_INLINE Int early_depth(const TriangleSetup& t, const Float& dx, const Float& dy, int stamp, Int* coverage);
+  LUXEL_INLINE Int early_depth(const TriangleSetup& t, const Float& dx, const Float& dy, int stamp, Int* coverage);
 
   const DrawPlan& plan_;
   const PS& ps_;
