@@ -3,6 +3,7 @@
 // with the same random inputs, and compare the 8-bit values the output merger would store.
 
 #include "lanes.hpp"
+#include "luxel/rasterizer/texture.hpp"
 #include "luxel/shading/source/common.hpp"
 
 #include <gtest/gtest.h>
@@ -88,6 +89,22 @@ template <Lane L>
 inline float3<L> analytic_env(const float3<L>& r) {
   const float3<L> d = normalize(r);
   return float3<L>(saturate(d.z) * 8.0f + 0.1f, saturate(d.x * 0.5f + 0.5f), saturate(d.y * 0.5f + 0.5f));
+}
+
+/// A 4x4 2D texture of one color, with mips.
+inline rasterizer::Texture uniform_2d(rasterizer::TextureFormat f, const glm::vec4& c) {
+  rasterizer::Texture t = rasterizer::Texture::create_2d(4, 4, f);
+  t.upload(0, std::vector<glm::vec4>(16, c));
+  t.generate_mips();
+  return t;
+}
+
+/// A 4x4 RGBA16F cube map whose face f is (0.1 f, 0.2, 0.3, 1), with mips.
+inline rasterizer::Texture face_colored_cube() {
+  rasterizer::Texture cube = rasterizer::Texture::create_cube(4, rasterizer::TextureFormat::RGBA16F);
+  for (int f = 0; f < 6; ++f) cube.upload(0, std::vector<glm::vec4>(16, glm::vec4(0.1f * f, 0.2f, 0.3f, 1.0f)), f);
+  cube.generate_mips();
+  return cube;
 }
 
 }  // namespace luxel::shading::source::testing

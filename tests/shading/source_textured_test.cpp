@@ -11,22 +11,12 @@
 namespace luxel::shading::source {
 namespace {
 
-rasterizer::Texture uniform_2d(rasterizer::TextureFormat f, const glm::vec4& c) {
-  rasterizer::Texture t = rasterizer::Texture::create_2d(4, 4, f);
-  std::vector<glm::vec4> texels(16, c);
-  t.upload(0, texels);
-  t.generate_mips();
-  return t;
-}
-
 TEST(SourceTextured, LightmappedGenericBumpEnvmapOnBothLanes) {
   using rasterizer::TextureFormat;
-  const rasterizer::Texture base = uniform_2d(TextureFormat::RGBA8_sRGB, glm::vec4(0.5f, 0.25f, 1.0f, 0.0f));
-  const rasterizer::Texture bump = uniform_2d(TextureFormat::RGBA8, glm::vec4(0.5f, 0.5f, 1.0f, 1.0f));
-  const rasterizer::Texture lightmap = uniform_2d(TextureFormat::RGBA16F, glm::vec4(3.0f, 2.0f, 1.0f, 1.0f));
-  rasterizer::Texture cube = rasterizer::Texture::create_cube(4, TextureFormat::RGBA16F);
-  for (int f = 0; f < 6; ++f) cube.upload(0, std::vector<glm::vec4>(16, glm::vec4(0.1f * f, 0.2f, 0.3f, 1.0f)), f);
-  cube.generate_mips();
+  const rasterizer::Texture base = testing::uniform_2d(TextureFormat::RGBA8_sRGB, glm::vec4(0.5f, 0.25f, 1.0f, 0.0f));
+  const rasterizer::Texture bump = testing::uniform_2d(TextureFormat::RGBA8, glm::vec4(0.5f, 0.5f, 1.0f, 1.0f));
+  const rasterizer::Texture lightmap = testing::uniform_2d(TextureFormat::RGBA16F, glm::vec4(3.0f, 2.0f, 1.0f, 1.0f));
+  const rasterizer::Texture cube = testing::face_colored_cube();
   LightmappedGenericParams p;
   p.base.texture = &base;
   p.bump.texture = &bump;
@@ -60,9 +50,9 @@ TEST(SourceTextured, LightmappedGenericBumpEnvmapOnBothLanes) {
 
 TEST(SourceTextured, VertexLitGenericPhongOnBothLanes) {
   using rasterizer::TextureFormat;
-  const rasterizer::Texture base = uniform_2d(TextureFormat::RGBA8_sRGB, glm::vec4(0.8f, 0.6f, 0.4f, 1.0f));
-  const rasterizer::Texture bump = uniform_2d(TextureFormat::RGBA8, glm::vec4(0.5f, 0.5f, 1.0f, 1.0f));
-  const rasterizer::Texture expo = uniform_2d(TextureFormat::RGBA8, glm::vec4(0.2f, 0.0f, 0.0f, 1.0f));
+  const rasterizer::Texture base = testing::uniform_2d(TextureFormat::RGBA8_sRGB, glm::vec4(0.8f, 0.6f, 0.4f, 1.0f));
+  const rasterizer::Texture bump = testing::uniform_2d(TextureFormat::RGBA8, glm::vec4(0.5f, 0.5f, 1.0f, 1.0f));
+  const rasterizer::Texture expo = testing::uniform_2d(TextureFormat::RGBA8, glm::vec4(0.2f, 0.0f, 0.0f, 1.0f));
   VertexLitParams p;
   p.base.texture = &base;
   p.bump.texture = &bump;

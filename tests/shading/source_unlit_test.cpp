@@ -105,18 +105,10 @@ TEST(SourceUnlit, EnvmapReflectsMasksTintsAndSaturates) {
 
 TEST(SourceUnlit, RealShaderWithTexturesOnBothLanes) {
   using rasterizer::TextureFormat;
-  auto uniform = [](TextureFormat f, const glm::vec4& c) {
-    rasterizer::Texture t = rasterizer::Texture::create_2d(4, 4, f);
-    t.upload(0, std::vector<glm::vec4>(16, c));
-    t.generate_mips();
-    return t;
-  };
-  const rasterizer::Texture base = uniform(TextureFormat::RGBA8_sRGB, glm::vec4(0.5f, 0.25f, 1.0f, 1.0f));
-  const rasterizer::Texture detail = uniform(TextureFormat::RGBA8, glm::vec4(1.0f, 0.5f, 0.5f, 1.0f));
-  const rasterizer::Texture mask = uniform(TextureFormat::RGBA8, glm::vec4(1.0f, 1.0f, 0.0f, 1.0f));
-  rasterizer::Texture cube = rasterizer::Texture::create_cube(4, TextureFormat::RGBA16F);
-  for (int f = 0; f < 6; ++f) cube.upload(0, std::vector<glm::vec4>(16, glm::vec4(0.1f * f, 0.2f, 0.3f, 1.0f)), f);
-  cube.generate_mips();
+  const rasterizer::Texture base = testing::uniform_2d(TextureFormat::RGBA8_sRGB, glm::vec4(0.5f, 0.25f, 1.0f, 1.0f));
+  const rasterizer::Texture detail = testing::uniform_2d(TextureFormat::RGBA8, glm::vec4(1.0f, 0.5f, 0.5f, 1.0f));
+  const rasterizer::Texture mask = testing::uniform_2d(TextureFormat::RGBA8, glm::vec4(1.0f, 1.0f, 0.0f, 1.0f));
+  const rasterizer::Texture cube = testing::face_colored_cube();
   UnlitGenericParams p;
   p.base.texture = &base;
   p.detail.texture = &detail;
