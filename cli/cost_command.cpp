@@ -94,6 +94,18 @@ void print_row(const char* shader, const std::string& variant, ShaderModel m, co
               c.texture_indirections, limits.c_str(), ok ? "yes" : "NO", simd_ns, scalar_ns);
 }
 
+/// Times one static combo on both lanes and prints a row for every shader model it exists on.
+template <class Combo, class Shade, class Measure>
+void report_combo(const char* shader, const Combo& combo, Shade&& shade, int inputs, int pixels, Measure&& measure) {
+  const auto [simd_ns, scalar_ns] = time_shader(shade, inputs, pixels);
+  for (ShaderModel m : src::kPixelModels) {
+    if constexpr (requires { combo.valid(m); }) {
+      if (!combo.valid(m)) continue;
+    }
+    print_row(shader, combo.name(), m, measure(m), simd_ns, scalar_ns);
+  }
+}
+
 void report_lightmapped(int pixels) {
   src::LightmappedGenericParams p;
   p.fresnel = src::fresnel_constant(0.2f);
@@ -111,10 +123,7 @@ void report_lightmapped(int pixels) {
       in.eye_vector = shading::float3<L>(get(23), get(24), get(25));
       return src::lightmapped_generic_combine<C>(t, in, p, [](const shading::float3<L>& r) { return r * r; });
     };
-    const auto [simd_ns, scalar_ns] = time_shader(shade, 26, pixels);
-    for (ShaderModel m : src::kPixelModels) {
-      print_row("LightmappedGeneric", C.name(), m, src::measure_lightmapped_generic<C>(m), simd_ns, scalar_ns);
-    }
+    report_combo("LightmappedGeneric", C, shade, 26, pixels, [](ShaderModel m) { return src::measure_lightmapped_generic<C>(m); });
   });
 }
 
@@ -138,11 +147,7 @@ void report_vertexlit(int pixels) {
       in.attenuation = shading::float4<L>(get(24), get(25), get(26), get(27));
       return src::vertexlit_combine<C>(t, in, p);
     };
-    const auto [simd_ns, scalar_ns] = time_shader(shade, 28, pixels);
-    for (ShaderModel m : src::kPixelModels) {
-      if (!C.valid(m)) continue;
-      print_row("VertexLitGeneric", C.name(), m, src::measure_vertexlit_generic<C>(m), simd_ns, scalar_ns);
-    }
+    report_combo("VertexLitGeneric", C, shade, 28, pixels, [](ShaderModel m) { return src::measure_vertexlit_generic<C>(m); });
   });
 }
 
@@ -161,10 +166,7 @@ void report_unlit(int pixels) {
       in.normal = shading::float3<L>(get(18), get(19), get(20));
       return src::unlit_generic_combine<C>(t, in, p, [](const shading::float3<L>& r) { return r * r; });
     };
-    const auto [simd_ns, scalar_ns] = time_shader(shade, 21, pixels);
-    for (ShaderModel m : src::kPixelModels) {
-      print_row("UnlitGeneric", C.name(), m, src::measure_unlit_generic<C>(m), simd_ns, scalar_ns);
-    }
+    report_combo("UnlitGeneric", C, shade, 21, pixels, [](ShaderModel m) { return src::measure_unlit_generic<C>(m); });
   });
 }
 
@@ -183,10 +185,7 @@ void report_sky(int pixels) {
       in.uv_in_texels = shading::float2<L>(get(20), get(21));
       return src::sky_combine<C>(t, in, p);
     };
-    const auto [simd_ns, scalar_ns] = time_shader(shade, 22, pixels);
-    for (ShaderModel m : src::kPixelModels) {
-      print_row("Sky_HDR", C.name(), m, src::measure_sky<C>(m), simd_ns, scalar_ns);
-    }
+    report_combo("Sky_HDR", C, shade, 22, pixels, [](ShaderModel m) { return src::measure_sky<C>(m); });
   });
 }
 
@@ -206,11 +205,7 @@ void report_water(int pixels) {
       auto target = [](const shading::float2<L>& uv) { return shading::float4<L>(uv.x, uv.y, uv.x * uv.y, uv.y); };
       return src::water_combine<C>(t, in, p, target, target);
     };
-    const auto [simd_ns, scalar_ns] = time_shader(shade, 21, pixels);
-    for (ShaderModel m : src::kPixelModels) {
-      if (!C.valid(m)) continue;
-      print_row("Water", C.name(), m, src::measure_water<C>(m), simd_ns, scalar_ns);
-    }
+    report_combo("Water", C, shade, 21, pixels, [](ShaderModel m) { return src::measure_water<C>(m); });
   });
 }
 
@@ -221,10 +216,7 @@ void report_luminance(int pixels) {
     auto shade = [&]<class L>(const auto& get) {
       return src::luminance_range_combine<C>(shading::float3<L>(get(0), get(1), get(2)), p).color;
     };
-    const auto [simd_ns, scalar_ns] = time_shader(shade, 3, pixels);
-    for (ShaderModel m : src::kPixelModels) {
-      print_row("LuminanceRange", C.name(), m, src::measure_luminance_range_test<C>(m), simd_ns, scalar_ns);
-    }
+    report_combo("LuminanceRange", C, shade, 3, pixels, [](ShaderModel m) { return src::measure_luminance_range_test<C>(m); });
   });
 }
 
