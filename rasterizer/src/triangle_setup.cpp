@@ -32,6 +32,8 @@ void ChunkBins::reset(int tile_count) {
     for (uint32_t t : touched_tiles) tile_records[t].clear();
   }
   touched_tiles.clear();
+  staged.clear();
+  staged_triangles.clear();
 }
 
 namespace {
@@ -163,7 +165,6 @@ void setup_and_bin(const DrawConstants& dc, const float* const v[3], ChunkBins& 
     return;
   }
 
-  TriangleSetup t;
   // Bounds: a sample lies in [0, 240] subpixels from its pixel's corner, so the pixels that
   // may hold a covered sample are those that meet the vertices' bounding box.
   const int32_t min_x = std::min({s[0].X, s[1].X, s[2].X}), max_x = std::max({s[0].X, s[1].X, s[2].X});
@@ -177,40 +178,6 @@ void setup_and_bin(const DrawConstants& dc, const float* const v[3], ChunkBins& 
     return;
   }
 
-  t.x0 = static_cast<int16_t>(x0);
-  t.y0 = static_cast<int16_t>(y0);
-  t.x1 = static_cast<int16_t>(x1);
-  t.y1 = static_cast<int16_t>(y1);
-
-  // Edges on the vertices in positive (clockwise) order.
-  const int i1 = clockwise ? 1 : 2, i2 = clockwise ? 2 : 1;
-  t.edge[0] = make_edge(s[0].X, s[0].Y, s[i1].X, s[i1].Y);
-  t.edge[1] = make_edge(s[i1].X, s[i1].Y, s[i2].X, s[i2].Y);
-  t.edge[2] = make_edge(s[i2].X, s[i2].Y, s[0].X, s[0].Y);
-  t.small = max_x - min_x < kSmallTriangleSize * kSubpixelsPerPixel &&
-            max_y - min_y < kSmallTriangleSize * kSubpixelsPerPixel;
-  t.narrow_edges = true;  // always for small triangles
-  if (!t.small) {
-    for (const Edge& e : t.edge) {
-      const int64_t span = std::abs(int64_t(e.a)) * (simd::kStampWidth * kSubpixelsPerPixel) +
-                           std::abs(int64_t(e.b)) * (simd::kStampHeight * kSubpixelsPerPixel);
-      if (span > kNarrowEdgeLimit) t.narrow_edges = false;
-    }
-  }
-
-  // Planes, in the vertices' own order.
-  const double scale = 1.0 / kSubpixelsPerPixel;
-  const PlaneBasis basis{(s[1].X - s[0].X) * scale, (s[1].Y - s[0].Y) * scale, (s[2].X - s[0].X) * scale,
-                         (s[2].Y - s[0].Y) * scale, double(kSubpixelsPerPixel) * kSubpixelsPerPixel / double(area2)};
-  t.ref_x = s[0].x;
-  t.ref_y = s[0].y;
-  t.z = basis.plane(s[0].z, s[1].z, s[2].z);
-  if (dc.rasterizer.depth_bias != 0 || dc.rasterizer.slope_scaled_depth_bias != 0) {
-    const float slope = std::max(std::abs(t.z.dqdx), std::abs(t.z.dqdy));
-    t.z.q0 += dc.rasterizer.depth_bias + dc.rasterizer.slope_scaled_depth_bias * slope;
-  }
-  t.front_facing = dc.rasterizer.front_counter_clockwise ? !clockwise : clockwise;
-
   // Flat varyings (the same finite bits at the three vertices) interpolate to their value at
   // vertex 0: the record stores that alone and no barycentrics.
   const glm::vec4* a[3] = {reinterpret_cast<const glm::vec4*>(v[0]) + 1, reinterpret_cast<const glm::vec4*>(v[1]) + 1,
@@ -222,13 +189,65 @@ void setup_and_bin(const DrawConstants& dc, const float* const v[3], ChunkBins& 
     flat = std::memcmp(&a[1][i], &a0, sizeof(glm::vec4)) == 0 && std::memcmp(&a[2][i], &a0, sizeof(glm::vec4)) == 0 &&
            zero == 0.0f;
   }
+  const size_t size = triangle_record_size(dc.varyings, flat);
+
+  // The record is written in place, in the stage (see ChunkBins).
+  static_assert(std::has_single_bit(unsigned(kTileSize)));
+  constexpr int kTileShift = std::countr_zero(unsigned(kTileSize));
+  bins.staged_triangles.push_back({static_cast<uint32_t>(bins.staged.size()), static_cast<uint16_t>(x0 >> kTileShift),
+                                   static_cast<uint16_t>(y0 >> kTileShift), static_cast<uint16_t>((x1 - 1) >> kTileShift),
+                                   static_cast<uint16_t>((y1 - 1) >> kTileShift)});
+  std::byte* record = bins.staged.append(size);
+  TriangleSetup& t = *::new (record) TriangleSetup;
+  t.x0 = static_cast<int16_t>(x0);
+  t.y0 = static_cast<int16_t>(y0);
+  t.x1 = static_cast<int16_t>(x1);
+  t.y1 = static_cast<int16_t>(y1);
+  t.record_blocks = static_cast<uint8_t>(size / 16);
   t.flat = flat;
-  t.affine = s[0].inv_w == s[1].inv_w && s[0].inv_w == s[2].inv_w;
-  Barycentrics bary;
-  if (!flat) {
+
+  // Edges on the vertices in positive (clockwise) order.
+  const int i1 = clockwise ? 1 : 2, i2 = clockwise ? 2 : 1;
+  t.edge[0] = make_edge(s[0].X, s[0].Y, s[i1].X, s[i1].Y);
+  t.edge[1] = make_edge(s[i1].X, s[i1].Y, s[i2].X, s[i2].Y);
+  t.edge[2] = make_edge(s[i2].X, s[i2].Y, s[0].X, s[0].Y);
+  const bool small = max_x - min_x < kSmallTriangleSize * kSubpixelsPerPixel &&
+                     max_y - min_y < kSmallTriangleSize * kSubpixelsPerPixel;
+  bool narrow_edges = true;  // always for small triangles
+  if (!small) {
+    for (const Edge& e : t.edge) {
+      const int64_t span = std::abs(int64_t(e.a)) * (simd::kStampWidth * kSubpixelsPerPixel) +
+                           std::abs(int64_t(e.b)) * (simd::kStampHeight * kSubpixelsPerPixel);
+      if (span > kNarrowEdgeLimit) narrow_edges = false;
+    }
+  }
+  t.small = small;
+  t.narrow_edges = narrow_edges;
+
+  // Planes, in the vertices' own order.
+  const double scale = 1.0 / kSubpixelsPerPixel;
+  const PlaneBasis basis{(s[1].X - s[0].X) * scale, (s[1].Y - s[0].Y) * scale, (s[2].X - s[0].X) * scale,
+                         (s[2].Y - s[0].Y) * scale, double(kSubpixelsPerPixel) * kSubpixelsPerPixel / double(area2)};
+  t.ref_x = s[0].x;
+  t.ref_y = s[0].y;
+  Plane z = basis.plane(s[0].z, s[1].z, s[2].z);
+  if (dc.rasterizer.depth_bias != 0 || dc.rasterizer.slope_scaled_depth_bias != 0) {
+    const float slope = std::max(std::abs(z.dqdx), std::abs(z.dqdy));
+    z.q0 += dc.rasterizer.depth_bias + dc.rasterizer.slope_scaled_depth_bias * slope;
+  }
+  t.z = z;
+  t.front_facing = dc.rasterizer.front_counter_clockwise ? !clockwise : clockwise;
+  const bool affine = s[0].inv_w == s[1].inv_w && s[0].inv_w == s[2].inv_w;
+  t.affine = affine;
+
+  std::byte* tail = record + sizeof(TriangleSetup);
+  if (flat) {
+    for (int i = 0; i < dc.varyings; ++i) std::memcpy(tail + 16 * i, &a[0][i], 16);
+  } else {
     // Perspective-correct barycentrics: b_k = (b_k / w) / (1 / w). With equal w at the three
     // vertices (2D, orthographic) they are affine and the pixel loop skips the division.
-    if (t.affine) {
+    Barycentrics& bary = *::new (tail) Barycentrics;
+    if (affine) {
       bary.inv_w = {s[0].inv_w, 0.0f, 0.0f};
       bary.b1_w = basis.plane(0.0, 1.0, 0.0);
       bary.b2_w = basis.plane(0.0, 0.0, 1.0);
@@ -237,57 +256,16 @@ void setup_and_bin(const DrawConstants& dc, const float* const v[3], ChunkBins& 
       bary.b1_w = basis.plane(0.0, s[1].inv_w, 0.0);
       bary.b2_w = basis.plane(0.0, 0.0, s[2].inv_w);
     }
+    float* d = reinterpret_cast<float*>(tail + sizeof(Barycentrics));
+    for (int i = 0; i < dc.varyings; ++i, d += 12) {
+      for (int c = 0; c < 4; ++c) {
+        d[c] = a[0][i][c];
+        d[4 + c] = a[1][i][c] - a[0][i][c];
+        d[8 + c] = a[2][i][c] - a[0][i][c];
+      }
+    }
   }
-  const size_t size = triangle_record_size(dc.varyings, flat);
-  t.record_blocks = static_cast<uint8_t>(size / 16);
-
-  // Bin: the record goes into every tile the bounds touch, less those wholly outside an edge.
   ++stats.rasterized;
-  const std::byte* first = nullptr;
-  auto emit = [&](int tile) {
-    RecordStream& records = bins.tile_records[tile];
-    if (records.empty()) bins.touched_tiles.push_back(static_cast<uint32_t>(tile));
-    std::byte* out = records.append(size);
-    if (first) {
-      std::memcpy(out, first, size);
-      return;
-    }
-    std::memcpy(out, &t, sizeof(TriangleSetup));
-    std::byte* tail = out + sizeof(TriangleSetup);
-    if (flat) {
-      for (int i = 0; i < dc.varyings; ++i) std::memcpy(tail + 16 * i, &a[0][i], 16);
-    } else {
-      std::memcpy(tail, &bary, sizeof(Barycentrics));
-      glm::vec4 d[3];
-      for (int i = 0; i < dc.varyings; ++i) {
-        d[0] = a[0][i];
-        d[1] = a[1][i] - a[0][i];
-        d[2] = a[2][i] - a[0][i];
-        std::memcpy(tail + sizeof(Barycentrics) + 48 * i, d, 48);
-      }
-    }
-    first = out;
-  };
-  static_assert(std::has_single_bit(unsigned(kTileSize)));
-  constexpr int kTileShift = std::countr_zero(unsigned(kTileSize));
-  const int tx0 = x0 >> kTileShift, tx1 = (x1 - 1) >> kTileShift;  // bounds are >= 0
-  const int ty0 = y0 >> kTileShift, ty1 = (y1 - 1) >> kTileShift;
-  if (tx0 == tx1 && ty0 == ty1) {
-    emit(ty0 * dc.tiles_x + tx0);
-    return;
-  }
-  for (int ty = ty0; ty <= ty1; ++ty) {
-    for (int tx = tx0; tx <= tx1; ++tx) {
-      const int64_t X0 = int64_t(tx) * kTileSize * kSubpixelsPerPixel, X1 = X0 + kTileSize * kSubpixelsPerPixel - 1;
-      const int64_t Y0 = int64_t(ty) * kTileSize * kSubpixelsPerPixel, Y1 = Y0 + kTileSize * kSubpixelsPerPixel - 1;
-      bool outside = false;
-      for (const Edge& e : t.edge) {
-        const int64_t emax = e.c + std::max(e.a * X0, e.a * X1) + std::max(e.b * Y0, e.b * Y1);
-        outside |= emax < 0;
-      }
-      if (!outside) emit(ty * dc.tiles_x + tx);
-    }
-  }
 }
 
 /// Which clip-space half-spaces a position lies outside of: bits 0-3 the writable pixel
@@ -301,6 +279,39 @@ unsigned outcode(const DrawConstants& dc, const glm::vec4& p) {
 }
 
 }  // namespace
+
+void bin_staged(const DrawConstants& dc, ChunkBins& bins) {
+  const std::byte* stage = bins.staged.data();
+  for (const ChunkBins::StagedTriangle& st : bins.staged_triangles) {
+    const auto& t = *reinterpret_cast<const TriangleSetup*>(stage + st.offset);
+    const size_t blocks = t.record_blocks;
+    auto emit = [&](int tile) {
+      RecordStream& records = bins.tile_records[tile];
+      if (records.empty()) bins.touched_tiles.push_back(static_cast<uint32_t>(tile));
+      std::byte* out = records.append(16 * blocks);
+      const std::byte* in = stage + st.offset;
+      for (size_t b = 0; b < blocks; ++b) std::memcpy(out + 16 * b, in + 16 * b, 16);
+    };
+    if (st.tx0 == st.tx1 && st.ty0 == st.ty1) {
+      emit(st.ty0 * dc.tiles_x + st.tx0);
+      continue;
+    }
+    for (int ty = st.ty0; ty <= st.ty1; ++ty) {
+      for (int tx = st.tx0; tx <= st.tx1; ++tx) {
+        const int64_t X0 = int64_t(tx) * kTileSize * kSubpixelsPerPixel, X1 = X0 + kTileSize * kSubpixelsPerPixel - 1;
+        const int64_t Y0 = int64_t(ty) * kTileSize * kSubpixelsPerPixel, Y1 = Y0 + kTileSize * kSubpixelsPerPixel - 1;
+        bool outside = false;
+        for (const Edge& e : t.edge) {
+          const int64_t emax = e.c + std::max(e.a * X0, e.a * X1) + std::max(e.b * Y0, e.b * Y1);
+          outside |= emax < 0;
+        }
+        if (!outside) emit(ty * dc.tiles_x + tx);
+      }
+    }
+  }
+  bins.staged.clear();
+  bins.staged_triangles.clear();
+}
 
 void process_triangle(const DrawConstants& dc, const glm::vec4* const vertices[3], ChunkBins& bins, DrawStats& stats) {
   const glm::vec4& p0 = vertices[0][0];

@@ -5,9 +5,12 @@
 #include "pipeline_support.hpp"
 #include "raster_support.hpp"
 
+#include "luxel/rasterizer/detail/command_queue.hpp"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <random>
 
 namespace luxel::rasterizer::test {
 namespace {
@@ -37,6 +40,46 @@ TEST(OutputMerger, RandomScenesMatchTheScalarReference) {
   // the comparison would say little.
   EXPECT_LT(ambiguous, samples / 50) << ambiguous << " of " << samples << " samples ambiguous";
   EXPECT_GT(counted, 0u);
+}
+
+// A draw of more triangles than the queue holds is recorded in parts with flushes in between
+// (kMaxPendingTriangles): order-dependent blending, stencil counting and the occlusion query
+// must come out as if it were one.
+TEST(OutputMerger, DrawLargerThanTheQueueMatchesTheReference) {
+  Scene scene;
+  scene.width = 160;
+  scene.height = 120;
+  scene.samples = 4;
+  scene.clear_color = {0.2f, 0.4f, 0.6f, 0.8f};
+  SceneDraw d;
+  d.counted = true;
+  d.state.viewport = {0, 0, 256, 256};  // a power of two: screen points are exact in NDC
+  d.state.rasterizer.cull = CullMode::None;
+  d.state.depth_stencil.depth_func = CompareFunc::LessEqual;
+  d.state.depth_stencil.stencil_enable = true;
+  d.state.depth_stencil.front.pass = StencilOp::Incr;
+  d.state.depth_stencil.back.pass = StencilOp::Incr;
+  d.state.blend.enable = true;
+  d.state.blend.src = BlendFactor::SrcAlpha;
+  d.state.blend.dst = BlendFactor::InvSrcAlpha;
+  d.shade.allow_nan = false;
+  d.shade.seed = 7;
+  std::mt19937 rng(2024);
+  static constexpr float kZ[] = {0.125f, 0.25f, 0.5f, 0.75f};
+  const int n = static_cast<int>(detail::kMaxPendingTriangles) + 3001;
+  for (int i = 0; i < n; ++i) {
+    // Triangles of a few pixels on the 1/16 pixel grid, anywhere on the target.
+    const double x = int(rng() % (160 * 16)) / 16.0, y = int(rng() % (120 * 16)) / 16.0;
+    auto leg = [&] { return int(rng() % 49) / 16.0 - 1.5; };
+    d.triangles.push_back({{{x, y}, {x + leg(), y + leg()}, {x + leg(), y + leg()}}, kZ[rng() % 4]});
+  }
+  scene.draws.push_back(std::move(d));
+  Context ctx(2);
+  const SceneOutput out = render_scene(ctx, scene);
+  const SceneReference ref = reference_scene(scene);
+  std::vector<std::string> messages;
+  EXPECT_EQ(compare_scene(scene, out, ref, messages, 8), 0) << join(messages);
+  EXPECT_GT(ref.query, uint64_t(n));
 }
 
 // --- Literal truth tables (D3D9 documentation) --------------------------------------------------
