@@ -76,7 +76,13 @@ class TileRasterizer {
       sample_dy_[s] = simd::lanes([&](int l) { return simd::lane_y(l) + sample_y_[s] / 256.0f; });
     }
     simple_depth_ = depth_ && !plan.stencil;
-    plain_color_ = color_ && !state_.blend.enable && plan.color_write_mask == 0xffffffffu;
+    if (!color_ || !plan.color_write_mask) {
+      color_write_ = ColorWrite::None;
+    } else if (state_.blend.enable || plan.color_write_mask != 0xffffffffu) {
+      color_write_ = ColorWrite::Merged;
+    } else {
+      color_write_ = state_.blend.srgb_write ? ColorWrite::PlainSrgb : ColorWrite::Plain;
+    }
     depth_test_ = plan.depth_test;
     depth_write_ = plan.depth_write;
     depth_func_ = state_.depth_stencil.depth_func;
@@ -96,6 +102,7 @@ class TileRasterizer {
     int64_t min_offset[3], max_offset[3];  ///< bounds over a stamp, relative to its corner
   };
   static constexpr int kBlockSize = 16;  ///< pixels; a tile is 4 x 4 blocks
+  static constexpr int kStampsPerRow = kTileSize / simd::kStampWidth;
   static_assert(kTileSize % kBlockSize == 0 && kBlockSize % simd::kStampWidth == 0);
 
   void rasterize(const TriangleSetup& t, int x0, int y0, int x1, int y1);
@@ -113,17 +120,33 @@ class TileRasterizer {
     return simd::mask_of(x >= Int(clip_x0_)) & simd::mask_of(x < Int(clip_x1_)) & simd::mask_of(y >= Int(clip_y0_)) &
            simd::mask_of(y < Int(clip_y1_));
   }
+  /// The triangle's depth at sample s of the stamp whose corner is `corner_z` away in depth from
+  /// the triangle's reference vertex (see corner_depth), clamped to the viewport's depth range.
+  /// Early and late depth tests take it from here alike, so that a pass with depth func Equal
+  /// over the same triangles passes whichever test its shader allows.
+  LUXEL_INLINE Float sample_depth(int s, float corner_z) const {
+    return xsimd::min(xsimd::max(sample_z_[s] + Float(corner_z), Float(min_depth_)), Float(max_depth_));
+  }
+  static float corner_depth(const TriangleSetup& t, int px, int py) {
+    return std::fma(t.z.dqdx, float(px) - t.ref_x, t.z.dqdy * (float(py) - t.ref_y));
+  }
   /// The pixel functor's interpolants at the pixel centers (cx, cy relative to vertex 0),
   /// perspective-correct.
   LUXEL_INLINE void interpolate(const TriangleSetup& t, const Float& cx, const Float& cy, PixelInput<N>& in);
-  /// Coverage is carried as one mask per sample: all-ones lanes are covered.
-  LUXEL_INLINE void shade_stamp(const TriangleSetup& t, int px, int py, Int* coverage);
-  Int depth_stencil_test(const TriangleSetup& t, const Float& dx, const Float& dy, int stamp, int s,
-                         const Int& coverage, const Float* shader_depth);
+  /// The index of the stamp whose corner is (px, py) in the tile's stamp order.
+  int stamp_index(int px, int py) const {
+    return static_cast<int>((unsigned(py - tile_y_) / simd::kStampHeight) * kStampsPerRow +
+                            unsigned(px - tile_x_) / simd::kStampWidth);
+  }
+  /// Shades and writes the stamp at (px, py), index `stamp`. Coverage is carried as one mask per
+  /// sample: all-ones lanes are covered.
+  LUXEL_INLINE void shade_stamp(const TriangleSetup& t, int px, int py, int stamp, Int* coverage);
+  Int depth_stencil_test(const TriangleSetup& t, float corner_z, int stamp, int s, const Int& coverage,
+                         const Float* shader_depth);
   /// Blending and write masks (plain writes are shade_stamp's).
   void write_color(int stamp, int s, const Int& coverage, const simd::Float4& color, const Int& packed);
   template <CompareFunc kFunc>
-  LUXEL_INLINE Int early_depth(const TriangleSetup& t, const Float& dx, const Float& dy, int stamp, Int* coverage);
+  LUXEL_INLINE Int early_depth(float corner_z, int stamp, Int* coverage);
 
   const DrawPlan& plan_;
   const PS& ps_;
@@ -135,7 +158,13 @@ class TileRasterizer {
   bool depth_test_, depth_write_;
   CompareFunc depth_func_;
   float min_depth_, max_depth_;
-  bool plain_color_;    ///< no blending, all channels written
+  enum class ColorWrite {
+    None,       ///< no color target or nothing written
+    Plain,      ///< no blending, all channels
+    PlainSrgb,  ///< the same, sRGB-encoded
+    Merged      ///< blending or a partial write mask (write_color)
+  };
+  ColorWrite color_write_;
   int tile_x_, tile_y_;
   int clip_x0_, clip_y0_, clip_x1_, clip_y1_;
   uint32_t* color_;
@@ -144,6 +173,7 @@ class TileRasterizer {
   int sample_x_[S], sample_y_[S];
   Int sample_X_[S], sample_Y_[S];      ///< subpixels from the stamp's corner to each lane's sample
   Float sample_dx_[S], sample_dy_[S];  ///< the same in pixels
+  Float sample_z_[S];  ///< the current triangle's depth at each sample of a stamp with its corner on vertex 0
 };
 
 template <class PS, int N, bool kEarlyZ, int S>
@@ -152,6 +182,10 @@ void TileRasterizer<PS, N, kEarlyZ, S>::triangle(const TriangleSetup& t) {
   const int x0 = std::max<int>(t.x0, clip_x0_), y0 = std::max<int>(t.y0, clip_y0_);
   const int x1 = std::min<int>(t.x1, clip_x1_), y1 = std::min<int>(t.y1, clip_y1_);
   if (x0 >= x1 || y0 >= y1) return;
+  if (depth_test_) {
+    const Float z0(t.z.q0), dzdx(t.z.dqdx), dzdy(t.z.dqdy);
+    for (int s = 0; s < S; ++s) sample_z_[s] = xsimd::fma(dzdx, sample_dx_[s], xsimd::fma(dzdy, sample_dy_[s], z0));
+  }
   const int sx0 = x0 & ~(simd::kStampWidth - 1), sy0 = y0 & ~(simd::kStampHeight - 1);
   if (t.small) {
     rasterize_small(t, sx0, sy0, x1, y1);
@@ -207,11 +241,12 @@ void TileRasterizer<PS, N, kEarlyZ, S>::rasterize(const TriangleSetup& t, int sx
       ++stats.blocks_full;
       Int coverage[S];
       for (int py = y0; py < ye; py += simd::kStampHeight) {
-        for (int px = x0; px < xe; px += simd::kStampWidth) {
+        int stamp = stamp_index(x0, py);
+        for (int px = x0; px < xe; px += simd::kStampWidth, ++stamp) {
           const Int clip = clip_mask(px, py);
           for (int s = 0; s < S; ++s) coverage[s] = clip;
           ++stats.stamps_full;
-          shade_stamp(t, px, py, coverage);
+          shade_stamp(t, px, py, stamp, coverage);
         }
       }
     }
@@ -242,12 +277,21 @@ void TileRasterizer<PS, N, kEarlyZ, S>::rasterize_small(const TriangleSetup& t, 
   for (int py = sy0; py < y1; py += simd::kStampHeight) {
     int32_t v[3] = {corner[0], corner[1], corner[2]};
     for (int e = 0; e < 3; ++e) corner[e] += step_y[e];
-    for (int px = sx0; px < x1; px += simd::kStampWidth) {
+    int stamp = stamp_index(sx0, py);
+    bool entered = false;
+    for (int px = sx0; px < x1; px += simd::kStampWidth, ++stamp) {
       const int32_t e0 = v[0], e1 = v[1], e2 = v[2];
       for (int e = 0; e < 3; ++e) v[e] += step_x[e];
-      if ((e0 + hi[0]) < 0 || (e1 + hi[1]) < 0 || (e2 + hi[2]) < 0) continue;
+      // A negative sum has its sign bit set: one test for "wholly outside some edge".
+      if (((e0 + hi[0]) | (e1 + hi[1]) | (e2 + hi[2])) < 0) {
+        // The stamps of a row that no edge rejects are contiguous (each edge keeps an interval of
+        // them): once past them, the row is done.
+        if (entered) break;
+        continue;
+      }
+      entered = true;
       const Int clip = clip_mask(px, py);
-      if ((e0 + lo[0]) >= 0 && (e1 + lo[1]) >= 0 && (e2 + lo[2]) >= 0) {
+      if (((e0 + lo[0]) | (e1 + lo[1]) | (e2 + lo[2])) >= 0) {
         for (int s = 0; s < S; ++s) coverage[s] = clip;
         ++stats.stamps_full;
       } else {
@@ -262,7 +306,7 @@ void TileRasterizer<PS, N, kEarlyZ, S>::rasterize_small(const TriangleSetup& t, 
         if (!simd::sign_bits(any)) continue;
         ++stats.stamps_partial;
       }
-      shade_stamp(t, px, py, coverage);
+      shade_stamp(t, px, py, stamp, coverage);
     }
   }
 }
@@ -278,12 +322,18 @@ void TileRasterizer<PS, N, kEarlyZ, S>::rasterize_stamps(const TriangleSetup& t,
     for (int e = 0; e < 3; ++e)
       row[e] = t.edge[e].c + int64_t(t.edge[e].a) * sx0 * kSubpixelsPerPixel +
                int64_t(t.edge[e].b) * py * kSubpixelsPerPixel;
-    for (int px = sx0; px < x1; px += simd::kStampWidth) {
+    int stamp = stamp_index(sx0, py);
+    bool entered = false;
+    for (int px = sx0; px < x1; px += simd::kStampWidth, ++stamp) {
       const int64_t e0 = row[0], e1 = row[1], e2 = row[2];
       for (int e = 0; e < 3; ++e) row[e] += int64_t(t.edge[e].a) * kStampW;
-      if (e0 + edges.max_offset[0] < 0 || e1 + edges.max_offset[1] < 0 || e2 + edges.max_offset[2] < 0) continue;
+      if (((e0 + edges.max_offset[0]) | (e1 + edges.max_offset[1]) | (e2 + edges.max_offset[2])) < 0) {
+        if (entered) break;  // see rasterize_small
+        continue;
+      }
+      entered = true;
       const Int clip = clip_mask(px, py);
-      if (e0 + edges.min_offset[0] >= 0 && e1 + edges.min_offset[1] >= 0 && e2 + edges.min_offset[2] >= 0) {
+      if (((e0 + edges.min_offset[0]) | (e1 + edges.min_offset[1]) | (e2 + edges.min_offset[2])) >= 0) {
         for (int s = 0; s < S; ++s) coverage[s] = clip;
         ++stats.stamps_full;
       } else if (t.narrow_edges) {
@@ -305,7 +355,7 @@ void TileRasterizer<PS, N, kEarlyZ, S>::rasterize_stamps(const TriangleSetup& t,
       } else if (!wide_coverage(t, px, py, clip, coverage)) {
         continue;
       }
-      shade_stamp(t, px, py, coverage);
+      shade_stamp(t, px, py, stamp, coverage);
     }
   }
 }
@@ -334,16 +384,15 @@ bool TileRasterizer<PS, N, kEarlyZ, S>::wide_coverage(const TriangleSetup& t, in
 }
 
 template <class PS, int N, bool kEarlyZ, int S>
-Int TileRasterizer<PS, N, kEarlyZ, S>::depth_stencil_test(const TriangleSetup& t, const Float& dx, const Float& dy,
-                                                         int stamp, int s, const Int& coverage,
-                                                         const Float* shader_depth) {
+Int TileRasterizer<PS, N, kEarlyZ, S>::depth_stencil_test(const TriangleSetup& t, float corner_z, int stamp, int s,
+                                                         const Int& coverage, const Float* shader_depth) {
   float* depth = depth_ + s * kTilePixels + stamp * simd::kLanes;
   const Float dst_depth = Float::load_aligned(depth);
   Int depth_pass = coverage;
   Float z;
   if (depth_test_) {
-    z = shader_depth ? *shader_depth : eval_plane(t.z, dx + sample_dx_[s], dy + sample_dy_[s]);
-    z = xsimd::min(xsimd::max(z, Float(min_depth_)), Float(max_depth_));
+    z = shader_depth ? xsimd::min(xsimd::max(*shader_depth, Float(min_depth_)), Float(max_depth_))
+                     : sample_depth(s, corner_z);
     depth_pass &= simd::mask_of(compare(depth_func_, z, dst_depth));
   }
   Int pass = depth_pass;
@@ -371,16 +420,13 @@ Int TileRasterizer<PS, N, kEarlyZ, S>::depth_stencil_test(const TriangleSetup& t
 
 template <class PS, int N, bool kEarlyZ, int S>
 template <CompareFunc kFunc>
-Int TileRasterizer<PS, N, kEarlyZ, S>::early_depth(const TriangleSetup& t, const Float& dx, const Float& dy, int stamp,
-                                                  Int* coverage) {
+Int TileRasterizer<PS, N, kEarlyZ, S>::early_depth(float corner_z, int stamp, Int* coverage) {
   // The common case, kept tight: depth test without stencil, compare function fixed.
   float* depth = depth_ + stamp * simd::kLanes;
-  const Float z0(t.z.q0), dzdx(t.z.dqdx), dzdy(t.z.dqdy), lo(min_depth_), hi(max_depth_);
   Int live(0);
   for (int s = 0; s < S; ++s, depth += kTilePixels) {
     const Float d = Float::load_aligned(depth);
-    Float z = xsimd::fma(dzdx, dx + sample_dx_[s], xsimd::fma(dzdy, dy + sample_dy_[s], z0));
-    z = xsimd::min(xsimd::max(z, lo), hi);
+    const Float z = sample_depth(s, corner_z);
     const Int pass = coverage[s] & simd::mask_of(compare(kFunc, z, d));
     if (depth_write_) simd::select(pass, z, d).store_aligned(depth);
     coverage[s] = pass;
@@ -430,31 +476,27 @@ void TileRasterizer<PS, N, kEarlyZ, S>::interpolate(const TriangleSetup& t, cons
 }
 
 template <class PS, int N, bool kEarlyZ, int S>
-void TileRasterizer<PS, N, kEarlyZ, S>::shade_stamp(const TriangleSetup& t, int px, int py, Int* coverage) {
-  const int stamp = static_cast<int>((unsigned(py - tile_y_) / simd::kStampHeight) * (kTileSize / simd::kStampWidth) +
-                                     unsigned(px - tile_x_) / simd::kStampWidth);
-  // Offsets of the stamp's corner from the triangle's reference vertex: exact in float.
-  const Float dx(float(px) - t.ref_x), dy(float(py) - t.ref_y);
+void TileRasterizer<PS, N, kEarlyZ, S>::shade_stamp(const TriangleSetup& t, int px, int py, int stamp,
+                                                   Int* coverage) {
+  const float corner_z = depth_test_ ? corner_depth(t, px, py) : 0.0f;
   Int live(0);
   if constexpr (kEarlyZ) {
     if (simple_depth_ && depth_test_) {
       switch (depth_func_) {
-        case CompareFunc::Less: live = early_depth<CompareFunc::Less>(t, dx, dy, stamp, coverage); break;
-        case CompareFunc::LessEqual: live = early_depth<CompareFunc::LessEqual>(t, dx, dy, stamp, coverage); break;
-        case CompareFunc::Greater: live = early_depth<CompareFunc::Greater>(t, dx, dy, stamp, coverage); break;
-        case CompareFunc::GreaterEqual:
-          live = early_depth<CompareFunc::GreaterEqual>(t, dx, dy, stamp, coverage);
-          break;
+        case CompareFunc::Less: live = early_depth<CompareFunc::Less>(corner_z, stamp, coverage); break;
+        case CompareFunc::LessEqual: live = early_depth<CompareFunc::LessEqual>(corner_z, stamp, coverage); break;
+        case CompareFunc::Greater: live = early_depth<CompareFunc::Greater>(corner_z, stamp, coverage); break;
+        case CompareFunc::GreaterEqual: live = early_depth<CompareFunc::GreaterEqual>(corner_z, stamp, coverage); break;
         default:
           for (int s = 0; s < S; ++s) {
-            coverage[s] = depth_stencil_test(t, dx, dy, stamp, s, coverage[s], nullptr);
+            coverage[s] = depth_stencil_test(t, corner_z, stamp, s, coverage[s], nullptr);
             live |= coverage[s];
           }
       }
       if (!simd::sign_bits(live)) return;
     } else if (depth_) {
       for (int s = 0; s < S; ++s) {
-        coverage[s] = depth_stencil_test(t, dx, dy, stamp, s, coverage[s], nullptr);
+        coverage[s] = depth_stencil_test(t, corner_z, stamp, s, coverage[s], nullptr);
         live |= coverage[s];
       }
       if (!simd::sign_bits(live)) return;
@@ -468,7 +510,11 @@ void TileRasterizer<PS, N, kEarlyZ, S>::shade_stamp(const TriangleSetup& t, int 
   PixelInput<N> in;
   in.x = Float(float(px)) + lanes_.center_x;
   in.y = Float(float(py)) + lanes_.center_y;
-  if constexpr (N > 0) interpolate(t, dx + lanes_.center_x, dy + lanes_.center_y, in);
+  if constexpr (N > 0) {
+    // Offsets of the pixel centers from the triangle's reference vertex.
+    const Float cx = Float(float(px) - t.ref_x) + lanes_.center_x, cy = Float(float(py) - t.ref_y) + lanes_.center_y;
+    interpolate(t, cx, cy, in);
+  }
   in.live = simd::sign_bits(live);
   in.front_facing = t.front_facing;
   PixelOutput out;
@@ -486,7 +532,7 @@ void TileRasterizer<PS, N, kEarlyZ, S>::shade_stamp(const TriangleSetup& t, int 
     for (int s = 0; s < S; ++s) {
       coverage[s] &= keep;
       if (depth_ && simd::sign_bits(coverage[s]))
-        coverage[s] = depth_stencil_test(t, dx, dy, stamp, s, coverage[s], PS::kWritesDepth ? &out.depth : nullptr);
+        coverage[s] = depth_stencil_test(t, corner_z, stamp, s, coverage[s], PS::kWritesDepth ? &out.depth : nullptr);
       live |= coverage[s];
     }
     if (!simd::sign_bits(live)) return;
@@ -494,11 +540,11 @@ void TileRasterizer<PS, N, kEarlyZ, S>::shade_stamp(const TriangleSetup& t, int 
 
   if (count_samples_)
     for (int s = 0; s < S; ++s) samples_passed += std::popcount(simd::sign_bits(coverage[s]));
-  if (!color_ || !plan_.color_write_mask) return;
-  if (plain_color_) {
+  if (color_write_ == ColorWrite::None) return;
+  if (color_write_ != ColorWrite::Merged) {
     // No blending, all channels: packing clamps by itself, and a sample plane whose lanes are
     // all covered takes one store.
-    const Int packed = state_.blend.srgb_write ? pack_srgb8(out.color) : pack_unorm8(out.color);
+    const Int packed = color_write_ == ColorWrite::PlainSrgb ? pack_srgb8(out.color) : pack_unorm8(out.color);
     int32_t* dst = reinterpret_cast<int32_t*>(color_ + stamp * simd::kLanes);
     for (int s = 0; s < S; ++s, dst += kTilePixels) {
       if (simd::sign_bits(coverage[s]) == simd::kAllLanes) {
