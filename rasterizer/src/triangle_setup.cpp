@@ -189,7 +189,8 @@ void setup_and_bin(const DrawConstants& dc, const float* const v[3], ChunkBins& 
     flat = std::memcmp(&a[1][i], &a0, sizeof(glm::vec4)) == 0 && std::memcmp(&a[2][i], &a0, sizeof(glm::vec4)) == 0 &&
            zero == 0.0f;
   }
-  const size_t size = triangle_record_size(dc.varyings, flat);
+  const bool affine = s[0].inv_w == s[1].inv_w && s[0].inv_w == s[2].inv_w;
+  const size_t size = triangle_record_size(dc.varyings, flat, affine);
 
   // The record is written in place, in the stage (see ChunkBins).
   static_assert(std::has_single_bit(unsigned(kTileSize)));
@@ -237,25 +238,22 @@ void setup_and_bin(const DrawConstants& dc, const float* const v[3], ChunkBins& 
   }
   t.z = z;
   t.front_facing = dc.rasterizer.front_counter_clockwise ? !clockwise : clockwise;
-  const bool affine = s[0].inv_w == s[1].inv_w && s[0].inv_w == s[2].inv_w;
   t.affine = affine;
 
   std::byte* tail = record + sizeof(TriangleSetup);
   if (flat) {
     for (int i = 0; i < dc.varyings; ++i) std::memcpy(tail + 16 * i, &a[0][i], 16);
+  } else if (affine) {
+    // Equal w: varyings are linear on screen, a plane per component (a constant one exactly).
+    Plane* planes = reinterpret_cast<Plane*>(tail);
+    for (int i = 0; i < dc.varyings; ++i)
+      for (int c = 0; c < 4; ++c) planes[4 * i + c] = basis.plane(a[0][i][c], a[1][i][c], a[2][i][c]);
   } else {
-    // Perspective-correct barycentrics: b_k = (b_k / w) / (1 / w). With equal w at the three
-    // vertices (2D, orthographic) they are affine and the pixel loop skips the division.
+    // Perspective-correct barycentrics: b_k = (b_k / w) / (1 / w).
     Barycentrics& bary = *::new (tail) Barycentrics;
-    if (affine) {
-      bary.inv_w = {s[0].inv_w, 0.0f, 0.0f};
-      bary.b1_w = basis.plane(0.0, 1.0, 0.0);
-      bary.b2_w = basis.plane(0.0, 0.0, 1.0);
-    } else {
-      bary.inv_w = basis.plane(s[0].inv_w, s[1].inv_w, s[2].inv_w);
-      bary.b1_w = basis.plane(0.0, s[1].inv_w, 0.0);
-      bary.b2_w = basis.plane(0.0, 0.0, s[2].inv_w);
-    }
+    bary.inv_w = basis.plane(s[0].inv_w, s[1].inv_w, s[2].inv_w);
+    bary.b1_w = basis.plane(0.0, s[1].inv_w, 0.0);
+    bary.b2_w = basis.plane(0.0, 0.0, s[2].inv_w);
     float* d = reinterpret_cast<float*>(tail + sizeof(Barycentrics));
     for (int i = 0; i < dc.varyings; ++i, d += 12) {
       for (int c = 0; c < 4; ++c) {

@@ -455,18 +455,22 @@ void TileRasterizer<PS, N, kEarlyZ, S>::write_color(int stamp, int s, const Int&
 template <class PS, int N, bool kEarlyZ, int S>
 void TileRasterizer<PS, N, kEarlyZ, S>::interpolate(const TriangleSetup& t, const Float& cx, const Float& cy,
                                                    PixelInput<N>& in) {
-  const float* a = t.varyings();
   if (t.flat) {
+    const float* a = t.flat_varyings();
     for (int i = 0; i < N; ++i, a += 4) in.varyings[i] = {Float(a[0]), Float(a[1]), Float(a[2]), Float(a[3])};
     return;
   }
-  const Barycentrics& bary = t.barycentrics();
-  Float b1 = eval_plane(bary.b1_w, cx, cy), b2 = eval_plane(bary.b2_w, cx, cy);
-  if (!t.affine) {
-    const Float w = Float(1.0f) / eval_plane(bary.inv_w, cx, cy);
-    b1 *= w;
-    b2 *= w;
+  if (t.affine) {
+    const Plane* p = t.varying_planes();
+    for (int i = 0; i < N; ++i, p += 4)
+      in.varyings[i] = {eval_plane(p[0], cx, cy), eval_plane(p[1], cx, cy), eval_plane(p[2], cx, cy),
+                        eval_plane(p[3], cx, cy)};
+    return;
   }
+  const Barycentrics& bary = t.barycentrics();
+  const Float w = Float(1.0f) / eval_plane(bary.inv_w, cx, cy);
+  const Float b1 = eval_plane(bary.b1_w, cx, cy) * w, b2 = eval_plane(bary.b2_w, cx, cy) * w;
+  const float* a = t.varying_deltas();
   for (int i = 0; i < N; ++i, a += 12) {  // a0 (4 floats), a1 - a0, a2 - a0
     in.varyings[i].x = xsimd::fma(b2, Float(a[8]), xsimd::fma(b1, Float(a[4]), Float(a[0])));
     in.varyings[i].y = xsimd::fma(b2, Float(a[9]), xsimd::fma(b1, Float(a[5]), Float(a[1])));

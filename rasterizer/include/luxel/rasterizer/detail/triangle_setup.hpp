@@ -55,10 +55,13 @@ struct Barycentrics {
   Plane b1_w, b2_w;  ///< barycentrics of vertices 1 and 2, divided by w
 };
 
-/// A binned triangle. Records differ in size: the header is followed, unless every varying is
-/// flat (equal at the three vertices, as in flat-shaded or per-primitive data), by Barycentrics
-/// and per varying three float4 (the value at vertex 0 and the differences a1 - a0, a2 - a0);
-/// with flat varyings only one float4 per varying follows, and no barycentrics are needed.
+/// A binned triangle. Records differ in size; the header is followed by one of
+///  - flat: every varying is flat (the same at the three vertices, as in flat-shaded or
+///    per-primitive data): one float4 per varying, its value;
+///  - affine: equal w at the three vertices (2D and orthographic draws, full-screen passes): per
+///    varying four Planes, one per component;
+///  - otherwise: Barycentrics and per varying three float4 (the value at vertex 0 and the
+///    differences a1 - a0, a2 - a0).
 struct alignas(16) TriangleSetup {
   Edge edge[3];
   int16_t x0, y0, x1, y1;  ///< pixel bounds (half-open), inside the draw's clip rectangle
@@ -68,13 +71,17 @@ struct alignas(16) TriangleSetup {
   bool front_facing : 1;
   bool narrow_edges : 1;   ///< per-sample edge values of a stamp fit 32-bit integers
   bool small : 1;          ///< spans less than kSmallTriangleSize pixels in x and in y
-  bool affine : 1;         ///< equal w at the vertices: b1_w, b2_w are the barycentrics themselves
-  bool flat : 1;           ///< every varying is flat (then there are no Barycentrics)
+  bool affine : 1;         ///< equal w at the vertices
+  bool flat : 1;           ///< every varying is flat
 
+  /// Flat: the varyings' values, float4 each.
+  const float* flat_varyings() const { return reinterpret_cast<const float*>(this + 1); }
+  /// Affine, not flat: four planes per varying.
+  const Plane* varying_planes() const { return reinterpret_cast<const Plane*>(this + 1); }
+  /// Neither flat nor affine: the barycentrics, then three float4 per varying.
   const Barycentrics& barycentrics() const { return *reinterpret_cast<const Barycentrics*>(this + 1); }
-  const float* varyings() const {
-    const std::byte* after = reinterpret_cast<const std::byte*>(this + 1);
-    return reinterpret_cast<const float*>(flat ? after : after + sizeof(Barycentrics));
+  const float* varying_deltas() const {
+    return reinterpret_cast<const float*>(reinterpret_cast<const std::byte*>(this + 1) + sizeof(Barycentrics));
   }
   const TriangleSetup* next() const {
     return reinterpret_cast<const TriangleSetup*>(reinterpret_cast<const std::byte*>(this) + 16 * record_blocks);
@@ -95,12 +102,13 @@ static_assert(int64_t(kSmallTriangleSize) * kSubpixelsPerPixel * (kTileSize + kS
                       kSubpixelsPerPixel * 2 < (int64_t(1) << 30));
 
 /// Bytes of one binned triangle with `varyings` float4 interpolants.
-constexpr size_t triangle_record_size(int varyings, bool flat) {
-  const size_t bytes = sizeof(TriangleSetup) + (flat ? sizeof(float) * 4 * varyings
-                                                     : sizeof(Barycentrics) + sizeof(float) * 12 * varyings);
+constexpr size_t triangle_record_size(int varyings, bool flat, bool affine) {
+  const size_t bytes = sizeof(TriangleSetup) + (flat     ? sizeof(float) * 4 * varyings
+                                                : affine ? sizeof(Plane) * 4 * varyings
+                                                         : sizeof(Barycentrics) + sizeof(float) * 12 * varyings);
   return (bytes + 15) / 16 * 16;
 }
-static_assert(triangle_record_size(kMaxVaryings, false) / 16 <= UINT8_MAX);
+static_assert(triangle_record_size(kMaxVaryings, false, false) / 16 <= UINT8_MAX);
 
 /// A growable byte stream that, unlike std::vector, does not zero what it appends.
 class RecordStream {
