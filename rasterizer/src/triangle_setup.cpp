@@ -122,37 +122,35 @@ Edge make_edge(int32_t x0, int32_t y0, int32_t x1, int32_t y1) {
   return e;
 }
 
-/// Sets up and bins one triangle whose vertices are inside the clip volume (w > 0, within the
-/// guard band). `v[k]` points at a position followed by varyings.
-void setup_and_bin(const DrawConstants& dc, const float* const v[3], ChunkBins& bins, DrawStats& stats) {
-  ScreenVertex s[3];
-  for (int k = 0; k < 3; ++k) {
-    const float w = v[k][3];
-    const float inv_w = 1.0f / w;
-    if (!(w > 0) || !std::isfinite(inv_w)) {
-      ++stats.degenerate;
-      return;
-    }
-    const float nx = v[k][0] * inv_w, ny = v[k][1] * inv_w, nz = v[k][2] * inv_w;
-    const float sx = dc.vp_x + (nx + 1.0f) * dc.half_w;
-    const float sy = dc.vp_y + (1.0f - ny) * dc.half_h;
-    // Clipping leaves every vertex inside the guard band up to rounding, which is a few pixels
-    // when a near-plane intersection has w close to 0 (seen: 8 px), and unbounded when an
-    // intersection parameter rounds to 1 between vertices whose w differ by 30 orders of
-    // magnitude (garbage input): the outside vertex itself comes back. Twice the band keeps
-    // the former, whose 64-bit edge constants still fit with room to spare, and drops the latter,
-    // whose subpixel coordinates would overflow.
-    if (!(std::abs(sx) <= 2.0f * kGuardBand && std::abs(sy) <= 2.0f * kGuardBand)) {
-      ++stats.degenerate;
-      return;
-    }
-    s[k].X = static_cast<int32_t>(std::nearbyint(sx * kSubpixelsPerPixel));
-    s[k].Y = static_cast<int32_t>(std::nearbyint(sy * kSubpixelsPerPixel));
-    s[k].x = static_cast<float>(s[k].X) * (1.0f / kSubpixelsPerPixel);
-    s[k].y = static_cast<float>(s[k].Y) * (1.0f / kSubpixelsPerPixel);
-    s[k].z = dc.min_depth + nz * (dc.max_depth - dc.min_depth);
-    s[k].inv_w = inv_w;
-  }
+/// Snaps one vertex of a triangle that needs no clipping: false if it cannot be set up (w not
+/// positive, or beyond twice the guard band). Every multiply-add is an explicit fma, here and in
+/// snap_vertices, so that the two snap a vertex alike (GCC would otherwise fuse some of them).
+bool snap_vertex(const DrawConstants& dc, const float* p, ScreenVertex& s) {
+  const float w = p[3];
+  const float inv_w = 1.0f / w;
+  if (!(w > 0) || !std::isfinite(inv_w)) return false;
+  const float sx = std::fma(std::fma(p[0], inv_w, 1.0f), dc.half_w, dc.vp_x);
+  const float sy = std::fma(std::fma(-p[1], inv_w, 1.0f), dc.half_h, dc.vp_y);
+  // Clipping leaves every vertex inside the guard band up to rounding, which is a few pixels
+  // when a near-plane intersection has w close to 0 (seen: 8 px), and unbounded when an
+  // intersection parameter rounds to 1 between vertices whose w differ by 30 orders of
+  // magnitude (garbage input): the outside vertex itself comes back. Twice the band keeps
+  // the former, whose 64-bit edge constants still fit with room to spare, and drops the latter,
+  // whose subpixel coordinates would overflow.
+  if (!(std::abs(sx) <= 2.0f * kGuardBand && std::abs(sy) <= 2.0f * kGuardBand)) return false;
+  s.X = static_cast<int32_t>(std::nearbyint(sx * kSubpixelsPerPixel));
+  s.Y = static_cast<int32_t>(std::nearbyint(sy * kSubpixelsPerPixel));
+  s.x = static_cast<float>(s.X) * (1.0f / kSubpixelsPerPixel);
+  s.y = static_cast<float>(s.Y) * (1.0f / kSubpixelsPerPixel);
+  s.z = std::fma(p[2] * inv_w, dc.max_depth - dc.min_depth, dc.min_depth);
+  s.inv_w = inv_w;
+  return true;
+}
+
+/// Sets up and bins one triangle from its snapped vertices; `v[k]` points at vertex k's position,
+/// followed by its varyings.
+void setup_snapped(const DrawConstants& dc, const float* const v[3], const ScreenVertex s[3], ChunkBins& bins,
+                   DrawStats& stats) {
   const int64_t area2 = int64_t(s[1].X - s[0].X) * (s[2].Y - s[0].Y) - int64_t(s[2].X - s[0].X) * (s[1].Y - s[0].Y);
   if (area2 == 0) {
     ++stats.degenerate;
@@ -266,6 +264,19 @@ void setup_and_bin(const DrawConstants& dc, const float* const v[3], ChunkBins& 
   ++stats.rasterized;
 }
 
+/// Sets up and bins one triangle whose vertices are inside the clip volume (w > 0, within the
+/// guard band). `v[k]` points at a position followed by varyings.
+void setup_and_bin(const DrawConstants& dc, const float* const v[3], ChunkBins& bins, DrawStats& stats) {
+  ScreenVertex s[3];
+  for (int k = 0; k < 3; ++k) {
+    if (!snap_vertex(dc, v[k], s[k])) {
+      ++stats.degenerate;
+      return;
+    }
+  }
+  setup_snapped(dc, v, s, bins, stats);
+}
+
 /// Which clip-space half-spaces a position lies outside of: bits 0-3 the writable pixel
 /// rectangle (-x, +x, -y, +y), bits 4-5 near and far, bits 6-9 the guard band (-x, +x, -y, +y).
 unsigned outcode(const DrawConstants& dc, const glm::vec4& p) {
@@ -276,41 +287,7 @@ unsigned outcode(const DrawConstants& dc, const glm::vec4& p) {
          unsigned(p.y > dc.guard_max_y * p.w) << 9;
 }
 
-}  // namespace
-
-void bin_staged(const DrawConstants& dc, ChunkBins& bins) {
-  const std::byte* stage = bins.staged.data();
-  for (const ChunkBins::StagedTriangle& st : bins.staged_triangles) {
-    const auto& t = *reinterpret_cast<const TriangleSetup*>(stage + st.offset);
-    const size_t blocks = t.record_blocks;
-    auto emit = [&](int tile) {
-      RecordStream& records = bins.tile_records[tile];
-      if (records.empty()) bins.touched_tiles.push_back(static_cast<uint32_t>(tile));
-      std::byte* out = records.append(16 * blocks);
-      const std::byte* in = stage + st.offset;
-      for (size_t b = 0; b < blocks; ++b) std::memcpy(out + 16 * b, in + 16 * b, 16);
-    };
-    if (st.tx0 == st.tx1 && st.ty0 == st.ty1) {
-      emit(st.ty0 * dc.tiles_x + st.tx0);
-      continue;
-    }
-    for (int ty = st.ty0; ty <= st.ty1; ++ty) {
-      for (int tx = st.tx0; tx <= st.tx1; ++tx) {
-        const int64_t X0 = int64_t(tx) * kTileSize * kSubpixelsPerPixel, X1 = X0 + kTileSize * kSubpixelsPerPixel - 1;
-        const int64_t Y0 = int64_t(ty) * kTileSize * kSubpixelsPerPixel, Y1 = Y0 + kTileSize * kSubpixelsPerPixel - 1;
-        bool outside = false;
-        for (const Edge& e : t.edge) {
-          const int64_t emax = e.c + std::max(e.a * X0, e.a * X1) + std::max(e.b * Y0, e.b * Y1);
-          outside |= emax < 0;
-        }
-        if (!outside) emit(ty * dc.tiles_x + tx);
-      }
-    }
-  }
-  bins.staged.clear();
-  bins.staged_triangles.clear();
-}
-
+/// The scalar path of one triangle: non-finite and trivial rejects, clipping, then setup.
 void process_triangle(const DrawConstants& dc, const glm::vec4* const vertices[3], ChunkBins& bins, DrawStats& stats) {
   const glm::vec4& p0 = vertices[0][0];
   const glm::vec4& p1 = vertices[1][0];
@@ -362,6 +339,103 @@ void process_triangle(const DrawConstants& dc, const glm::vec4* const vertices[3
   for (int k = 1; k + 1 < n; ++k) {
     const float* tri[3] = {buffer[current][0].v, buffer[current][k].v, buffer[current][k + 1].v};
     setup_and_bin(dc, tri, bins, stats);
+  }
+}
+
+
+/// snap_vertex for kLanes vertices at once: lane l of the result is bit l of the returned mask
+/// set and out[l] written when snap_vertex would return true and the vertex lies inside the view
+/// volume (so that its triangle needs no clipping when all three do).
+simd::LaneBits snap_vertices(const DrawConstants& dc, const float* const* rows, int32_t* X, int32_t* Y, float* x,
+                             float* y, float* z, float* inv_w) {
+  using simd::Float;
+  using simd::Int;
+  Float px, py, pz, pw;
+  simd::transpose_rows(rows, px, py, pz, pw);
+  const Float one(1.0f), zero(0.0f);
+  const Float rw = one / pw;
+  const Float sx = xsimd::fma(xsimd::fma(px, rw, one), Float(dc.half_w), Float(dc.vp_x));
+  const Float sy = xsimd::fma(xsimd::fma(-py, rw, one), Float(dc.half_h), Float(dc.vp_y));
+  const Float band(2.0f * kGuardBand);
+  // In the view volume (as process_triangle's inside_view, which also keeps NaN out), w finite
+  // and positive with a finite reciprocal, within twice the guard band (snap_vertex).
+  const auto ok = (xsimd::abs(px) <= pw) & (xsimd::abs(py) <= pw) & (pz >= zero) & (pz <= pw) & (pw > zero) &
+                  (pw - pw == zero) & (rw - rw == zero) & (xsimd::abs(sx) <= band) & (xsimd::abs(sy) <= band);
+  const Int ix = simd::round_to_int(sx * Float(float(kSubpixelsPerPixel)));
+  const Int iy = simd::round_to_int(sy * Float(float(kSubpixelsPerPixel)));
+  ix.store_aligned(X);
+  iy.store_aligned(Y);
+  (xsimd::batch_cast<float>(ix) * Float(1.0f / kSubpixelsPerPixel)).store_aligned(x);
+  (xsimd::batch_cast<float>(iy) * Float(1.0f / kSubpixelsPerPixel)).store_aligned(y);
+  xsimd::fma(pz * rw, Float(dc.max_depth - dc.min_depth), Float(dc.min_depth)).store_aligned(z);
+  rw.store_aligned(inv_w);
+  return simd::to_bits(ok);
+}
+
+}  // namespace
+
+void bin_staged(const DrawConstants& dc, ChunkBins& bins) {
+  const std::byte* stage = bins.staged.data();
+  for (const ChunkBins::StagedTriangle& st : bins.staged_triangles) {
+    const auto& t = *reinterpret_cast<const TriangleSetup*>(stage + st.offset);
+    const size_t blocks = t.record_blocks;
+    auto emit = [&](int tile) {
+      RecordStream& records = bins.tile_records[tile];
+      if (records.empty()) bins.touched_tiles.push_back(static_cast<uint32_t>(tile));
+      std::byte* out = records.append(16 * blocks);
+      const std::byte* in = stage + st.offset;
+      for (size_t b = 0; b < blocks; ++b) std::memcpy(out + 16 * b, in + 16 * b, 16);
+    };
+    if (st.tx0 == st.tx1 && st.ty0 == st.ty1) {
+      emit(st.ty0 * dc.tiles_x + st.tx0);
+      continue;
+    }
+    for (int ty = st.ty0; ty <= st.ty1; ++ty) {
+      for (int tx = st.tx0; tx <= st.tx1; ++tx) {
+        const int64_t X0 = int64_t(tx) * kTileSize * kSubpixelsPerPixel, X1 = X0 + kTileSize * kSubpixelsPerPixel - 1;
+        const int64_t Y0 = int64_t(ty) * kTileSize * kSubpixelsPerPixel, Y1 = Y0 + kTileSize * kSubpixelsPerPixel - 1;
+        bool outside = false;
+        for (const Edge& e : t.edge) {
+          const int64_t emax = e.c + std::max(e.a * X0, e.a * X1) + std::max(e.b * Y0, e.b * Y1);
+          outside |= emax < 0;
+        }
+        if (!outside) emit(ty * dc.tiles_x + tx);
+      }
+    }
+  }
+  bins.staged.clear();
+  bins.staged_triangles.clear();
+}
+
+void process_triangles(const DrawConstants& dc, const glm::vec4* const* vertices, int count, ChunkBins& bins,
+                       DrawStats& stats) {
+  // Vertices are snapped kLanes at a time; a triangle whose three vertices all snapped goes
+  // straight to setup, any other takes the scalar path (checks, clipping, the same snapping).
+  constexpr int kMaxVertices = 3 * kFrontEndBatch;
+  static_assert(kMaxVertices % simd::kLanes == 0 && kMaxVertices <= 64);
+  alignas(64) int32_t X[kMaxVertices], Y[kMaxVertices];
+  alignas(64) float x[kMaxVertices], y[kMaxVertices], z[kMaxVertices], inv_w[kMaxVertices];
+  const int n = 3 * count;
+  static_assert(sizeof(glm::vec4) == 4 * sizeof(float));
+  uint64_t snapped = 0;
+  for (int base = 0; base < n; base += simd::kLanes) {
+    const float* rows[simd::kLanes];
+    for (int l = 0; l < simd::kLanes; ++l) rows[l] = &vertices[std::min(base + l, n - 1)]->x;
+    snapped |= uint64_t(snap_vertices(dc, rows, X + base, Y + base, x + base, y + base, z + base, inv_w + base)) << base;
+  }
+  for (int t = 0; t < count; ++t) {
+    if ((snapped >> (3 * t) & 7) != 7) {
+      process_triangle(dc, vertices + 3 * t, bins, stats);
+      continue;
+    }
+    ScreenVertex s[3];
+    const float* v[3];
+    for (int k = 0; k < 3; ++k) {
+      const int i = 3 * t + k;
+      s[k] = {X[i], Y[i], x[i], y[i], z[i], inv_w[i]};
+      v[k] = &vertices[i]->x;
+    }
+    setup_snapped(dc, v, s, bins, stats);
   }
 }
 

@@ -280,6 +280,29 @@ class ScopedFlushDenormals {
   unsigned saved_;
 };
 
+/// Transposes kLanes float4 rows into four batches: lane l of x, y, z, w is rows[l][0..3] (vertex
+/// positions into the front end's lanes). Rows need no alignment.
+inline void transpose_rows(const float* const* rows, Float& x, Float& y, Float& z, Float& w) {
+#if defined(__AVX__) && !defined(__AVX512F__)
+  static_assert(kLanes == 8);
+  auto pair = [&](int l) {  // rows l and l + 4 in the two 128-bit halves
+    return _mm256_insertf128_ps(_mm256_castps128_ps256(_mm_loadu_ps(rows[l])), _mm_loadu_ps(rows[l + 4]), 1);
+  };
+  const __m256 r04 = pair(0), r15 = pair(1), r26 = pair(2), r37 = pair(3);
+  const __m256 xy01 = _mm256_unpacklo_ps(r04, r15), zw01 = _mm256_unpackhi_ps(r04, r15);
+  const __m256 xy23 = _mm256_unpacklo_ps(r26, r37), zw23 = _mm256_unpackhi_ps(r26, r37);
+  x = _mm256_shuffle_ps(xy01, xy23, 0x44);
+  y = _mm256_shuffle_ps(xy01, xy23, 0xee);
+  z = _mm256_shuffle_ps(zw01, zw23, 0x44);
+  w = _mm256_shuffle_ps(zw01, zw23, 0xee);
+#else
+  x = lanes([&](int l) { return rows[l][0]; });
+  y = lanes([&](int l) { return rows[l][1]; });
+  z = lanes([&](int l) { return rows[l][2]; });
+  w = lanes([&](int l) { return rows[l][3]; });
+#endif
+}
+
 /// Fills n 32-bit words (clears of whole tiles). On x86-64 this is `rep stosd`: its fast-string
 /// path writes whole cache lines without first reading them from memory, which vector stores
 /// must (read for ownership). Measured on W1's color and depth clears: ~1 ms of 16 a frame.

@@ -564,32 +564,24 @@ void TileRasterizer<PS, N, kEarlyZ, S>::shade_stamp(const TriangleSetup& t, int 
   for (int s = 0; s < S; ++s) write_color(stamp, s, coverage[s], color, packed);
 }
 
-/// Triangles go through the front end in batches: the vertex functor runs for a whole batch, then
-/// setup, then binning (ChunkBins). Setup reads vertex outputs in other widths than a functor
-/// writes them (a float4 compared or copied whole after four float stores), which the CPU cannot
-/// forward from its store buffer; read right after the functor, each such load waited until every
-/// older store, the binned records' included, had reached the cache (measured: 13% of W2's frame).
-/// A batch later, the vertices are in the cache.
-inline constexpr int kFrontEndBatch = 16;
-
 /// Runs the vertex functor for a chunk of triangles and sets them up into `bins`.
 template <class VS>
 void front_end_chunk(const DrawConstants& dc, const Geometry& geometry, const VS& vs, uint32_t first, uint32_t last,
                      ChunkBins& bins, DrawStats& stats) {
   constexpr int N = VS::kVaryings;
   using Vertex = VertexOutput<N>;
-  // process_triangle reads the position and then N float4 varyings from one pointer.
+  // Setup reads the position and then N float4 varyings from one pointer.
   static_assert(N == 0 || sizeof(Vertex) == sizeof(glm::vec4) * (1 + N), "position and varyings must be contiguous");
   if (geometry.index_format == Geometry::IndexFormat::None) {
     Vertex v[kFrontEndBatch][3];
+    const glm::vec4* positions[3 * kFrontEndBatch];
+    for (int i = 0; i < kFrontEndBatch; ++i)
+      for (int k = 0; k < 3; ++k) positions[3 * i + k] = &v[i][k].position;
     for (uint32_t base = first; base < last; base += kFrontEndBatch) {
       const int n = static_cast<int>(std::min<uint32_t>(kFrontEndBatch, last - base));
       for (int i = 0; i < n; ++i)
         for (int k = 0; k < 3; ++k) vs(3 * (base + i) + k, v[i][k]);
-      for (int i = 0; i < n; ++i) {
-        const glm::vec4* p[3] = {&v[i][0].position, &v[i][1].position, &v[i][2].position};
-        process_triangle(dc, p, bins, stats);
-      }
+      process_triangles(dc, positions, n, bins, stats);
       bin_staged(dc, bins);
     }
     return;
@@ -604,11 +596,12 @@ void front_end_chunk(const DrawConstants& dc, const Geometry& geometry, const VS
   };
   std::vector<Entry> cache(kCacheSize);
   Vertex spill[kFrontEndBatch][3];
-  const glm::vec4* pending[kFrontEndBatch][3];
+  const glm::vec4* pending[3 * kFrontEndBatch];  // vertex k of pending triangle t at 3 t + k
   int pending_count = 0;
   uint32_t batch = 0;
   auto run_batch = [&] {
-    for (int i = 0; i < pending_count; ++i) process_triangle(dc, pending[i], bins, stats);
+    if (pending_count == 0) return;
+    process_triangles(dc, pending, pending_count, bins, stats);
     bin_staged(dc, bins);
     pending_count = 0;
     ++batch;
@@ -630,7 +623,7 @@ void front_end_chunk(const DrawConstants& dc, const Geometry& geometry, const VS
       evicts |= e.index != idx[k] && e.batch == batch;
     }
     if (evicts) run_batch();
-    const glm::vec4** p = pending[pending_count];
+    const glm::vec4** p = pending + 3 * pending_count;
     for (int k = 0; k < 3; ++k) {
       const uint32_t slot = idx[k] % kCacheSize;
       bool collides = false;  // an earlier vertex of this triangle lives in the same slot
