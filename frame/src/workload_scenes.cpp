@@ -45,7 +45,7 @@ class FillScene final : public BuiltinScene {
   void render(Context& ctx) override {
     ctx.reset_stats();
     clear_color(ctx, color_, {0, 0, 0, 1});
-    clear_depth_stencil(ctx, depth_, 1.0f, 0);
+    clear_depth(ctx, depth_, 1.0f);  // as the peer: stencil neither cleared nor used
     const Framebuffer fb{&color_, &depth_};
     const Geometry geometry = Geometry::indexed(std::span<const uint16_t>(workload_.indices),
                                                 static_cast<uint32_t>(workload_.vertices.size()));
@@ -91,7 +91,7 @@ class TrisScene final : public BuiltinScene {
   void render(Context& ctx) override {
     ctx.reset_stats();
     clear_color(ctx, color_, {0.1f, 0.1f, 0.1f, 1.0f});
-    clear_depth_stencil(ctx, depth_, 1.0f, 0);
+    clear_depth(ctx, depth_, 1.0f);  // as the peer: stencil neither cleared nor used
     const Framebuffer fb{&color_, &depth_};
     draw(ctx, fb, state_, Geometry::non_indexed(static_cast<uint32_t>(workload_.vertices.size())),
                   Vertex{workload_.vertices.data(), 2.0f / width_, 2.0f / height_}, Pixel{});

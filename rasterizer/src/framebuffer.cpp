@@ -10,6 +10,7 @@
 #include <cmath>
 #include <cstdlib>
 #include <new>
+#include <optional>
 #include <stdexcept>
 #include <string>
 
@@ -76,20 +77,21 @@ class ClearColorCommand final : public detail::Command {
   uint32_t value_;
 };
 
+/// Clears depth, and stencil unless it is left out.
 class ClearDepthStencilCommand final : public detail::Command {
  public:
-  ClearDepthStencilCommand(DepthStencilTarget& target, float depth, uint8_t stencil)
+  ClearDepthStencilCommand(DepthStencilTarget& target, float depth, std::optional<uint8_t> stencil)
       : target_(target), depth_(depth), stencil_(stencil) {}
   void execute(int tile, detail::TileCounters&) override {
     const size_t n = target_.layout().elements_per_tile();
     simd::fill_u32(reinterpret_cast<uint32_t*>(target_.depth_tile(tile)), std::bit_cast<uint32_t>(depth_), n);
-    std::fill_n(target_.stencil_tile(tile), n, stencil_);
+    if (stencil_) std::fill_n(target_.stencil_tile(tile), n, *stencil_);
   }
 
  private:
   DepthStencilTarget& target_;
   float depth_;
-  uint8_t stencil_;
+  std::optional<uint8_t> stencil_;
 };
 
 /// Box filter of one tile's samples into the image (a plain copy for one sample).
@@ -139,9 +141,19 @@ void clear_color(Context& ctx, ColorTarget& target, glm::vec4 color) {
   queue_for(ctx, target.layout()).push(std::make_unique<ClearColorCommand>(target, pack_rgba8(color)));
 }
 
-void clear_depth_stencil(Context& ctx, DepthStencilTarget& target, float depth, uint8_t stencil) {
+namespace {
+void record_depth_clear(Context& ctx, DepthStencilTarget& target, float depth, std::optional<uint8_t> stencil) {
   const float d = std::clamp(std::isnan(depth) ? 0.0f : depth, 0.0f, 1.0f);
   queue_for(ctx, target.layout()).push(std::make_unique<ClearDepthStencilCommand>(target, d, stencil));
+}
+}  // namespace
+
+void clear_depth_stencil(Context& ctx, DepthStencilTarget& target, float depth, uint8_t stencil) {
+  record_depth_clear(ctx, target, depth, stencil);
+}
+
+void clear_depth(Context& ctx, DepthStencilTarget& target, float depth) {
+  record_depth_clear(ctx, target, depth, std::nullopt);
 }
 
 void resolve_into(Context& ctx, const ColorTarget& target, Image& image) {

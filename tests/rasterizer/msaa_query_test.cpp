@@ -218,6 +218,14 @@ TEST(Clear, PacksRoundToNearestClampsAndZeroesNaN) {
   clear_depth_stencil(ctx, ds, 1.5f, 0);
   ctx.flush();
   EXPECT_EQ(ds.depth(0, 0, 0), 1.0f);
+  // A depth-only clear leaves stencil as it was.
+  clear_depth_stencil(ctx, ds, 0.5f, 0x3c);
+  clear_depth(ctx, ds, 0.25f);
+  ctx.flush();
+  for (int s = 0; s < 2; ++s) {
+    EXPECT_EQ(ds.depth(2, 2, s), 0.25f);
+    EXPECT_EQ(ds.stencil(2, 2, s), 0x3c);
+  }
 }
 
 }  // namespace

@@ -134,6 +134,8 @@ inline glm::vec4 unpack_rgba8(uint32_t rgba) {
 /// Records a clear of every sample (runs at the next flush, like draws).
 void clear_color(Context& ctx, ColorTarget& target, glm::vec4 color);
 void clear_depth_stencil(Context& ctx, DepthStencilTarget& target, float depth, uint8_t stencil);
+/// Depth alone (D3DCLEAR_ZBUFFER without D3DCLEAR_STENCIL): stencil keeps its values.
+void clear_depth(Context& ctx, DepthStencilTarget& target, float depth);
 
 /// Box-filter resolve: each channel of each pixel is the rounded mean of its samples' 8-bit
 /// values (a plain copy out of the tiled layout for one sample). Flushes the context.
