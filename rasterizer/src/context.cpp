@@ -9,6 +9,7 @@
 
 #include <algorithm>
 #include <atomic>
+#include <chrono>
 
 namespace luxel::rasterizer {
 
@@ -85,9 +86,30 @@ void Context::run_items(int thread) {
   }
 }
 
+namespace {
+/// How long an idle thread spins before it blocks. The front end runs one parallel_for per draw,
+/// and waking a blocked thread takes tens of microseconds: a sizable share of a small draw's
+/// front end (W1's eight draws of 4,608 triangles take ~0.2 ms each).
+constexpr auto kSpinTime = std::chrono::microseconds(50);
+
+/// Spins until done() or kSpinTime has passed; true if done.
+template <class Done>
+bool spin_until(Done done) {
+  const auto start = std::chrono::steady_clock::now();
+  for (;;) {
+    for (int i = 0; i < 64; ++i) {
+      if (done()) return true;
+      simd::spin_pause();
+    }
+    if (std::chrono::steady_clock::now() - start > kSpinTime) return false;
+  }
+}
+}  // namespace
+
 void Context::worker_main(int thread) {
   uint64_t seen = 0;
   for (;;) {
+    spin_until([&] { return generation_.load(std::memory_order_acquire) != seen; });
     {
       std::unique_lock lock(mutex_);
       wake_.wait(lock, [&] { return stopping_ || generation_ != seen; });
@@ -119,6 +141,7 @@ void Context::parallel_for(int count, const std::function<void(int, int)>& fn) {
   }
   wake_.notify_all();
   run_items(0);
+  spin_until([&] { return busy_workers_.load(std::memory_order_acquire) == 0; });
   std::unique_lock lock(mutex_);
   done_.wait(lock, [&] { return busy_workers_ == 0; });
   job_ = nullptr;

@@ -82,8 +82,9 @@ class Context {
   std::condition_variable done_;
   const std::function<void(int, int)>* job_ = nullptr;
   int job_count_ = 0;
-  uint64_t generation_ = 0;
-  int busy_workers_ = 0;
+  // Written under mutex_; atomic so that threads can spin on them before blocking.
+  std::atomic<uint64_t> generation_{0};
+  std::atomic<int> busy_workers_{0};
   bool stopping_ = false;
   alignas(64) std::atomic<int> next_item_{0};
   OcclusionQuery* active_query_ = nullptr;

@@ -303,6 +303,13 @@ inline void transpose_rows(const float* const* rows, Float& x, Float& y, Float& 
 #endif
 }
 
+/// Tells the CPU this is a spin-wait loop (x86 `pause`: saves power, frees the sibling thread).
+inline void spin_pause() {
+#if defined(__x86_64__)
+  __builtin_ia32_pause();
+#endif
+}
+
 /// Fills n 32-bit words (clears of whole tiles). On x86-64 this is `rep stosd`: its fast-string
 /// path writes whole cache lines without first reading them from memory, which vector stores
 /// must (read for ownership). Measured on W1's color and depth clears: ~1 ms of 16 a frame.
