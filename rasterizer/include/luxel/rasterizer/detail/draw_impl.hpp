@@ -726,7 +726,8 @@ void draw(Context& ctx, const Framebuffer& fb, const PipelineState& state, const
     const uint32_t part = static_cast<uint32_t>(
         std::min<uint64_t>(triangles - part_first, kMaxPendingTriangles - queue.pending_triangles()));
     // Front end now, in parallel over chunks of triangles; each chunk bins into its own lists.
-    const uint32_t per_chunk = std::clamp<uint32_t>((part + kChunksPerDraw - 1) / kChunksPerDraw,
+    const uint32_t threads = static_cast<uint32_t>(ctx.thread_count());
+    const uint32_t per_chunk = std::clamp<uint32_t>((part + threads - 1) / threads,
                                                     kMinTrianglesPerChunk, kTrianglesPerChunk);
     const int chunk_count = static_cast<int>((part + per_chunk - 1) / per_chunk);
     std::vector<ChunkBins*> chunks = queue.allocate_chunks(chunk_count);
