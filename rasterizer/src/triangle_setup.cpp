@@ -122,29 +122,48 @@ Edge make_edge(int32_t x0, int32_t y0, int32_t x1, int32_t y1) {
   return e;
 }
 
-/// Snaps one vertex of a triangle that needs no clipping: false if it cannot be set up (w not
-/// positive, or beyond twice the guard band). Every multiply-add is an explicit fma, here and in
-/// snap_vertices, so that the two snap a vertex alike (GCC would otherwise fuse some of them).
-bool snap_vertex(const DrawConstants& dc, const float* p, ScreenVertex& s) {
-  const float w = p[3];
-  const float inv_w = 1.0f / w;
-  if (!(w > 0) || !std::isfinite(inv_w)) return false;
-  const float sx = std::fma(std::fma(p[0], inv_w, 1.0f), dc.half_w, dc.vp_x);
-  const float sy = std::fma(std::fma(-p[1], inv_w, 1.0f), dc.half_h, dc.vp_y);
-  // Clipping leaves every vertex inside the guard band up to rounding, which is a few pixels
-  // when a near-plane intersection has w close to 0 (seen: 8 px), and unbounded when an
-  // intersection parameter rounds to 1 between vertices whose w differ by 30 orders of
-  // magnitude (garbage input): the outside vertex itself comes back. Twice the band keeps
-  // the former, whose 64-bit edge constants still fit with room to spare, and drops the latter,
-  // whose subpixel coordinates would overflow.
-  if (!(std::abs(sx) <= 2.0f * kGuardBand && std::abs(sy) <= 2.0f * kGuardBand)) return false;
-  s.X = static_cast<int32_t>(std::nearbyint(sx * kSubpixelsPerPixel));
-  s.Y = static_cast<int32_t>(std::nearbyint(sy * kSubpixelsPerPixel));
-  s.x = static_cast<float>(s.X) * (1.0f / kSubpixelsPerPixel);
-  s.y = static_cast<float>(s.Y) * (1.0f / kSubpixelsPerPixel);
-  s.z = std::fma(p[2] * inv_w, dc.max_depth - dc.min_depth, dc.min_depth);
-  s.inv_w = inv_w;
-  return true;
+/// Snapped screen positions of kLanes vertices, lane l from rows[l].
+struct SnappedLanes {
+  alignas(64) int32_t X[simd::kLanes], Y[simd::kLanes];
+  alignas(64) float x[simd::kLanes], y[simd::kLanes], z[simd::kLanes], inv_w[simd::kLanes];
+
+  ScreenVertex vertex(int l) const { return {X[l], Y[l], x[l], y[l], z[l], inv_w[l]}; }
+};
+
+/// Snaps kLanes vertices (clip-space positions rows[l]) to 1/256 pixel. Every vertex is snapped
+/// here, clipped or not, so a vertex shared by a clipped and an unclipped triangle lands on the
+/// same subpixel. Returns the lanes that can be set up: w positive with a finite reciprocal, and
+/// within twice the guard band. Clipping leaves every vertex inside the band up to rounding,
+/// which is a few pixels when a near-plane intersection has w close to 0 (seen: 8 px), and
+/// unbounded when an intersection parameter rounds to 1 between vertices whose w differ by 30
+/// orders of magnitude (garbage input): the outside vertex itself comes back. Twice the band keeps
+/// the former, whose 64-bit edge constants still fit with room to spare, and drops the latter,
+/// whose subpixel coordinates would overflow. `in_view` gets the lanes inside the view volume
+/// with finite coordinates (process_triangle's inside_view): a triangle of three such vertices
+/// needs no clipping.
+simd::LaneBits snap_vertices(const DrawConstants& dc, const float* const* rows, SnappedLanes& out,
+                             simd::LaneBits& in_view) {
+  using simd::Float;
+  using simd::Int;
+  Float px, py, pz, pw;
+  simd::transpose_rows(rows, px, py, pz, pw);
+  const Float one(1.0f), zero(0.0f);
+  const Float rw = one / pw;
+  const Float sx = xsimd::fma(xsimd::fma(px, rw, one), Float(dc.half_w), Float(dc.vp_x));
+  const Float sy = xsimd::fma(xsimd::fma(-py, rw, one), Float(dc.half_h), Float(dc.vp_y));
+  const Float band(2.0f * kGuardBand);
+  const auto snappable = (pw > zero) & (rw - rw == zero) & (xsimd::abs(sx) <= band) & (xsimd::abs(sy) <= band);
+  const auto view = (xsimd::abs(px) <= pw) & (xsimd::abs(py) <= pw) & (pz >= zero) & (pz <= pw) & (pw - pw == zero);
+  const Int ix = simd::round_to_int(sx * Float(float(kSubpixelsPerPixel)));
+  const Int iy = simd::round_to_int(sy * Float(float(kSubpixelsPerPixel)));
+  ix.store_aligned(out.X);
+  iy.store_aligned(out.Y);
+  (xsimd::batch_cast<float>(ix) * Float(1.0f / kSubpixelsPerPixel)).store_aligned(out.x);
+  (xsimd::batch_cast<float>(iy) * Float(1.0f / kSubpixelsPerPixel)).store_aligned(out.y);
+  xsimd::fma(pz * rw, Float(dc.max_depth - dc.min_depth), Float(dc.min_depth)).store_aligned(out.z);
+  rw.store_aligned(out.inv_w);
+  in_view = simd::to_bits(view);
+  return simd::to_bits(snappable);
 }
 
 /// Sets up and bins one triangle from its snapped vertices; `v[k]` points at vertex k's position,
@@ -267,13 +286,15 @@ void setup_snapped(const DrawConstants& dc, const float* const v[3], const Scree
 /// Sets up and bins one triangle whose vertices are inside the clip volume (w > 0, within the
 /// guard band). `v[k]` points at a position followed by varyings.
 void setup_and_bin(const DrawConstants& dc, const float* const v[3], ChunkBins& bins, DrawStats& stats) {
-  ScreenVertex s[3];
-  for (int k = 0; k < 3; ++k) {
-    if (!snap_vertex(dc, v[k], s[k])) {
-      ++stats.degenerate;
-      return;
-    }
+  const float* rows[simd::kLanes];
+  for (int l = 0; l < simd::kLanes; ++l) rows[l] = v[std::min(l, 2)];
+  SnappedLanes snapped;
+  simd::LaneBits in_view;
+  if ((snap_vertices(dc, rows, snapped, in_view) & 7) != 7) {
+    ++stats.degenerate;
+    return;
   }
+  const ScreenVertex s[3] = {snapped.vertex(0), snapped.vertex(1), snapped.vertex(2)};
   setup_snapped(dc, v, s, bins, stats);
 }
 
@@ -343,35 +364,6 @@ void process_triangle(const DrawConstants& dc, const glm::vec4* const vertices[3
 }
 
 
-/// snap_vertex for kLanes vertices at once: lane l of the result is bit l of the returned mask
-/// set and out[l] written when snap_vertex would return true and the vertex lies inside the view
-/// volume (so that its triangle needs no clipping when all three do).
-simd::LaneBits snap_vertices(const DrawConstants& dc, const float* const* rows, int32_t* X, int32_t* Y, float* x,
-                             float* y, float* z, float* inv_w) {
-  using simd::Float;
-  using simd::Int;
-  Float px, py, pz, pw;
-  simd::transpose_rows(rows, px, py, pz, pw);
-  const Float one(1.0f), zero(0.0f);
-  const Float rw = one / pw;
-  const Float sx = xsimd::fma(xsimd::fma(px, rw, one), Float(dc.half_w), Float(dc.vp_x));
-  const Float sy = xsimd::fma(xsimd::fma(-py, rw, one), Float(dc.half_h), Float(dc.vp_y));
-  const Float band(2.0f * kGuardBand);
-  // In the view volume (as process_triangle's inside_view, which also keeps NaN out), w finite
-  // and positive with a finite reciprocal, within twice the guard band (snap_vertex).
-  const auto ok = (xsimd::abs(px) <= pw) & (xsimd::abs(py) <= pw) & (pz >= zero) & (pz <= pw) & (pw > zero) &
-                  (pw - pw == zero) & (rw - rw == zero) & (xsimd::abs(sx) <= band) & (xsimd::abs(sy) <= band);
-  const Int ix = simd::round_to_int(sx * Float(float(kSubpixelsPerPixel)));
-  const Int iy = simd::round_to_int(sy * Float(float(kSubpixelsPerPixel)));
-  ix.store_aligned(X);
-  iy.store_aligned(Y);
-  (xsimd::batch_cast<float>(ix) * Float(1.0f / kSubpixelsPerPixel)).store_aligned(x);
-  (xsimd::batch_cast<float>(iy) * Float(1.0f / kSubpixelsPerPixel)).store_aligned(y);
-  xsimd::fma(pz * rw, Float(dc.max_depth - dc.min_depth), Float(dc.min_depth)).store_aligned(z);
-  rw.store_aligned(inv_w);
-  return simd::to_bits(ok);
-}
-
 }  // namespace
 
 void bin_staged(const DrawConstants& dc, ChunkBins& bins) {
@@ -409,22 +401,22 @@ void bin_staged(const DrawConstants& dc, ChunkBins& bins) {
 
 void process_triangles(const DrawConstants& dc, const glm::vec4* const* vertices, int count, ChunkBins& bins,
                        DrawStats& stats) {
-  // Vertices are snapped kLanes at a time; a triangle whose three vertices all snapped goes
-  // straight to setup, any other takes the scalar path (checks, clipping, the same snapping).
+  // Vertices are snapped kLanes at a time; a triangle whose three vertices snapped inside the
+  // view volume goes straight to setup, any other to process_triangle (checks, clipping).
   constexpr int kMaxVertices = 3 * kFrontEndBatch;
   static_assert(kMaxVertices % simd::kLanes == 0 && kMaxVertices <= 64);
-  alignas(64) int32_t X[kMaxVertices], Y[kMaxVertices];
-  alignas(64) float x[kMaxVertices], y[kMaxVertices], z[kMaxVertices], inv_w[kMaxVertices];
+  SnappedLanes snapped[kMaxVertices / simd::kLanes];
   const int n = 3 * count;
-  static_assert(sizeof(glm::vec4) == 4 * sizeof(float));
-  uint64_t snapped = 0;
+  uint64_t ready = 0;  // bit i: vertex i snapped and inside the view volume
   for (int base = 0; base < n; base += simd::kLanes) {
     const float* rows[simd::kLanes];
     for (int l = 0; l < simd::kLanes; ++l) rows[l] = &vertices[std::min(base + l, n - 1)]->x;
-    snapped |= uint64_t(snap_vertices(dc, rows, X + base, Y + base, x + base, y + base, z + base, inv_w + base)) << base;
+    simd::LaneBits in_view;
+    const simd::LaneBits bits = snap_vertices(dc, rows, snapped[base / simd::kLanes], in_view);
+    ready |= uint64_t(bits & in_view) << base;
   }
   for (int t = 0; t < count; ++t) {
-    if ((snapped >> (3 * t) & 7) != 7) {
+    if ((ready >> (3 * t) & 7) != 7) {
       process_triangle(dc, vertices + 3 * t, bins, stats);
       continue;
     }
@@ -432,7 +424,7 @@ void process_triangles(const DrawConstants& dc, const glm::vec4* const* vertices
     const float* v[3];
     for (int k = 0; k < 3; ++k) {
       const int i = 3 * t + k;
-      s[k] = {X[i], Y[i], x[i], y[i], z[i], inv_w[i]};
+      s[k] = snapped[i / simd::kLanes].vertex(i % simd::kLanes);
       v[k] = &vertices[i]->x;
     }
     setup_snapped(dc, v, s, bins, stats);
