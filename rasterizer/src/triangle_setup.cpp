@@ -32,8 +32,6 @@ void ChunkBins::reset(int tile_count) {
     for (uint32_t t : touched_tiles) tile_records[t].clear();
   }
   touched_tiles.clear();
-  staged.clear();
-  staged_triangles.clear();
 }
 
 namespace {
@@ -94,12 +92,6 @@ bool finite_position(const glm::vec4& p) {
   return std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z) && std::isfinite(p.w);
 }
 
-struct ScreenVertex {
-  int32_t X, Y;    // subpixels
-  float x, y;      // pixels (snapped)
-  float z, inv_w;
-};
-
 /// Screen-space gradients of values at the snapped vertices: the two edge vectors from vertex
 /// 0 (pixels) and one over their cross product (the signed doubled area).
 struct PlaneBasis {
@@ -114,20 +106,17 @@ struct PlaneBasis {
 
 Edge make_edge(int32_t x0, int32_t y0, int32_t x1, int32_t y1) {
   const int32_t dx = x1 - x0, dy = y1 - y0;
-  Edge e{-dy, dx, int64_t(dy) * x0 - int64_t(dx) * y0};
   // Top-left rule (y down, interior on the positive side): left edges go up, top edges are
-  // horizontal and go right. Samples exactly on other edges are outside.
-  const bool top_left = dy < 0 || (dy == 0 && dx > 0);
-  if (!top_left) e.c -= 1;
-  return e;
+  // horizontal and go right. Samples exactly on other edges are outside. (Bitwise, not
+  // short-circuit: the edge directions of a mesh are random, a branch here mispredicts.)
+  const bool top_left = (dy < 0) | ((dy == 0) & (dx > 0));
+  return {-dy, dx, int64_t(dy) * x0 - int64_t(dx) * y0 - int64_t(!top_left)};
 }
 
 /// Snapped screen positions of kLanes vertices, lane l from rows[l].
 struct SnappedLanes {
   alignas(64) int32_t X[simd::kLanes], Y[simd::kLanes];
   alignas(64) float x[simd::kLanes], y[simd::kLanes], z[simd::kLanes], inv_w[simd::kLanes];
-
-  ScreenVertex vertex(int l) const { return {X[l], Y[l], x[l], y[l], z[l], inv_w[l]}; }
 };
 
 /// Snaps kLanes vertices (clip-space positions rows[l]) to 1/256 pixel. Every vertex is snapped
@@ -139,8 +128,7 @@ struct SnappedLanes {
 /// orders of magnitude (garbage input): the outside vertex itself comes back. Twice the band keeps
 /// the former, whose 64-bit edge constants still fit with room to spare, and drops the latter,
 /// whose subpixel coordinates would overflow. `in_view` gets the lanes inside the view volume
-/// with finite coordinates (process_triangle's inside_view): a triangle of three such vertices
-/// needs no clipping.
+/// with finite coordinates: a triangle of three such vertices needs no clipping.
 simd::LaneBits snap_vertices(const DrawConstants& dc, const float* const* rows, SnappedLanes& out,
                              simd::LaneBits& in_view) {
   using simd::Float;
@@ -166,39 +154,138 @@ simd::LaneBits snap_vertices(const DrawConstants& dc, const float* const* rows, 
   return simd::to_bits(snappable);
 }
 
-/// Sets up and bins one triangle from its snapped vertices; `v[k]` points at vertex k's position,
-/// followed by its varyings.
-void setup_snapped(const DrawConstants& dc, const float* const v[3], const ScreenVertex s[3], ChunkBins& bins,
-                   DrawStats& stats) {
-  const int64_t area2 = int64_t(s[1].X - s[0].X) * (s[2].Y - s[0].Y) - int64_t(s[2].X - s[0].X) * (s[1].Y - s[0].Y);
-  if (area2 == 0) {
-    ++stats.degenerate;
-    return;
+/// kLanes triangles, lane l triangle l: where each vertex's data is (position, then varyings),
+/// and the vertices snapped.
+struct TriangleLanes {
+  const float* data[3][simd::kLanes];
+  SnappedLanes vertex[3];
+  simd::LaneBits snappable = 0;  ///< lanes whose three vertices snapped
+  simd::LaneBits in_view = 0;    ///< lanes whose three vertices lie inside the view volume
+
+  /// Snaps the vertices of triangles 0..count-1 (the lanes above repeat the last triangle).
+  void snap(const DrawConstants& dc, int count) {
+    snappable = in_view = simd::kAllLanes;
+    for (int k = 0; k < 3; ++k) {
+      const float* rows[simd::kLanes];
+      for (int l = 0; l < simd::kLanes; ++l) rows[l] = data[k][std::min(l, count - 1)];
+      simd::LaneBits view;
+      snappable &= snap_vertices(dc, rows, vertex[k], view);
+      in_view &= view;
+    }
   }
-  const bool clockwise = area2 > 0;  // on screen, y down
-  const CullMode cull = dc.rasterizer.cull;
-  if ((cull == CullMode::CW && clockwise) || (cull == CullMode::CCW && !clockwise)) {
-    ++stats.culled;
-    return;
-  }
+};
+
+/// What setup computes for kLanes triangles at once, lane l for triangle l. The products of
+/// subpixel coordinates (the doubled area, up to 2^48) are exact in doubles, as the planes were
+/// computed in doubles one triangle at a time: the results are the same bits.
+struct SetupLanes {
+  alignas(64) int32_t x0[simd::kLanes], y0[simd::kLanes], x1[simd::kLanes], y1[simd::kLanes];
+  alignas(64) float z_q0[simd::kLanes], z_dqdx[simd::kLanes], z_dqdy[simd::kLanes];
+  alignas(64) double e1x[simd::kLanes], e1y[simd::kLanes], e2x[simd::kLanes], e2y[simd::kLanes];
+  alignas(64) double inv_det[simd::kLanes];
+  simd::LaneBits zero_area = 0;  ///< degenerate after snapping
+  simd::LaneBits culled = 0;     ///< facing away by the cull mode (zero-area lanes excluded)
+  simd::LaneBits empty = 0;      ///< no pixel inside the clip rectangle
+  simd::LaneBits clockwise = 0;  ///< on screen, y down
+  simd::LaneBits small = 0;      ///< TriangleSetup::small
+  simd::LaneBits affine = 0;     ///< equal 1/w at the three vertices
+
+  PlaneBasis basis(int l) const { return {e1x[l], e1y[l], e2x[l], e2y[l], inv_det[l]}; }
+};
+
+void setup_lanes(const DrawConstants& dc, const TriangleLanes& tri, SetupLanes& out) {
+  using simd::Double;
+  using simd::Float;
+  using simd::Int;
+  constexpr int kHalf = static_cast<int>(Double::size);
+  const SnappedLanes* v = tri.vertex;
+  const Int X0 = Int::load_aligned(v[0].X), X1 = Int::load_aligned(v[1].X), X2 = Int::load_aligned(v[2].X);
+  const Int Y0 = Int::load_aligned(v[0].Y), Y1 = Int::load_aligned(v[1].Y), Y2 = Int::load_aligned(v[2].Y);
 
   // Bounds: a sample lies in [0, 240] subpixels from its pixel's corner, so the pixels that
   // may hold a covered sample are those that meet the vertices' bounding box.
-  const int32_t min_x = std::min({s[0].X, s[1].X, s[2].X}), max_x = std::max({s[0].X, s[1].X, s[2].X});
-  const int32_t min_y = std::min({s[0].Y, s[1].Y, s[2].Y}), max_y = std::max({s[0].Y, s[1].Y, s[2].Y});
-  const int x0 = std::max(dc.clip_x0, min_x >> kSubpixelBits);
-  const int y0 = std::max(dc.clip_y0, min_y >> kSubpixelBits);
-  const int x1 = std::min(dc.clip_x1, (max_x >> kSubpixelBits) + 1);
-  const int y1 = std::min(dc.clip_y1, (max_y >> kSubpixelBits) + 1);
-  if (x0 >= x1 || y0 >= y1) {
+  const Int min_x = xsimd::min(X0, xsimd::min(X1, X2)), max_x = xsimd::max(X0, xsimd::max(X1, X2));
+  const Int min_y = xsimd::min(Y0, xsimd::min(Y1, Y2)), max_y = xsimd::max(Y0, xsimd::max(Y1, Y2));
+  const Int x0 = xsimd::max(Int(dc.clip_x0), min_x >> kSubpixelBits);
+  const Int y0 = xsimd::max(Int(dc.clip_y0), min_y >> kSubpixelBits);
+  const Int x1 = xsimd::min(Int(dc.clip_x1), (max_x >> kSubpixelBits) + Int(1));
+  const Int y1 = xsimd::min(Int(dc.clip_y1), (max_y >> kSubpixelBits) + Int(1));
+  x0.store_aligned(out.x0);
+  y0.store_aligned(out.y0);
+  x1.store_aligned(out.x1);
+  y1.store_aligned(out.y1);
+  out.empty = simd::to_bits((x0 >= x1) | (y0 >= y1));
+  const Int small_span(kSmallTriangleSize * kSubpixelsPerPixel);
+  out.small = simd::to_bits((max_x - min_x < small_span) & (max_y - min_y < small_span));
+  const Float w0 = Float::load_aligned(v[0].inv_w);
+  out.affine = simd::to_bits((w0 == Float::load_aligned(v[1].inv_w)) & (w0 == Float::load_aligned(v[2].inv_w)));
+
+  // The doubled signed area and the depth plane, in doubles, the low lanes then the high.
+  Double dx1[2], dy1[2], dx2[2], dy2[2], z0[2], z1[2], z2[2];
+  simd::to_doubles(X1 - X0, dx1[0], dx1[1]);
+  simd::to_doubles(Y1 - Y0, dy1[0], dy1[1]);
+  simd::to_doubles(X2 - X0, dx2[0], dx2[1]);
+  simd::to_doubles(Y2 - Y0, dy2[0], dy2[1]);
+  simd::to_doubles(Float::load_aligned(v[0].z), z0[0], z0[1]);
+  simd::to_doubles(Float::load_aligned(v[1].z), z1[0], z1[1]);
+  simd::to_doubles(Float::load_aligned(v[2].z), z2[0], z2[1]);
+  xsimd::batch_bool<double, simd::Arch> zero[2], positive[2];
+  Double dzdx[2], dzdy[2];
+  const Double scale(1.0 / kSubpixelsPerPixel);
+  for (int h = 0; h < 2; ++h) {
+    const Double area2 = dx1[h] * dy2[h] - dx2[h] * dy1[h];
+    zero[h] = area2 == Double(0.0);
+    positive[h] = area2 > Double(0.0);
+    const Double e1x = dx1[h] * scale, e1y = dy1[h] * scale, e2x = dx2[h] * scale, e2y = dy2[h] * scale;
+    const Double inv_det = Double(double(kSubpixelsPerPixel) * kSubpixelsPerPixel) / area2;
+    e1x.store_aligned(out.e1x + h * kHalf);
+    e1y.store_aligned(out.e1y + h * kHalf);
+    e2x.store_aligned(out.e2x + h * kHalf);
+    e2y.store_aligned(out.e2y + h * kHalf);
+    inv_det.store_aligned(out.inv_det + h * kHalf);
+    const Double d1 = z1[h] - z0[h], d2 = z2[h] - z0[h];  // as PlaneBasis::plane
+    dzdx[h] = (d1 * e2y - d2 * e1y) * inv_det;
+    dzdy[h] = (d2 * e1x - d1 * e2x) * inv_det;
+  }
+  out.zero_area = simd::to_bits(zero[0], zero[1]);
+  out.clockwise = simd::to_bits(positive[0], positive[1]);
+  const CullMode cull = dc.rasterizer.cull;
+  out.culled = cull == CullMode::CW    ? out.clockwise
+               : cull == CullMode::CCW ? ~out.clockwise & ~out.zero_area & simd::kAllLanes
+                                       : 0;
+  const Float dqdx = simd::to_float(dzdx[0], dzdx[1]), dqdy = simd::to_float(dzdy[0], dzdy[1]);
+  Float q0 = Float::load_aligned(v[0].z);
+  if (dc.rasterizer.depth_bias != 0 || dc.rasterizer.slope_scaled_depth_bias != 0) {
+    const Float slope = xsimd::max(xsimd::abs(dqdx), xsimd::abs(dqdy));
+    q0 += Float(dc.rasterizer.depth_bias) + Float(dc.rasterizer.slope_scaled_depth_bias) * slope;
+  }
+  q0.store_aligned(out.z_q0);
+  dqdx.store_aligned(out.z_dqdx);
+  dqdy.store_aligned(out.z_dqdy);
+}
+
+/// Writes triangle l's record into every tile it touches (less those wholly outside an edge).
+void bin_triangle(const DrawConstants& dc, const TriangleLanes& tri, const SetupLanes& setup, int l, ChunkBins& bins,
+                  DrawStats& stats) {
+  const simd::LaneBits bit = 1u << l;
+  if (setup.zero_area & bit) {
     ++stats.degenerate;
     return;
   }
+  if (setup.culled & bit) {
+    ++stats.culled;
+    return;
+  }
+  if (setup.empty & bit) {
+    ++stats.degenerate;
+    return;
+  }
+  const bool clockwise = setup.clockwise & bit, small = setup.small & bit, affine = setup.affine & bit;
 
   // Flat varyings (the same finite bits at the three vertices) interpolate to their value at
   // vertex 0: the record stores that alone and no barycentrics.
-  const glm::vec4* a[3] = {reinterpret_cast<const glm::vec4*>(v[0]) + 1, reinterpret_cast<const glm::vec4*>(v[1]) + 1,
-                           reinterpret_cast<const glm::vec4*>(v[2]) + 1};
+  const glm::vec4* a[3];
+  for (int k = 0; k < 3; ++k) a[k] = reinterpret_cast<const glm::vec4*>(tri.data[k][l]) + 1;
   bool flat = true;
   for (int i = 0; i < dc.varyings && flat; ++i) {
     const glm::vec4& a0 = a[0][i];
@@ -206,71 +293,63 @@ void setup_snapped(const DrawConstants& dc, const float* const v[3], const Scree
     flat = std::memcmp(&a[1][i], &a0, sizeof(glm::vec4)) == 0 && std::memcmp(&a[2][i], &a0, sizeof(glm::vec4)) == 0 &&
            zero == 0.0f;
   }
-  const bool affine = s[0].inv_w == s[1].inv_w && s[0].inv_w == s[2].inv_w;
   const size_t size = triangle_record_size(dc.varyings, flat, affine);
 
-  // The record is written in place, in the stage (see ChunkBins).
-  static_assert(std::has_single_bit(unsigned(kTileSize)));
-  constexpr int kTileShift = std::countr_zero(unsigned(kTileSize));
-  bins.staged_triangles.push_back({static_cast<uint32_t>(bins.staged.size()), static_cast<uint16_t>(x0 >> kTileShift),
-                                   static_cast<uint16_t>(y0 >> kTileShift), static_cast<uint16_t>((x1 - 1) >> kTileShift),
-                                   static_cast<uint16_t>((y1 - 1) >> kTileShift)});
-  std::byte* record = bins.staged.append(size);
-  TriangleSetup& t = *::new (record) TriangleSetup;
-  t.x0 = static_cast<int16_t>(x0);
-  t.y0 = static_cast<int16_t>(y0);
-  t.x1 = static_cast<int16_t>(x1);
-  t.y1 = static_cast<int16_t>(y1);
-  t.record_blocks = static_cast<uint8_t>(size / 16);
-  t.flat = flat;
-
   // Edges on the vertices in positive (clockwise) order.
+  const SnappedLanes* v = tri.vertex;
   const int i1 = clockwise ? 1 : 2, i2 = clockwise ? 2 : 1;
-  t.edge[0] = make_edge(s[0].X, s[0].Y, s[i1].X, s[i1].Y);
-  t.edge[1] = make_edge(s[i1].X, s[i1].Y, s[i2].X, s[i2].Y);
-  t.edge[2] = make_edge(s[i2].X, s[i2].Y, s[0].X, s[0].Y);
-  const bool small = max_x - min_x < kSmallTriangleSize * kSubpixelsPerPixel &&
-                     max_y - min_y < kSmallTriangleSize * kSubpixelsPerPixel;
+  const Edge edge[3] = {make_edge(v[0].X[l], v[0].Y[l], v[i1].X[l], v[i1].Y[l]),
+                        make_edge(v[i1].X[l], v[i1].Y[l], v[i2].X[l], v[i2].Y[l]),
+                        make_edge(v[i2].X[l], v[i2].Y[l], v[0].X[l], v[0].Y[l])};
   bool narrow_edges = true;  // always for small triangles
   if (!small) {
-    for (const Edge& e : t.edge) {
+    for (const Edge& e : edge) {
       const int64_t span = std::abs(int64_t(e.a)) * (simd::kStampWidth * kSubpixelsPerPixel) +
                            std::abs(int64_t(e.b)) * (simd::kStampHeight * kSubpixelsPerPixel);
       if (span > kNarrowEdgeLimit) narrow_edges = false;
     }
   }
-  t.small = small;
-  t.narrow_edges = narrow_edges;
 
-  // Planes, in the vertices' own order.
-  const double scale = 1.0 / kSubpixelsPerPixel;
-  const PlaneBasis basis{(s[1].X - s[0].X) * scale, (s[1].Y - s[0].Y) * scale, (s[2].X - s[0].X) * scale,
-                         (s[2].Y - s[0].Y) * scale, double(kSubpixelsPerPixel) * kSubpixelsPerPixel / double(area2)};
-  t.ref_x = s[0].x;
-  t.ref_y = s[0].y;
-  Plane z = basis.plane(s[0].z, s[1].z, s[2].z);
-  if (dc.rasterizer.depth_bias != 0 || dc.rasterizer.slope_scaled_depth_bias != 0) {
-    const float slope = std::max(std::abs(z.dqdx), std::abs(z.dqdy));
-    z.q0 += dc.rasterizer.depth_bias + dc.rasterizer.slope_scaled_depth_bias * slope;
-  }
-  t.z = z;
-  t.front_facing = dc.rasterizer.front_counter_clockwise ? !clockwise : clockwise;
-  t.affine = affine;
-
-  std::byte* tail = record + sizeof(TriangleSetup);
-  if (flat) {
-    for (int i = 0; i < dc.varyings; ++i) std::memcpy(tail + 16 * i, &a[0][i], 16);
-  } else if (affine) {
-    // Equal w: varyings are linear on screen, a plane per component (a constant one exactly).
-    Plane* planes = reinterpret_cast<Plane*>(tail);
-    for (int i = 0; i < dc.varyings; ++i)
-      for (int c = 0; c < 4; ++c) planes[4 * i + c] = basis.plane(a[0][i][c], a[1][i][c], a[2][i][c]);
-  } else {
+  // The record is written field by field straight into its tile's stream: never read back while
+  // its stores may still sit in the CPU's store buffer (a wider load of narrower stores cannot be
+  // forwarded and waits for every older store to reach the cache).
+  auto write = [&](std::byte* record) {
+    TriangleSetup& t = *::new (record) TriangleSetup;
+    t.edge[0] = edge[0];
+    t.edge[1] = edge[1];
+    t.edge[2] = edge[2];
+    t.x0 = static_cast<int16_t>(setup.x0[l]);
+    t.y0 = static_cast<int16_t>(setup.y0[l]);
+    t.x1 = static_cast<int16_t>(setup.x1[l]);
+    t.y1 = static_cast<int16_t>(setup.y1[l]);
+    t.ref_x = v[0].x[l];
+    t.ref_y = v[0].y[l];
+    t.z = {setup.z_q0[l], setup.z_dqdx[l], setup.z_dqdy[l]};
+    t.record_blocks = static_cast<uint8_t>(size / 16);
+    t.front_facing = dc.rasterizer.front_counter_clockwise ? !clockwise : clockwise;
+    t.narrow_edges = narrow_edges;
+    t.small = small;
+    t.affine = affine;
+    t.flat = flat;
+    std::byte* tail = record + sizeof(TriangleSetup);
+    if (flat) {
+      for (int i = 0; i < dc.varyings; ++i) std::memcpy(tail + 16 * i, &a[0][i], 16);
+      return;
+    }
+    // Planes in the vertices' own order.
+    const PlaneBasis basis = setup.basis(l);
+    if (affine) {
+      // Equal w: varyings are linear on screen, a plane per component (a constant one exactly).
+      Plane* planes = reinterpret_cast<Plane*>(tail);
+      for (int i = 0; i < dc.varyings; ++i)
+        for (int c = 0; c < 4; ++c) planes[4 * i + c] = basis.plane(a[0][i][c], a[1][i][c], a[2][i][c]);
+      return;
+    }
     // Perspective-correct barycentrics: b_k = (b_k / w) / (1 / w).
     Barycentrics& bary = *::new (tail) Barycentrics;
-    bary.inv_w = basis.plane(s[0].inv_w, s[1].inv_w, s[2].inv_w);
-    bary.b1_w = basis.plane(0.0, s[1].inv_w, 0.0);
-    bary.b2_w = basis.plane(0.0, 0.0, s[2].inv_w);
+    bary.inv_w = basis.plane(v[0].inv_w[l], v[1].inv_w[l], v[2].inv_w[l]);
+    bary.b1_w = basis.plane(0.0, v[1].inv_w[l], 0.0);
+    bary.b2_w = basis.plane(0.0, 0.0, v[2].inv_w[l]);
     float* d = reinterpret_cast<float*>(tail + sizeof(Barycentrics));
     for (int i = 0; i < dc.varyings; ++i, d += 12) {
       for (int c = 0; c < 4; ++c) {
@@ -279,23 +358,50 @@ void setup_snapped(const DrawConstants& dc, const float* const v[3], const Scree
         d[8 + c] = a[2][i][c] - a[0][i][c];
       }
     }
-  }
-  ++stats.rasterized;
-}
+  };
+  auto emit = [&](int tile) {
+    RecordStream& records = bins.tile_records[tile];
+    if (records.empty()) bins.touched_tiles.push_back(static_cast<uint32_t>(tile));
+    write(records.append(size));
+  };
 
-/// Sets up and bins one triangle whose vertices are inside the clip volume (w > 0, within the
-/// guard band). `v[k]` points at a position followed by varyings.
-void setup_and_bin(const DrawConstants& dc, const float* const v[3], ChunkBins& bins, DrawStats& stats) {
-  const float* rows[simd::kLanes];
-  for (int l = 0; l < simd::kLanes; ++l) rows[l] = v[std::min(l, 2)];
-  SnappedLanes snapped;
-  simd::LaneBits in_view;
-  if ((snap_vertices(dc, rows, snapped, in_view) & 7) != 7) {
-    ++stats.degenerate;
+  static_assert(std::has_single_bit(unsigned(kTileSize)));
+  constexpr int kTileShift = std::countr_zero(unsigned(kTileSize));
+  const int tx0 = setup.x0[l] >> kTileShift, ty0 = setup.y0[l] >> kTileShift;
+  const int tx1 = (setup.x1[l] - 1) >> kTileShift, ty1 = (setup.y1[l] - 1) >> kTileShift;
+  ++stats.rasterized;
+  if (tx0 == tx1 && ty0 == ty1) {
+    emit(ty0 * dc.tiles_x + tx0);
     return;
   }
-  const ScreenVertex s[3] = {snapped.vertex(0), snapped.vertex(1), snapped.vertex(2)};
-  setup_snapped(dc, v, s, bins, stats);
+  for (int ty = ty0; ty <= ty1; ++ty) {
+    for (int tx = tx0; tx <= tx1; ++tx) {
+      const int64_t X0 = int64_t(tx) * kTileSize * kSubpixelsPerPixel, X1 = X0 + kTileSize * kSubpixelsPerPixel - 1;
+      const int64_t Y0 = int64_t(ty) * kTileSize * kSubpixelsPerPixel, Y1 = Y0 + kTileSize * kSubpixelsPerPixel - 1;
+      bool outside = false;
+      for (const Edge& e : edge) {
+        const int64_t emax = e.c + std::max(e.a * X0, e.a * X1) + std::max(e.b * Y0, e.b * Y1);
+        outside |= emax < 0;
+      }
+      if (!outside) emit(ty * dc.tiles_x + tx);
+    }
+  }
+}
+
+/// Sets up and bins triangles 0..count-1 of `tri` (snapped) in order; `ready` are those to set
+/// up, the others go to `other(l)` in their turn.
+template <class Other>
+void setup_and_bin(const DrawConstants& dc, const TriangleLanes& tri, int count, simd::LaneBits ready, ChunkBins& bins,
+                   DrawStats& stats, Other&& other) {
+  SetupLanes setup;
+  if (ready) setup_lanes(dc, tri, setup);
+  for (int l = 0; l < count; ++l) {
+    if (ready >> l & 1) {
+      bin_triangle(dc, tri, setup, l, bins, stats);
+    } else {
+      other(l);
+    }
+  }
 }
 
 /// Which clip-space half-spaces a position lies outside of: bits 0-3 the writable pixel
@@ -308,27 +414,32 @@ unsigned outcode(const DrawConstants& dc, const glm::vec4& p) {
          unsigned(p.y > dc.guard_max_y * p.w) << 9;
 }
 
-/// The scalar path of one triangle: non-finite and trivial rejects, clipping, then setup.
-void process_triangle(const DrawConstants& dc, const glm::vec4* const vertices[3], ChunkBins& bins, DrawStats& stats) {
+/// Sets up and bins the fan of an n-gon (n - 2 triangles from its first vertex, which keeps the
+/// winding); each vertex is a position followed by varyings.
+void setup_fan(const DrawConstants& dc, const float* const* polygon, int n, ChunkBins& bins, DrawStats& stats) {
+  static_assert(kMaxClipVertices - 2 <= simd::kLanes, "a clipped polygon's fan fits one set of lanes");
+  TriangleLanes tri;
+  const int count = n - 2;
+  for (int l = 0; l < count; ++l) {
+    tri.data[0][l] = polygon[0];
+    tri.data[1][l] = polygon[l + 1];
+    tri.data[2][l] = polygon[l + 2];
+  }
+  tri.snap(dc, count);
+  setup_and_bin(dc, tri, count, tri.snappable, bins, stats, [&](int) { ++stats.degenerate; });
+}
+
+/// The path of a triangle not wholly inside the view volume, or with a vertex that would not
+/// snap: non-finite and trivial rejects, clipping, then setup.
+void clip_and_bin(const DrawConstants& dc, const glm::vec4* const vertices[3], ChunkBins& bins, DrawStats& stats) {
   const glm::vec4& p0 = vertices[0][0];
   const glm::vec4& p1 = vertices[1][0];
   const glm::vec4& p2 = vertices[2][0];
-  // x * 0 is 0 for finite x and NaN for NaN or Inf.
-  const float zero = (p0.x + p0.y + p0.z + p0.w) * 0.0f + (p1.x + p1.y + p1.z + p1.w) * 0.0f +
-                     (p2.x + p2.y + p2.z + p2.w) * 0.0f;
-  if (zero != 0.0f && !(finite_position(p0) && finite_position(p1) && finite_position(p2))) {
+  if (!(finite_position(p0) && finite_position(p1) && finite_position(p2))) {
     ++stats.non_finite;
     return;
   }
-  // Common case first: all three vertices inside the view volume, hence inside the guard band.
-  auto inside_view = [](const glm::vec4& p) {
-    return (std::abs(p.x) <= p.w) & (std::abs(p.y) <= p.w) & (p.z >= 0.0f) & (p.z <= p.w);
-  };
-  const float* v[3] = {&vertices[0][0].x, &vertices[1][0].x, &vertices[2][0].x};
-  if (inside_view(p0) & inside_view(p1) & inside_view(p2)) {
-    setup_and_bin(dc, v, bins, stats);
-    return;
-  }
+  const float* v[3] = {&p0.x, &p1.x, &p2.x};
   const unsigned c0 = outcode(dc, p0), c1 = outcode(dc, p1), c2 = outcode(dc, p2);
   if (c0 & c1 & c2 & 0x3f) {  // all three beyond one side of the writable rectangle, near or far
     ++stats.outside;
@@ -336,7 +447,7 @@ void process_triangle(const DrawConstants& dc, const glm::vec4* const vertices[3
   }
   // Bits 4-9: some vertex lies beyond the near, far or a guard-band plane.
   if (((c0 | c1 | c2) & 0x3f0) == 0) {
-    setup_and_bin(dc, v, bins, stats);
+    setup_fan(dc, v, 3, bins, stats);
     return;
   }
 
@@ -356,78 +467,27 @@ void process_triangle(const DrawConstants& dc, const glm::vec4* const vertices[3
     n = clip_polygon(planes.plane[i], buffer[current], n, buffer[1 - current], floats);
     current = 1 - current;
   }
-  // Fan from the first vertex keeps the original winding.
-  for (int k = 1; k + 1 < n; ++k) {
-    const float* tri[3] = {buffer[current][0].v, buffer[current][k].v, buffer[current][k + 1].v};
-    setup_and_bin(dc, tri, bins, stats);
-  }
+  if (n < 3) return;
+  const float* polygon[kMaxClipVertices];
+  for (int k = 0; k < n; ++k) polygon[k] = buffer[current][k].v;
+  setup_fan(dc, polygon, n, bins, stats);
 }
-
 
 }  // namespace
 
-void bin_staged(const DrawConstants& dc, ChunkBins& bins) {
-  const std::byte* stage = bins.staged.data();
-  for (const ChunkBins::StagedTriangle& st : bins.staged_triangles) {
-    const auto& t = *reinterpret_cast<const TriangleSetup*>(stage + st.offset);
-    const size_t blocks = t.record_blocks;
-    auto emit = [&](int tile) {
-      RecordStream& records = bins.tile_records[tile];
-      if (records.empty()) bins.touched_tiles.push_back(static_cast<uint32_t>(tile));
-      std::byte* out = records.append(16 * blocks);
-      const std::byte* in = stage + st.offset;
-      for (size_t b = 0; b < blocks; ++b) std::memcpy(out + 16 * b, in + 16 * b, 16);
-    };
-    if (st.tx0 == st.tx1 && st.ty0 == st.ty1) {
-      emit(st.ty0 * dc.tiles_x + st.tx0);
-      continue;
-    }
-    for (int ty = st.ty0; ty <= st.ty1; ++ty) {
-      for (int tx = st.tx0; tx <= st.tx1; ++tx) {
-        const int64_t X0 = int64_t(tx) * kTileSize * kSubpixelsPerPixel, X1 = X0 + kTileSize * kSubpixelsPerPixel - 1;
-        const int64_t Y0 = int64_t(ty) * kTileSize * kSubpixelsPerPixel, Y1 = Y0 + kTileSize * kSubpixelsPerPixel - 1;
-        bool outside = false;
-        for (const Edge& e : t.edge) {
-          const int64_t emax = e.c + std::max(e.a * X0, e.a * X1) + std::max(e.b * Y0, e.b * Y1);
-          outside |= emax < 0;
-        }
-        if (!outside) emit(ty * dc.tiles_x + tx);
-      }
-    }
-  }
-  bins.staged.clear();
-  bins.staged_triangles.clear();
-}
-
 void process_triangles(const DrawConstants& dc, const glm::vec4* const* vertices, int count, ChunkBins& bins,
                        DrawStats& stats) {
-  // Vertices are snapped kLanes at a time; a triangle whose three vertices snapped inside the
-  // view volume goes straight to setup, any other to process_triangle (checks, clipping).
-  constexpr int kMaxVertices = 3 * kFrontEndBatch;
-  static_assert(kMaxVertices % simd::kLanes == 0 && kMaxVertices <= 64);
-  SnappedLanes snapped[kMaxVertices / simd::kLanes];
-  const int n = 3 * count;
-  uint64_t ready = 0;  // bit i: vertex i snapped and inside the view volume
-  for (int base = 0; base < n; base += simd::kLanes) {
-    const float* rows[simd::kLanes];
-    for (int l = 0; l < simd::kLanes; ++l) rows[l] = &vertices[std::min(base + l, n - 1)]->x;
-    simd::LaneBits in_view;
-    const simd::LaneBits bits = snap_vertices(dc, rows, snapped[base / simd::kLanes], in_view);
-    ready |= uint64_t(bits & in_view) << base;
-  }
-  for (int t = 0; t < count; ++t) {
-    if ((ready >> (3 * t) & 7) != 7) {
-      process_triangle(dc, vertices + 3 * t, bins, stats);
-      continue;
-    }
-    ScreenVertex s[3];
-    const float* v[3];
-    for (int k = 0; k < 3; ++k) {
-      const int i = 3 * t + k;
-      s[k] = snapped[i / simd::kLanes].vertex(i % simd::kLanes);
-      v[k] = &vertices[i]->x;
-    }
-    setup_snapped(dc, v, s, bins, stats);
+  // kLanes triangles at a time: vertices snapped, and the triangles whose three vertices lie in
+  // the view volume set up together; any other goes through clip_and_bin in its turn.
+  for (int first = 0; first < count; first += simd::kLanes) {
+    const int n = std::min(simd::kLanes, count - first);
+    const glm::vec4* const* batch = vertices + 3 * first;
+    TriangleLanes tri;
+    for (int l = 0; l < n; ++l)
+      for (int k = 0; k < 3; ++k) tri.data[k][l] = &batch[3 * l + k]->x;
+    tri.snap(dc, n);
+    setup_and_bin(dc, tri, n, tri.snappable & tri.in_view, bins, stats,
+                  [&](int l) { clip_and_bin(dc, batch + 3 * l, bins, stats); });
   }
 }
 

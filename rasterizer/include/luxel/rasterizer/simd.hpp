@@ -303,6 +303,71 @@ inline void transpose_rows(const float* const* rows, Float& x, Float& y, Float& 
 #endif
 }
 
+/// Half as many double lanes as Float has: triangle setup's exact products of subpixel
+/// coordinates (up to 2^48) take doubles, one batch for the low lanes and one for the high.
+using Double = xsimd::batch<double, Arch>;
+static_assert(2 * Double::size == Float::size);
+
+/// v's low and high lanes as doubles (exact).
+inline void to_doubles(const Int& v, Double& low, Double& high) {
+#if defined(__AVX512F__)
+  low = Double(_mm512_cvtepi32_pd(_mm512_castsi512_si256(v)));
+  high = Double(_mm512_cvtepi32_pd(_mm512_extracti64x4_epi64(v, 1)));
+#elif defined(__AVX2__)
+  low = Double(_mm256_cvtepi32_pd(_mm256_castsi256_si128(v)));
+  high = Double(_mm256_cvtepi32_pd(_mm256_extracti128_si256(v, 1)));
+#else
+  alignas(64) int32_t lanes_of_v[kLanes];
+  v.store_aligned(lanes_of_v);
+  low = lanes<Double>([&](int l) { return double(lanes_of_v[l]); });
+  high = lanes<Double>([&](int l) { return double(lanes_of_v[l + Double::size]); });
+#endif
+}
+inline void to_doubles(const Float& v, Double& low, Double& high) {
+#if defined(__AVX512F__)
+  low = Double(_mm512_cvtps_pd(_mm512_castps512_ps256(v)));
+  high = Double(_mm512_cvtps_pd(_mm256_castpd_ps(_mm512_extractf64x4_pd(_mm512_castps_pd(v), 1))));
+#elif defined(__AVX2__)
+  low = Double(_mm256_cvtps_pd(_mm256_castps256_ps128(v)));
+  high = Double(_mm256_cvtps_pd(_mm256_extractf128_ps(v, 1)));
+#else
+  alignas(64) float lanes_of_v[kLanes];
+  v.store_aligned(lanes_of_v);
+  low = lanes<Double>([&](int l) { return double(lanes_of_v[l]); });
+  high = lanes<Double>([&](int l) { return double(lanes_of_v[l + Double::size]); });
+#endif
+}
+/// The floats nearest to `low` and `high`'s lanes, as one batch (the inverse of to_doubles).
+inline Float to_float(const Double& low, const Double& high) {
+#if defined(__AVX512F__)
+  const __m512d both = _mm512_insertf64x4(_mm512_castpd256_pd512(_mm256_castps_pd(_mm512_cvtpd_ps(low))),
+                                          _mm256_castps_pd(_mm512_cvtpd_ps(high)), 1);
+  return Float(_mm512_castpd_ps(both));
+#elif defined(__AVX2__)
+  return Float(_mm256_set_m128(_mm256_cvtpd_ps(high), _mm256_cvtpd_ps(low)));
+#else
+  alignas(64) double lo[Double::size], hi[Double::size];
+  low.store_aligned(lo);
+  high.store_aligned(hi);
+  return lanes([&](int l) { return float(l < int(Double::size) ? lo[l] : hi[l - Double::size]); });
+#endif
+}
+/// The lane bits of a pair of double masks, `low` for the low lanes.
+inline LaneBits to_bits(const xsimd::batch_bool<double, Arch>& low, const xsimd::batch_bool<double, Arch>& high) {
+#if defined(__AVX512F__)
+  return static_cast<LaneBits>(low.data) | static_cast<LaneBits>(high.data) << Double::size;
+#elif defined(__AVX2__)
+  return static_cast<LaneBits>(_mm256_movemask_pd(low.data) | _mm256_movemask_pd(high.data) << Double::size);
+#else
+  alignas(64) bool lo[Double::size], hi[Double::size];
+  low.store_aligned(lo);
+  high.store_aligned(hi);
+  LaneBits bits = 0;
+  for (std::size_t i = 0; i < Double::size; ++i) bits |= LaneBits(lo[i]) << i | LaneBits(hi[i]) << (i + Double::size);
+  return bits;
+#endif
+}
+
 /// Tells the CPU this is a spin-wait loop (x86 `pause`: saves power, frees the sibling thread).
 inline void spin_pause() {
 #if defined(__x86_64__)

@@ -582,7 +582,6 @@ void front_end_chunk(const DrawConstants& dc, const Geometry& geometry, const VS
       for (int i = 0; i < n; ++i)
         for (int k = 0; k < 3; ++k) vs(3 * (base + i) + k, v[i][k]);
       process_triangles(dc, positions, n, bins, stats);
-      bin_staged(dc, bins);
     }
     return;
   }
@@ -602,7 +601,6 @@ void front_end_chunk(const DrawConstants& dc, const Geometry& geometry, const VS
   auto run_batch = [&] {
     if (pending_count == 0) return;
     process_triangles(dc, pending, pending_count, bins, stats);
-    bin_staged(dc, bins);
     pending_count = 0;
     ++batch;
   };

@@ -132,43 +132,25 @@ class RecordStream {
 
 /// One chunk of a draw's triangles, binned: per tile, the records of the triangles that touch it
 /// back to back in submission order, so that a tile reads its triangles as one stream.
-///
-/// Setup writes a record field by field into `staged`, and bin_staged() copies it into its tiles a
-/// batch of triangles later. Copied right away, the record would be read back in 16-byte blocks
-/// while its narrower stores still sat in the CPU's store buffer: such loads cannot be forwarded
-/// and waited for every older store, the previous records' included, to reach the cache (measured:
-/// a third of W2's front-end time).
 struct ChunkBins {
   std::vector<RecordStream> tile_records;
   std::vector<uint32_t> touched_tiles;
-
-  /// A set-up triangle waiting in `staged`: where its record starts, and the tiles its bounds touch.
-  struct StagedTriangle {
-    uint32_t offset;
-    uint16_t tx0, ty0, tx1, ty1;  ///< inclusive
-  };
-  RecordStream staged;
-  std::vector<StagedTriangle> staged_triangles;
 
   void reset(int tile_count);
 };
 
 /// The front end takes triangles in batches of at most this many: the vertex functor runs for a
-/// whole batch, then setup (vertices snapped kLanes at a time), then binning. Setup reads vertex
+/// whole batch, then setup (kLanes triangles at a time), then binning. Setup reads vertex
 /// outputs in other widths than a functor writes them (a float4 compared or copied whole after
 /// four float stores), which the CPU cannot forward from its store buffer; read right after the
 /// functor, each such load waited until every older store, the binned records' included, had
 /// reached the cache (measured: 13% of W2's frame). A batch later, the vertices are in the cache.
 inline constexpr int kFrontEndBatch = 16;
 
-/// Clips and sets up `count` (at most kFrontEndBatch) triangles into bins.staged, in order.
+/// Clips, sets up and bins `count` (at most kFrontEndBatch) triangles, in order.
 /// `vertices[3 t + k]` points at the clip-space position of vertex k of triangle t, followed by
 /// dc.varyings float4 interpolants.
 void process_triangles(const DrawConstants& dc, const glm::vec4* const* vertices, int count, ChunkBins& bins,
                        DrawStats& stats);
-
-/// Copies every staged triangle into the tiles it touches (less those wholly outside an edge)
-/// and empties the stage.
-void bin_staged(const DrawConstants& dc, ChunkBins& bins);
 
 }  // namespace luxel::rasterizer::detail
