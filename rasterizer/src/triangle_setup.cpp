@@ -298,26 +298,33 @@ void bin_triangle(const DrawConstants& dc, const TriangleLanes& tri, const Setup
   // Edges on the vertices in positive (clockwise) order.
   const SnappedLanes* v = tri.vertex;
   const int i1 = clockwise ? 1 : 2, i2 = clockwise ? 2 : 1;
-  const Edge edge[3] = {make_edge(v[0].X[l], v[0].Y[l], v[i1].X[l], v[i1].Y[l]),
-                        make_edge(v[i1].X[l], v[i1].Y[l], v[i2].X[l], v[i2].Y[l]),
-                        make_edge(v[i2].X[l], v[i2].Y[l], v[0].X[l], v[0].Y[l])};
+  auto edge = [&](int k) {
+    const int from = k == 0 ? 0 : k == 1 ? i1 : i2, to = k == 0 ? i1 : k == 1 ? i2 : 0;
+    return make_edge(v[from].X[l], v[from].Y[l], v[to].X[l], v[to].Y[l]);
+  };
   bool narrow_edges = true;  // always for small triangles
   if (!small) {
-    for (const Edge& e : edge) {
+    for (int k = 0; k < 3; ++k) {
+      const Edge e = edge(k);
       const int64_t span = std::abs(int64_t(e.a)) * (simd::kStampWidth * kSubpixelsPerPixel) +
                            std::abs(int64_t(e.b)) * (simd::kStampHeight * kSubpixelsPerPixel);
       if (span > kNarrowEdgeLimit) narrow_edges = false;
     }
   }
+  const bool front_facing = dc.rasterizer.front_counter_clockwise ? !clockwise : clockwise;
+  const uint8_t flags = (front_facing ? TriangleSetup::kFrontFacing : 0) |
+                        (narrow_edges ? TriangleSetup::kNarrowEdges : 0) | (small ? TriangleSetup::kSmall : 0) |
+                        (affine ? TriangleSetup::kAffine : 0) | (flat ? TriangleSetup::kFlat : 0);
 
-  // The record is written field by field straight into its tile's stream: never read back while
-  // its stores may still sit in the CPU's store buffer (a wider load of narrower stores cannot be
-  // forwarded and waits for every older store to reach the cache).
+  // The record is written field by field straight into its tile's stream, from registers: a
+  // record line was just allocated and is not in the cache, so nothing may be read from it, and a
+  // wider load of values just stored narrower (a struct built on the stack, copied) cannot be
+  // forwarded from the store buffer and waits for every older store to reach the cache.
   auto write = [&](std::byte* record) {
     TriangleSetup& t = *::new (record) TriangleSetup;
-    t.edge[0] = edge[0];
-    t.edge[1] = edge[1];
-    t.edge[2] = edge[2];
+    t.edge[0] = edge(0);
+    t.edge[1] = edge(1);
+    t.edge[2] = edge(2);
     t.x0 = static_cast<int16_t>(setup.x0[l]);
     t.y0 = static_cast<int16_t>(setup.y0[l]);
     t.x1 = static_cast<int16_t>(setup.x1[l]);
@@ -326,11 +333,7 @@ void bin_triangle(const DrawConstants& dc, const TriangleLanes& tri, const Setup
     t.ref_y = v[0].y[l];
     t.z = {setup.z_q0[l], setup.z_dqdx[l], setup.z_dqdy[l]};
     t.record_blocks = static_cast<uint8_t>(size / 16);
-    t.front_facing = dc.rasterizer.front_counter_clockwise ? !clockwise : clockwise;
-    t.narrow_edges = narrow_edges;
-    t.small = small;
-    t.affine = affine;
-    t.flat = flat;
+    t.flags = flags;
     std::byte* tail = record + sizeof(TriangleSetup);
     if (flat) {
       for (int i = 0; i < dc.varyings; ++i) std::memcpy(tail + 16 * i, &a[0][i], 16);
@@ -374,12 +377,13 @@ void bin_triangle(const DrawConstants& dc, const TriangleLanes& tri, const Setup
     emit(ty0 * dc.tiles_x + tx0);
     return;
   }
+  const Edge edges[3] = {edge(0), edge(1), edge(2)};
   for (int ty = ty0; ty <= ty1; ++ty) {
     for (int tx = tx0; tx <= tx1; ++tx) {
       const int64_t X0 = int64_t(tx) * kTileSize * kSubpixelsPerPixel, X1 = X0 + kTileSize * kSubpixelsPerPixel - 1;
       const int64_t Y0 = int64_t(ty) * kTileSize * kSubpixelsPerPixel, Y1 = Y0 + kTileSize * kSubpixelsPerPixel - 1;
       bool outside = false;
-      for (const Edge& e : edge) {
+      for (const Edge& e : edges) {
         const int64_t emax = e.c + std::max(e.a * X0, e.a * X1) + std::max(e.b * Y0, e.b * Y1);
         outside |= emax < 0;
       }

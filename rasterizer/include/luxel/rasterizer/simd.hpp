@@ -368,6 +368,10 @@ inline LaneBits to_bits(const xsimd::batch_bool<double, Arch>& low, const xsimd:
 #endif
 }
 
+/// Asks for the cache line holding p, to be written soon. Never faults, whatever p is. (On
+/// x86-64-v3 a read prefetch: `prefetchw` measured the same on W2.)
+inline void prefetch_for_write(const void* p) { __builtin_prefetch(p, 1, 3); }
+
 /// Tells the CPU this is a spin-wait loop (x86 `pause`: saves power, frees the sibling thread).
 inline void spin_pause() {
 #if defined(__x86_64__)

@@ -106,7 +106,7 @@ class TileRasterizer {
   static_assert(kTileSize % kBlockSize == 0 && kBlockSize % simd::kStampWidth == 0);
 
   void rasterize(const TriangleSetup& t, int x0, int y0, int x1, int y1);
-  /// The path for small triangles (TriangleSetup::small): 32-bit edge values throughout.
+  /// The path for small triangles (TriangleSetup::small()): 32-bit edge values throughout.
   void rasterize_small(const TriangleSetup& t, int sx0, int sy0, int x1, int y1);
   void rasterize_stamps(const TriangleSetup& t, const StampEdges& edges, int x0, int y0, int x1, int y1);
   /// Per-sample coverage of a partly covered stamp of a triangle with wide edges.
@@ -187,7 +187,7 @@ void TileRasterizer<PS, N, kEarlyZ, S>::triangle(const TriangleSetup& t) {
     for (int s = 0; s < S; ++s) sample_z_[s] = xsimd::fma(dzdx, sample_dx_[s], xsimd::fma(dzdy, sample_dy_[s], z0));
   }
   const int sx0 = x0 & ~(simd::kStampWidth - 1), sy0 = y0 & ~(simd::kStampHeight - 1);
-  if (t.small) {
+  if (t.small()) {
     rasterize_small(t, sx0, sy0, x1, y1);
   } else {
     rasterize(t, sx0, sy0, x1, y1);
@@ -206,7 +206,7 @@ void TileRasterizer<PS, N, kEarlyZ, S>::rasterize(const TriangleSetup& t, int sx
   StampEdges edges;
   for (int e = 0; e < 3; ++e) {
     const Edge& E = t.edge[e];
-    if (t.narrow_edges) {
+    if (t.narrow_edges()) {
       const Int a(E.a), b(E.b);
       for (int s = 0; s < S; ++s) edges.lane_offset[e][s] = a * sample_X_[s] + b * sample_Y_[s];
     }
@@ -336,7 +336,7 @@ void TileRasterizer<PS, N, kEarlyZ, S>::rasterize_stamps(const TriangleSetup& t,
       if (((e0 + edges.min_offset[0]) | (e1 + edges.min_offset[1]) | (e2 + edges.min_offset[2])) >= 0) {
         for (int s = 0; s < S; ++s) coverage[s] = clip;
         ++stats.stamps_full;
-      } else if (t.narrow_edges) {
+      } else if (t.narrow_edges()) {
         // Per sample: the three edges at every lane, 32-bit. An edge value beyond +-2^30 at the
         // stamp corner keeps its sign over the whole stamp, so clamping it changes nothing.
         const Int c0(static_cast<int32_t>(std::clamp(e0, -kClamp, kClamp)));
@@ -399,7 +399,7 @@ Int TileRasterizer<PS, N, kEarlyZ, S>::depth_stencil_test(const TriangleSetup& t
   if (!simple_depth_) {
     const DepthStencilState& ds = state_.depth_stencil;
     uint8_t* stencil = stencil_ + s * kTilePixels + stamp * simd::kLanes;
-    const StencilFace& face = (ds.two_sided_stencil && !t.front_facing) ? ds.back : ds.front;
+    const StencilFace& face = (ds.two_sided_stencil && !t.front_facing()) ? ds.back : ds.front;
     const Int value = simd::load_bytes(stencil);
     const Int read_mask(ds.stencil_read_mask);
     const Int stencil_pass =
@@ -455,12 +455,12 @@ void TileRasterizer<PS, N, kEarlyZ, S>::write_color(int stamp, int s, const Int&
 template <class PS, int N, bool kEarlyZ, int S>
 void TileRasterizer<PS, N, kEarlyZ, S>::interpolate(const TriangleSetup& t, const Float& cx, const Float& cy,
                                                    PixelInput<N>& in) {
-  if (t.flat) {
+  if (t.flat()) {
     const float* a = t.flat_varyings();
     for (int i = 0; i < N; ++i, a += 4) in.varyings[i] = {Float(a[0]), Float(a[1]), Float(a[2]), Float(a[3])};
     return;
   }
-  if (t.affine) {
+  if (t.affine()) {
     const Plane* p = t.varying_planes();
     for (int i = 0; i < N; ++i, p += 4)
       in.varyings[i] = {eval_plane(p[0], cx, cy), eval_plane(p[1], cx, cy), eval_plane(p[2], cx, cy),
@@ -520,7 +520,7 @@ void TileRasterizer<PS, N, kEarlyZ, S>::shade_stamp(const TriangleSetup& t, int 
     interpolate(t, cx, cy, in);
   }
   in.live = simd::sign_bits(live);
-  in.front_facing = t.front_facing;
+  in.front_facing = t.front_facing();
   PixelOutput out;
   ps_(in, out);
   ++stats.stamps_shaded;

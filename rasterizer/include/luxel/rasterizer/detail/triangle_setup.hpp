@@ -3,6 +3,7 @@
 // rasterizers. Not templated on shaders, so it lives in triangle_setup.cpp.
 
 #include "luxel/rasterizer/limits.hpp"
+#include "luxel/rasterizer/simd.hpp"
 #include "luxel/rasterizer/state.hpp"
 
 #include <glm/vec4.hpp>
@@ -68,11 +69,20 @@ struct alignas(16) TriangleSetup {
   float ref_x, ref_y;      ///< pixels: vertex 0, snapped
   Plane z;                 ///< screen-linear depth, bias included
   uint8_t record_blocks;   ///< size of this record in 16-byte blocks
-  bool front_facing : 1;
-  bool narrow_edges : 1;   ///< per-sample edge values of a stamp fit 32-bit integers
-  bool small : 1;          ///< spans less than kSmallTriangleSize pixels in x and in y
-  bool affine : 1;         ///< equal w at the vertices
-  bool flat : 1;           ///< every varying is flat
+  /// Flags below, in one byte that setup writes whole: assigning bitfields would read the byte
+  /// first, from a record line just allocated and not yet in the cache.
+  uint8_t flags;
+  static constexpr uint8_t kFrontFacing = 1, kNarrowEdges = 2, kSmall = 4, kAffine = 8, kFlat = 16;
+
+  bool front_facing() const { return flags & kFrontFacing; }
+  /// Per-sample edge values of a stamp fit 32-bit integers.
+  bool narrow_edges() const { return flags & kNarrowEdges; }
+  /// Spans less than kSmallTriangleSize pixels in x and in y.
+  bool small() const { return flags & kSmall; }
+  /// Equal w at the vertices.
+  bool affine() const { return flags & kAffine; }
+  /// Every varying is flat.
+  bool flat() const { return flags & kFlat; }
 
   /// Flat: the varyings' values, float4 each.
   const float* flat_varyings() const { return reinterpret_cast<const float*>(this + 1); }
@@ -117,6 +127,10 @@ class RecordStream {
     if (size_ + bytes > capacity_) grow(size_ + bytes);
     std::byte* p = data_.get() + size_;
     size_ += bytes;
+    // A draw appends to many streams in turn (one per tile), too many for the CPU's stream
+    // prefetchers: without this, every new line's first store waited for the line to arrive.
+    simd::prefetch_for_write(p + bytes);
+    simd::prefetch_for_write(p + bytes + 64);
     return p;
   }
   const std::byte* data() const { return data_.get(); }
