@@ -72,6 +72,7 @@ class TileRasterizer {
       sample_y_[s] = sample_subpixel(plan.sample_offsets[s].y);
       sample_X_[s] = lanes_.x_sub + Int(sample_x_[s]);
       sample_Y_[s] = lanes_.y_sub + Int(sample_y_[s]);
+      sample_XY_[s] = sample_X_[s] | (sample_Y_[s] << 16);
       sample_dx_[s] = simd::lanes([&](int l) { return simd::lane_x(l) + sample_x_[s] / 256.0f; });
       sample_dy_[s] = simd::lanes([&](int l) { return simd::lane_y(l) + sample_y_[s] / 256.0f; });
     }
@@ -124,8 +125,8 @@ class TileRasterizer {
   /// the triangle's reference vertex (see corner_depth), clamped to the viewport's depth range.
   /// Early and late depth tests take it from here alike, so that a pass with depth func Equal
   /// over the same triangles passes whichever test its shader allows.
-  LUXEL_INLINE Float sample_depth(int s, float corner_z) const {
-    return xsimd::min(xsimd::max(sample_z_[s] + Float(corner_z), Float(min_depth_)), Float(max_depth_));
+  LUXEL_INLINE Float sample_depth(int s, float corner_z, const Float& min_depth, const Float& max_depth) const {
+    return xsimd::min(xsimd::max(sample_z_[s] + Float(corner_z), min_depth), max_depth);
   }
   static float corner_depth(const TriangleSetup& t, int px, int py) {
     return std::fma(t.z.dqdx, float(px) - t.ref_x, t.z.dqdy * (float(py) - t.ref_y));
@@ -172,6 +173,7 @@ class TileRasterizer {
   uint8_t* stencil_;
   int sample_x_[S], sample_y_[S];
   Int sample_X_[S], sample_Y_[S];      ///< subpixels from the stamp's corner to each lane's sample
+  Int sample_XY_[S];                   ///< the same, X in the low 16 bits and Y in the high (dot_halves)
   Float sample_dx_[S], sample_dy_[S];  ///< the same in pixels
   Float sample_z_[S];  ///< the current triangle's depth at each sample of a stamp with its corner on vertex 0
 };
@@ -270,8 +272,11 @@ void TileRasterizer<PS, N, kEarlyZ, S>::rasterize_small(const TriangleSetup& t, 
     const int32_t ax = E.a * (kStampW - 1), by = E.b * (kStampH - 1);
     lo[e] = std::min(0, ax) + std::min(0, by);
     hi[e] = std::max(0, ax) + std::max(0, by);
-    const Int a(E.a), b(E.b);
-    for (int s = 0; s < S; ++s) offset[e][s] = a * sample_X_[s] + b * sample_Y_[s];
+    // |a|, |b| < 2^13 and sample offsets < 2^11: a X + b Y in one 16-bit dot product per lane.
+    static_assert(kSmallTriangleSize * kSubpixelsPerPixel <= INT16_MAX &&
+                  simd::kStampWidth * kSubpixelsPerPixel <= INT16_MAX);
+    const Int ab(int32_t(uint32_t(E.a) & 0xffffu) | int32_t(uint32_t(E.b) << 16));
+    for (int s = 0; s < S; ++s) offset[e][s] = simd::dot_halves(ab, sample_XY_[s]);
   }
   Int coverage[S];
   for (int py = sy0; py < y1; py += simd::kStampHeight) {
@@ -392,7 +397,7 @@ Int TileRasterizer<PS, N, kEarlyZ, S>::depth_stencil_test(const TriangleSetup& t
   Float z;
   if (depth_test_) {
     z = shader_depth ? xsimd::min(xsimd::max(*shader_depth, Float(min_depth_)), Float(max_depth_))
-                     : sample_depth(s, corner_z);
+                     : sample_depth(s, corner_z, Float(min_depth_), Float(max_depth_));
     depth_pass &= simd::mask_of(compare(depth_func_, z, dst_depth));
   }
   Int pass = depth_pass;
@@ -422,13 +427,17 @@ template <class PS, int N, bool kEarlyZ, int S>
 template <CompareFunc kFunc>
 Int TileRasterizer<PS, N, kEarlyZ, S>::early_depth(float corner_z, int stamp, Int* coverage) {
   // The common case, kept tight: depth test without stencil, compare function fixed.
+  // Members copied before the first store: a float store could alias them, so the compiler
+  // would otherwise load them again for every sample.
   float* depth = depth_ + stamp * simd::kLanes;
+  const Float min_depth(min_depth_), max_depth(max_depth_);
+  const bool depth_write = depth_write_;
   Int live(0);
   for (int s = 0; s < S; ++s, depth += kTilePixels) {
     const Float d = Float::load_aligned(depth);
-    const Float z = sample_depth(s, corner_z);
+    const Float z = sample_depth(s, corner_z, min_depth, max_depth);
     const Int pass = coverage[s] & simd::mask_of(compare(kFunc, z, d));
-    if (depth_write_) simd::select(pass, z, d).store_aligned(depth);
+    if (depth_write) simd::select(pass, z, d).store_aligned(depth);
     coverage[s] = pass;
     live |= pass;
   }
