@@ -183,6 +183,7 @@ struct SetupLanes {
   alignas(64) float z_q0[simd::kLanes], z_dqdx[simd::kLanes], z_dqdy[simd::kLanes];
   alignas(64) double e1x[simd::kLanes], e1y[simd::kLanes], e2x[simd::kLanes], e2y[simd::kLanes];
   alignas(64) double inv_det[simd::kLanes];
+  alignas(64) int32_t small_corner[3][simd::kLanes], small_ab[3][simd::kLanes];  ///< SmallEdges (small lanes)
   simd::LaneBits zero_area = 0;  ///< degenerate after snapping
   simd::LaneBits culled = 0;     ///< facing away by the cull mode (zero-area lanes excluded)
   simd::LaneBits empty = 0;      ///< no pixel inside the clip rectangle
@@ -249,6 +250,24 @@ void setup_lanes(const DrawConstants& dc, const TriangleLanes& tri, SetupLanes& 
   }
   out.zero_area = simd::to_bits(zero[0], zero[1]);
   out.clockwise = simd::to_bits(positive[0], positive[1]);
+
+  // SmallEdges, for every lane (only small ones keep them, where they are exact): the edges on
+  // the vertices in positive (clockwise) order, from the record corner.
+  const auto clockwise = simd::int_mask(out.clockwise);
+  const Int Xa = xsimd::select(clockwise, X1, X2), Ya = xsimd::select(clockwise, Y1, Y2);
+  const Int Xb = xsimd::select(clockwise, X2, X1), Yb = xsimd::select(clockwise, Y2, Y1);
+  const Int corner_x = (x0 & Int(~(simd::kStampWidth - 1))) << kSubpixelBits;
+  const Int corner_y = (y0 & Int(~(simd::kStampHeight - 1))) << kSubpixelBits;
+  auto small_edge = [&](int k, const Int& Px, const Int& Py, const Int& Qx, const Int& Qy) {
+    const Int a = Py - Qy, b = Qx - Px;  // as make_edge
+    const auto top_left = (a > Int(0)) | ((a == Int(0)) & (b > Int(0)));
+    const Int bias = xsimd::select(top_left, Int(0), Int(1));
+    (a * (corner_x - Px) + b * (corner_y - Py) - bias).store_aligned(out.small_corner[k]);
+    ((a & Int(0xffff)) | (b << 16)).store_aligned(out.small_ab[k]);
+  };
+  small_edge(0, X0, Y0, Xa, Ya);
+  small_edge(1, Xa, Ya, Xb, Yb);
+  small_edge(2, Xb, Yb, X0, Y0);
   const CullMode cull = dc.rasterizer.cull;
   out.culled = cull == CullMode::CW    ? out.clockwise
                : cull == CullMode::CCW ? ~out.clockwise & ~out.zero_area & simd::kAllLanes
@@ -293,7 +312,7 @@ void bin_triangle(const DrawConstants& dc, const TriangleLanes& tri, const Setup
     flat = std::memcmp(&a[1][i], &a0, sizeof(glm::vec4)) == 0 && std::memcmp(&a[2][i], &a0, sizeof(glm::vec4)) == 0 &&
            zero == 0.0f;
   }
-  const size_t size = triangle_record_size(dc.varyings, flat, affine);
+  const size_t size = triangle_record_size(dc.varyings, small, flat, affine);
 
   // Edges on the vertices in positive (clockwise) order.
   const SnappedLanes* v = tri.vertex;
@@ -322,9 +341,19 @@ void bin_triangle(const DrawConstants& dc, const TriangleLanes& tri, const Setup
   // forwarded from the store buffer and waits for every older store to reach the cache.
   auto write = [&](std::byte* record) {
     TriangleSetup& t = *::new (record) TriangleSetup;
-    t.edge[0] = edge(0);
-    t.edge[1] = edge(1);
-    t.edge[2] = edge(2);
+    if (small) {
+      SmallEdges& e = *::new (record + sizeof(TriangleSetup)) SmallEdges;
+      for (int k = 0; k < 3; ++k) {
+        e.corner[k] = setup.small_corner[k][l];
+        e.ab[k] = setup.small_ab[k][l];
+      }
+      e.corner[3] = e.ab[3] = 0;
+    } else {
+      Edge* e = ::new (record + sizeof(TriangleSetup)) Edge[3];
+      e[0] = edge(0);
+      e[1] = edge(1);
+      e[2] = edge(2);
+    }
     t.x0 = static_cast<int16_t>(setup.x0[l]);
     t.y0 = static_cast<int16_t>(setup.y0[l]);
     t.x1 = static_cast<int16_t>(setup.x1[l]);
@@ -334,7 +363,7 @@ void bin_triangle(const DrawConstants& dc, const TriangleLanes& tri, const Setup
     t.z = {setup.z_q0[l], setup.z_dqdx[l], setup.z_dqdy[l]};
     t.record_blocks = static_cast<uint8_t>(size / 16);
     t.flags = flags;
-    std::byte* tail = record + sizeof(TriangleSetup);
+    std::byte* tail = record + TriangleSetup::varyings_offset(small);
     if (flat) {
       for (int i = 0; i < dc.varyings; ++i) std::memcpy(tail + 16 * i, &a[0][i], 16);
       return;

@@ -108,6 +108,35 @@ inline LaneBits to_bits(const xsimd::batch_bool<T, Arch>& m) {
 #endif
 }
 
+/// Four int32 lanes, whatever kLanes is: a triangle's three edges side by side (the fourth lane
+/// unused), stepped and tested together.
+using Int4 = xsimd::make_sized_batch_t<int32_t, 4>;
+static_assert(!std::is_void_v<Int4>, "the target has 4-lane integer vectors");
+
+/// Lane bits of the negative lanes of v.
+inline LaneBits sign_bits(const Int4& v) {
+#if defined(__SSE2__)
+  return static_cast<LaneBits>(_mm_movemask_ps(_mm_castsi128_ps(v)));
+#else
+  LaneBits bits = 0;
+  for (int i = 0; i < 4; ++i) bits |= LaneBits(v.get(i) < 0) << i;
+  return bits;
+#endif
+}
+
+/// Every lane holds lane `Lane` of v.
+template <int Lane>
+inline Int broadcast_lane(const Int4& v) {
+  static_assert(Lane >= 0 && Lane < 4);
+#if defined(__AVX512F__)
+  return Int(_mm512_broadcastd_epi32(_mm_shuffle_epi32(v, Lane * 0x55)));
+#elif defined(__AVX2__)
+  return Int(_mm256_broadcastd_epi32(_mm_shuffle_epi32(v, Lane * 0x55)));
+#else
+  return Int(v.get(Lane));
+#endif
+}
+
 /// Lanes whose sign bit is set (negative integers).
 inline LaneBits sign_bits(const Int& v) {
 #if defined(__AVX512F__)

@@ -207,7 +207,7 @@ template <class PS, int N, bool kEarlyZ, int S>
 void TileRasterizer<PS, N, kEarlyZ, S>::rasterize(const TriangleSetup& t, int sx0, int sy0, int x1, int y1) {
   StampEdges edges;
   for (int e = 0; e < 3; ++e) {
-    const Edge& E = t.edge[e];
+    const Edge& E = t.edges()[e];
     if (t.narrow_edges()) {
       const Int a(E.a), b(E.b);
       for (int s = 0; s < S; ++s) edges.lane_offset[e][s] = a * sample_X_[s] + b * sample_Y_[s];
@@ -223,12 +223,12 @@ void TileRasterizer<PS, N, kEarlyZ, S>::rasterize(const TriangleSetup& t, int sx
   }
   int64_t block_min[3], block_max[3];
   for (int e = 0; e < 3; ++e)
-    edge_bounds(t.edge[e], kBlockSize * kSubpixelsPerPixel, kBlockSize * kSubpixelsPerPixel, block_min[e], block_max[e]);
+    edge_bounds(t.edges()[e], kBlockSize * kSubpixelsPerPixel, kBlockSize * kSubpixelsPerPixel, block_min[e], block_max[e]);
   for (int by = sy0 & ~(kBlockSize - 1); by < y1; by += kBlockSize) {
     for (int bx = sx0 & ~(kBlockSize - 1); bx < x1; bx += kBlockSize) {
       bool outside = false, inside = true;
       for (int e = 0; e < 3; ++e) {
-        const Edge& E = t.edge[e];
+        const Edge& E = t.edges()[e];
         const int64_t v = E.c + int64_t(E.a) * bx * kSubpixelsPerPixel + int64_t(E.b) * by * kSubpixelsPerPixel;
         outside |= v + block_max[e] < 0;
         inside &= v + block_min[e] >= 0;
@@ -258,37 +258,41 @@ void TileRasterizer<PS, N, kEarlyZ, S>::rasterize(const TriangleSetup& t, int sx
 template <class PS, int N, bool kEarlyZ, int S>
 void TileRasterizer<PS, N, kEarlyZ, S>::rasterize_small(const TriangleSetup& t, int sx0, int sy0, int x1, int y1) {
   ++stats.small_walks;
-  // Edge values relative to the first stamp's corner fit 32 bits (see kSmallTriangleSize):
-  // per edge, its value at that corner, its steps to the next stamp in x and y, its bounds over a
-  // stamp (for scalar reject and accept), and its per-lane, per-sample offsets.
+  // The three edges side by side in the lanes of one Int4 (lane 3 is all zero): their values
+  // at a stamp's corner, their steps to the next stamp in x and y, and their bounds over a
+  // stamp (for reject and accept); 32-bit throughout (see kSmallTriangleSize).
+  using simd::Int4;
   constexpr int kStampW = simd::kStampWidth * kSubpixelsPerPixel, kStampH = simd::kStampHeight * kSubpixelsPerPixel;
-  int32_t corner[3], step_x[3], step_y[3], lo[3], hi[3];
+  const SmallEdges& edges = t.small_edges();
+  const Int4 ab = Int4::load_aligned(edges.ab);
+  const Int4 a = (ab << 16) >> 16, b = ab >> 16;
+  // The record's corner moved to this walk's first stamp (a later tile of the triangle's).
+  const int dx = sx0 - (t.x0 & ~(simd::kStampWidth - 1)), dy = sy0 - (t.y0 & ~(simd::kStampHeight - 1));
+  Int4 row = Int4::load_aligned(edges.corner) + a * Int4(dx * kSubpixelsPerPixel) + b * Int4(dy * kSubpixelsPerPixel);
+  const Int4 step_x = a * Int4(kStampW), step_y = b * Int4(kStampH);
+  const Int4 a_span = step_x - a, b_span = step_y - b;  // (stamp size - 1) subpixels
+  const Int4 zero(0);
+  const Int4 lo = xsimd::min(a_span, zero) + xsimd::min(b_span, zero);
+  const Int4 hi = xsimd::max(a_span, zero) + xsimd::max(b_span, zero);
+  // Per edge, the offsets of every lane's sample s from the stamp's corner: a X + b Y, one
+  // 16-bit dot product per lane (|a|, |b| < 2^13, offsets < 2^11).
+  static_assert(kSmallTriangleSize * kSubpixelsPerPixel <= INT16_MAX &&
+                simd::kStampWidth * kSubpixelsPerPixel <= INT16_MAX);
   Int offset[3][S];
-  for (int e = 0; e < 3; ++e) {
-    const Edge& E = t.edge[e];
-    corner[e] = static_cast<int32_t>(E.c + (int64_t(E.a) * sx0 + int64_t(E.b) * sy0) * kSubpixelsPerPixel);
-    step_x[e] = E.a * kStampW;
-    step_y[e] = E.b * kStampH;
-    const int32_t ax = E.a * (kStampW - 1), by = E.b * (kStampH - 1);
-    lo[e] = std::min(0, ax) + std::min(0, by);
-    hi[e] = std::max(0, ax) + std::max(0, by);
-    // |a|, |b| < 2^13 and sample offsets < 2^11: a X + b Y in one 16-bit dot product per lane.
-    static_assert(kSmallTriangleSize * kSubpixelsPerPixel <= INT16_MAX &&
-                  simd::kStampWidth * kSubpixelsPerPixel <= INT16_MAX);
-    const Int ab(int32_t(uint32_t(E.a) & 0xffffu) | int32_t(uint32_t(E.b) << 16));
-    for (int s = 0; s < S; ++s) offset[e][s] = simd::dot_halves(ab, sample_XY_[s]);
+  const Int ab0 = simd::broadcast_lane<0>(ab), ab1 = simd::broadcast_lane<1>(ab), ab2 = simd::broadcast_lane<2>(ab);
+  for (int s = 0; s < S; ++s) {
+    offset[0][s] = simd::dot_halves(ab0, sample_XY_[s]);
+    offset[1][s] = simd::dot_halves(ab1, sample_XY_[s]);
+    offset[2][s] = simd::dot_halves(ab2, sample_XY_[s]);
   }
   Int coverage[S];
-  for (int py = sy0; py < y1; py += simd::kStampHeight) {
-    int32_t v[3] = {corner[0], corner[1], corner[2]};
-    for (int e = 0; e < 3; ++e) corner[e] += step_y[e];
+  for (int py = sy0; py < y1; py += simd::kStampHeight, row += step_y) {
+    Int4 v = row;
     int stamp = stamp_index(sx0, py);
     bool entered = false;
-    for (int px = sx0; px < x1; px += simd::kStampWidth, ++stamp) {
-      const int32_t e0 = v[0], e1 = v[1], e2 = v[2];
-      for (int e = 0; e < 3; ++e) v[e] += step_x[e];
-      // A negative sum has its sign bit set: one test for "wholly outside some edge".
-      if (((e0 + hi[0]) | (e1 + hi[1]) | (e2 + hi[2])) < 0) {
+    for (int px = sx0; px < x1; px += simd::kStampWidth, ++stamp, v += step_x) {
+      // Wholly outside some edge: its bound is negative.
+      if (simd::sign_bits(v + hi) & 7) {
         // The stamps of a row that no edge rejects are contiguous (each edge keeps an interval of
         // them): once past them, the row is done.
         if (entered) break;
@@ -296,11 +300,11 @@ void TileRasterizer<PS, N, kEarlyZ, S>::rasterize_small(const TriangleSetup& t, 
       }
       entered = true;
       const Int clip = clip_mask(px, py);
-      if (((e0 + lo[0]) | (e1 + lo[1]) | (e2 + lo[2])) >= 0) {
+      if (!(simd::sign_bits(v + lo) & 7)) {
         for (int s = 0; s < S; ++s) coverage[s] = clip;
         ++stats.stamps_full;
       } else {
-        const Int c0(e0), c1(e1), c2(e2);
+        const Int c0 = simd::broadcast_lane<0>(v), c1 = simd::broadcast_lane<1>(v), c2 = simd::broadcast_lane<2>(v);
         Int any(0);
         for (int s = 0; s < S; ++s) {
           // Negative in any edge: the sign bit marks the lanes outside.
@@ -325,13 +329,13 @@ void TileRasterizer<PS, N, kEarlyZ, S>::rasterize_stamps(const TriangleSetup& t,
   for (int py = sy0; py < y1; py += simd::kStampHeight) {
     int64_t row[3];
     for (int e = 0; e < 3; ++e)
-      row[e] = t.edge[e].c + int64_t(t.edge[e].a) * sx0 * kSubpixelsPerPixel +
-               int64_t(t.edge[e].b) * py * kSubpixelsPerPixel;
+      row[e] = t.edges()[e].c + int64_t(t.edges()[e].a) * sx0 * kSubpixelsPerPixel +
+               int64_t(t.edges()[e].b) * py * kSubpixelsPerPixel;
     int stamp = stamp_index(sx0, py);
     bool entered = false;
     for (int px = sx0; px < x1; px += simd::kStampWidth, ++stamp) {
       const int64_t e0 = row[0], e1 = row[1], e2 = row[2];
-      for (int e = 0; e < 3; ++e) row[e] += int64_t(t.edge[e].a) * kStampW;
+      for (int e = 0; e < 3; ++e) row[e] += int64_t(t.edges()[e].a) * kStampW;
       if (((e0 + edges.max_offset[0]) | (e1 + edges.max_offset[1]) | (e2 + edges.max_offset[2])) < 0) {
         if (entered) break;  // see rasterize_small
         continue;
@@ -376,7 +380,7 @@ bool TileRasterizer<PS, N, kEarlyZ, S>::wide_coverage(const TriangleSetup& t, in
       const int64_t X = int64_t(px + simd::lane_x(l)) * kSubpixelsPerPixel + sample_x_[s];
       const int64_t Y = int64_t(py + simd::lane_y(l)) * kSubpixelsPerPixel + sample_y_[s];
       bool in = true;
-      for (const Edge& e : t.edge) in &= e.a * X + e.b * Y + e.c >= 0;
+      for (int e = 0; e < 3; ++e) in &= t.edges()[e].a * X + t.edges()[e].b * Y + t.edges()[e].c >= 0;
       inside[l] = in ? -1 : 0;
     }
     coverage[s] = clip & Int::load_aligned(inside);

@@ -56,7 +56,16 @@ struct Barycentrics {
   Plane b1_w, b2_w;  ///< barycentrics of vertices 1 and 2, divided by w
 };
 
-/// A binned triangle. Records differ in size; the header is followed by one of
+/// A small triangle's three edges side by side, as the tile rasterizer steps them (one 4-lane
+/// vector), relative to its record's corner: the corner of pixel (x0, y0) rounded down to a
+/// stamp column and row. Exact in 32 bits (see kSmallTriangleSize).
+struct alignas(16) SmallEdges {
+  int32_t corner[4];  ///< E at the record corner (subpixels), top-left bias included; [3] is 0
+  int32_t ab[4];      ///< a in the low 16 bits, b in the high 16 bits (simd::dot_halves); [3] is 0
+};
+
+/// A binned triangle. Records differ in size: this header, then the edges (SmallEdges for small
+/// triangles, else three Edges), then the varyings, one of
 ///  - flat: every varying is flat (the same at the three vertices, as in flat-shaded or
 ///    per-primitive data): one float4 per varying, its value;
 ///  - affine: equal w at the three vertices (2D and orthographic draws, full-screen passes): per
@@ -64,7 +73,6 @@ struct Barycentrics {
 ///  - otherwise: Barycentrics and per varying three float4 (the value at vertex 0 and the
 ///    differences a1 - a0, a2 - a0).
 struct alignas(16) TriangleSetup {
-  Edge edge[3];
   int16_t x0, y0, x1, y1;  ///< pixel bounds (half-open), inside the draw's clip rectangle
   float ref_x, ref_y;      ///< pixels: vertex 0, snapped
   Plane z;                 ///< screen-linear depth, bias included
@@ -77,28 +85,41 @@ struct alignas(16) TriangleSetup {
   bool front_facing() const { return flags & kFrontFacing; }
   /// Per-sample edge values of a stamp fit 32-bit integers.
   bool narrow_edges() const { return flags & kNarrowEdges; }
-  /// Spans less than kSmallTriangleSize pixels in x and in y.
+  /// Spans less than kSmallTriangleSize pixels in x and in y: its edges are SmallEdges.
   bool small() const { return flags & kSmall; }
   /// Equal w at the vertices.
   bool affine() const { return flags & kAffine; }
   /// Every varying is flat.
   bool flat() const { return flags & kFlat; }
 
+  /// Small triangles: the edges relative to the record corner.
+  const SmallEdges& small_edges() const { return *reinterpret_cast<const SmallEdges*>(this + 1); }
+  /// Other triangles: the three edges.
+  const Edge* edges() const { return reinterpret_cast<const Edge*>(this + 1); }
+
   /// Flat: the varyings' values, float4 each.
-  const float* flat_varyings() const { return reinterpret_cast<const float*>(this + 1); }
+  const float* flat_varyings() const { return reinterpret_cast<const float*>(varying_data()); }
   /// Affine, not flat: four planes per varying.
-  const Plane* varying_planes() const { return reinterpret_cast<const Plane*>(this + 1); }
+  const Plane* varying_planes() const { return reinterpret_cast<const Plane*>(varying_data()); }
   /// Neither flat nor affine: the barycentrics, then three float4 per varying.
-  const Barycentrics& barycentrics() const { return *reinterpret_cast<const Barycentrics*>(this + 1); }
+  const Barycentrics& barycentrics() const { return *reinterpret_cast<const Barycentrics*>(varying_data()); }
   const float* varying_deltas() const {
-    return reinterpret_cast<const float*>(reinterpret_cast<const std::byte*>(this + 1) + sizeof(Barycentrics));
+    return reinterpret_cast<const float*>(varying_data() + sizeof(Barycentrics));
   }
   const TriangleSetup* next() const {
     return reinterpret_cast<const TriangleSetup*>(reinterpret_cast<const std::byte*>(this) + 16 * record_blocks);
   }
+
+  /// Bytes from the start of a record to its varyings.
+  static constexpr size_t varyings_offset(bool small) {
+    return sizeof(TriangleSetup) + (small ? sizeof(SmallEdges) : 3 * sizeof(Edge));
+  }
+
+ private:
+  const std::byte* varying_data() const { return reinterpret_cast<const std::byte*>(this) + varyings_offset(small()); }
 };
 static_assert(kMaxTargetSize <= INT16_MAX, "pixel bounds are stored in 16 bits");
-static_assert(sizeof(TriangleSetup) == 80, "a small flat-shaded triangle takes 96 bytes with one varying");
+static_assert(TriangleSetup::varyings_offset(true) == 64, "a small flat-shaded triangle takes 80 bytes with one varying");
 
 /// Bound on |a| * stamp width + |b| * stamp height (subpixels) for the 32-bit per-sample path.
 inline constexpr int64_t kNarrowEdgeLimit = int64_t(1) << 29;
@@ -112,13 +133,14 @@ static_assert(int64_t(kSmallTriangleSize) * kSubpixelsPerPixel * (kTileSize + kS
                       kSubpixelsPerPixel * 2 < (int64_t(1) << 30));
 
 /// Bytes of one binned triangle with `varyings` float4 interpolants.
-constexpr size_t triangle_record_size(int varyings, bool flat, bool affine) {
-  const size_t bytes = sizeof(TriangleSetup) + (flat     ? sizeof(float) * 4 * varyings
-                                                : affine ? sizeof(Plane) * 4 * varyings
-                                                         : sizeof(Barycentrics) + sizeof(float) * 12 * varyings);
+constexpr size_t triangle_record_size(int varyings, bool small, bool flat, bool affine) {
+  const size_t bytes = TriangleSetup::varyings_offset(small) +
+                       (flat     ? sizeof(float) * 4 * varyings
+                        : affine ? sizeof(Plane) * 4 * varyings
+                                 : sizeof(Barycentrics) + sizeof(float) * 12 * varyings);
   return (bytes + 15) / 16 * 16;
 }
-static_assert(triangle_record_size(kMaxVaryings, false, false) / 16 <= UINT8_MAX);
+static_assert(triangle_record_size(kMaxVaryings, false, false, false) / 16 <= UINT8_MAX);
 
 /// A growable byte stream that, unlike std::vector, does not zero what it appends.
 class RecordStream {
