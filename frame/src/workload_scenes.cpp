@@ -77,6 +77,7 @@ class TrisScene final : public BuiltinScene {
     static constexpr int kVaryings = 1;
     const scenes::TrisWorkload::Vertex* vertices;
     float scale_x, scale_y;
+    const void* input(uint32_t i) const { return &vertices[i]; }
     void operator()(uint32_t i, VertexOutput<1>& out) const {
       const scenes::TrisWorkload::Vertex& v = vertices[i];
       out.position = {v.x * scale_x - 1.0f, v.y * scale_y - 1.0f, d3d_depth(v.z), 1.0f};

@@ -5,7 +5,10 @@
 //     void operator()(uint32_t vertex_index, VertexOutput<kVaryings>& out) const;
 //   It writes the clip-space position and the float4 interpolants of one vertex. It is called
 //   from several threads at once (and possibly more than once per vertex), so it must be a pure
-//   function of the index.
+//   function of the index. It may also say where a vertex's inputs start:
+//     const void* input(uint32_t vertex_index) const;
+//   the front end then prefetches them a batch of triangles ahead (a vertex stream larger than
+//   the caches, as W2's 48 MB, otherwise stalls every vertex on memory).
 //
 //   PixelFunctor: struct with `static constexpr bool kCanDiscard` (texkill/clip: it may set
 //   PixelOutput::discard), `static constexpr bool kWritesDepth` (it sets PixelOutput::depth) and
@@ -58,6 +61,12 @@ template <class VS>
 concept VertexFunctor = requires(const VS& vs, uint32_t i, VertexOutput<VS::kVaryings>& out) {
   requires VS::kVaryings >= 0 && VS::kVaryings <= kMaxVaryings;
   vs(i, out);
+};
+
+/// A vertex functor that says where vertex i's inputs start (see above).
+template <class VS>
+concept VertexInputAddress = requires(const VS& vs, uint32_t i) {
+  { vs.input(i) } -> std::convertible_to<const void*>;
 };
 
 template <class PS, int N>

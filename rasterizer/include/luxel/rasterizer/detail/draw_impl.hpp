@@ -592,6 +592,10 @@ void front_end_chunk(const DrawConstants& dc, const Geometry& geometry, const VS
       for (int k = 0; k < 3; ++k) positions[3 * i + k] = &v[i][k].position;
     for (uint32_t base = first; base < last; base += kFrontEndBatch) {
       const int n = static_cast<int>(std::min<uint32_t>(kFrontEndBatch, last - base));
+      if constexpr (VertexInputAddress<VS>) {
+        const uint32_t ahead = base + kFrontEndBatch, ahead_end = std::min<uint32_t>(last, ahead + kFrontEndBatch);
+        for (uint32_t i = 3 * ahead; i < 3 * ahead_end; ++i) simd::prefetch(vs.input(i));
+      }
       for (int i = 0; i < n; ++i)
         for (int k = 0; k < 3; ++k) vs(3 * (base + i) + k, v[i][k]);
       process_triangles(dc, positions, n, bins, stats);
@@ -618,6 +622,13 @@ void front_end_chunk(const DrawConstants& dc, const Geometry& geometry, const VS
     ++batch;
   };
   for (uint32_t tri = first; tri < last; ++tri) {
+    if constexpr (VertexInputAddress<VS>) {
+      if (tri + kFrontEndBatch < last)
+        for (int k = 0; k < 3; ++k) {
+          const uint32_t ahead = geometry.index(3 * (tri + kFrontEndBatch) + k);
+          if (ahead < geometry.vertex_count) simd::prefetch(vs.input(ahead));
+        }
+    }
     uint32_t idx[3];
     bool bad = false;
     for (int k = 0; k < 3; ++k) {
