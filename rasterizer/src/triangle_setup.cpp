@@ -317,7 +317,7 @@ void bin_triangle(const DrawConstants& dc, const TriangleLanes& tri, const Setup
   // Edges on the vertices in positive (clockwise) order.
   const SnappedLanes* v = tri.vertex;
   const int i1 = clockwise ? 1 : 2, i2 = clockwise ? 2 : 1;
-  auto edge = [&](int k) {
+  auto edge = [&](int k) LUXEL_INLINE_LAMBDA {
     const int from = k == 0 ? 0 : k == 1 ? i1 : i2, to = k == 0 ? i1 : k == 1 ? i2 : 0;
     return make_edge(v[from].X[l], v[from].Y[l], v[to].X[l], v[to].Y[l]);
   };
@@ -339,7 +339,7 @@ void bin_triangle(const DrawConstants& dc, const TriangleLanes& tri, const Setup
   // record line was just allocated and is not in the cache, so nothing may be read from it, and a
   // wider load of values just stored narrower (a struct built on the stack, copied) cannot be
   // forwarded from the store buffer and waits for every older store to reach the cache.
-  auto write = [&](std::byte* record) {
+  auto write = [&](std::byte* record) LUXEL_INLINE_LAMBDA {
     TriangleSetup& t = *::new (record) TriangleSetup;
     if (small) {
       SmallEdges& e = *::new (record + sizeof(TriangleSetup)) SmallEdges;
@@ -391,7 +391,7 @@ void bin_triangle(const DrawConstants& dc, const TriangleLanes& tri, const Setup
       }
     }
   };
-  auto emit = [&](int tile) {
+  auto emit = [&](int tile) LUXEL_INLINE_LAMBDA {
     RecordStream& records = bins.tile_records[tile];
     if (records.empty()) bins.touched_tiles.push_back(static_cast<uint32_t>(tile));
     write(records.append(size));

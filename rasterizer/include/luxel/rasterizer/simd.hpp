@@ -27,8 +27,11 @@
 /// file) and buys nothing.
 #if defined(LUXEL_SANITIZE_BUILD)
 #define LUXEL_INLINE inline
+#define LUXEL_INLINE_LAMBDA
 #else
 #define LUXEL_INLINE [[gnu::always_inline]] inline
+/// The same for a lambda: `[&](int i) LUXEL_INLINE_LAMBDA { ... }`.
+#define LUXEL_INLINE_LAMBDA __attribute__((always_inline))
 #endif
 
 namespace luxel::rasterizer::simd {
