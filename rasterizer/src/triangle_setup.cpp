@@ -287,16 +287,12 @@ void setup_lanes(const DrawConstants& dc, const TriangleLanes& tri, SetupLanes& 
 void bin_triangle(const DrawConstants& dc, const TriangleLanes& tri, const SetupLanes& setup, int l, ChunkBins& bins,
                   DrawStats& stats) {
   const simd::LaneBits bit = 1u << l;
-  if (setup.zero_area & bit) {
-    ++stats.degenerate;
-    return;
-  }
-  if (setup.culled & bit) {
-    ++stats.culled;
-    return;
-  }
-  if (setup.empty & bit) {
-    ++stats.degenerate;
+  if ((setup.zero_area | setup.culled | setup.empty) & bit) {
+    if (setup.culled & bit) {
+      ++stats.culled;
+    } else {
+      ++stats.degenerate;
+    }
     return;
   }
   const bool clockwise = setup.clockwise & bit, small = setup.small & bit, affine = setup.affine & bit;
@@ -306,11 +302,13 @@ void bin_triangle(const DrawConstants& dc, const TriangleLanes& tri, const Setup
   const glm::vec4* a[3];
   for (int k = 0; k < 3; ++k) a[k] = reinterpret_cast<const glm::vec4*>(tri.data[k][l]) + 1;
   bool flat = true;
-  for (int i = 0; i < dc.varyings && flat; ++i) {
-    const glm::vec4& a0 = a[0][i];
-    const float zero = a0.x * 0.0f + a0.y * 0.0f + a0.z * 0.0f + a0.w * 0.0f;  // NaN unless all finite
-    flat = std::memcmp(&a[1][i], &a0, sizeof(glm::vec4)) == 0 && std::memcmp(&a[2][i], &a0, sizeof(glm::vec4)) == 0 &&
-           zero == 0.0f;
+  for (int i = 0; i < dc.varyings; ++i) {
+    using simd::Int4;
+    const Int4 v0 = Int4::load_unaligned(reinterpret_cast<const int32_t*>(&a[0][i]));
+    const Int4 v1 = Int4::load_unaligned(reinterpret_cast<const int32_t*>(&a[1][i]));
+    const Int4 v2 = Int4::load_unaligned(reinterpret_cast<const int32_t*>(&a[2][i]));
+    const Int4 exponent(0x7f800000);  // all ones: Inf or NaN
+    flat &= xsimd::all((v0 == v1) & (v0 == v2) & ((v0 & exponent) != exponent));
   }
   const size_t size = triangle_record_size(dc.varyings, small, flat, affine);
 

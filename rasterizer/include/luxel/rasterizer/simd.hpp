@@ -234,6 +234,37 @@ inline void store_bytes(uint8_t* p, const Int& v) {
 #endif
 }
 
+/// Stores the lanes of v whose mask lane is all ones (sign bit set) to p, leaving the others'
+/// memory untouched and unread. p need not be aligned.
+inline void store_masked(int32_t* p, const Int& mask, const Int& v) {
+#if defined(__AVX512F__)
+  _mm512_mask_storeu_epi32(p, _mm512_movepi32_mask(mask), v);
+#elif defined(__AVX2__)
+  _mm256_maskstore_epi32(p, mask, v);
+#else
+  alignas(64) int32_t m[kLanes], value[kLanes];
+  mask.store_aligned(m);
+  v.store_aligned(value);
+  for (int i = 0; i < kLanes; ++i)
+    if (m[i] < 0) p[i] = value[i];
+#endif
+}
+
+inline void store_masked(float* p, const Int& mask, const Float& v) {
+#if defined(__AVX512F__)
+  _mm512_mask_storeu_ps(p, _mm512_movepi32_mask(mask), v);
+#elif defined(__AVX2__)
+  _mm256_maskstore_ps(p, mask, v);
+#else
+  alignas(64) int32_t m[kLanes];
+  alignas(64) float value[kLanes];
+  mask.store_aligned(m);
+  v.store_aligned(value);
+  for (int i = 0; i < kLanes; ++i)
+    if (m[i] < 0) p[i] = value[i];
+#endif
+}
+
 /// base[index[l]] in each lane l. (xsimd 8.1's batch<int32_t>::gather never picks the AVX2
 /// instruction, its enable_if makes that overload unusable, and inserts lanes one by one.)
 inline Int gather(const int32_t* base, const Int& index) {

@@ -441,7 +441,7 @@ Int TileRasterizer<PS, N, kEarlyZ, S>::early_depth(float corner_z, int stamp, In
     const Float d = Float::load_aligned(depth);
     const Float z = sample_depth(s, corner_z, min_depth, max_depth);
     const Int pass = coverage[s] & simd::mask_of(compare(kFunc, z, d));
-    if (depth_write) simd::select(pass, z, d).store_aligned(depth);
+    if (depth_write) simd::store_masked(depth, pass, z);
     coverage[s] = pass;
     live |= pass;
   }
@@ -559,17 +559,11 @@ void TileRasterizer<PS, N, kEarlyZ, S>::shade_stamp(const TriangleSetup& t, int 
     for (int s = 0; s < S; ++s) samples_passed += std::popcount(simd::sign_bits(coverage[s]));
   if (color_write_ == ColorWrite::None) return;
   if (color_write_ != ColorWrite::Merged) {
-    // No blending, all channels: packing clamps by itself, and a sample plane whose lanes are
-    // all covered takes one store.
+    // No blending, all channels: packing clamps by itself, and the covered lanes are stored
+    // without reading what they replace (a load would wait for the line to arrive).
     const Int packed = color_write_ == ColorWrite::PlainSrgb ? pack_srgb8(out.color) : pack_unorm8(out.color);
     int32_t* dst = reinterpret_cast<int32_t*>(color_ + stamp * simd::kLanes);
-    for (int s = 0; s < S; ++s, dst += kTilePixels) {
-      if (simd::sign_bits(coverage[s]) == simd::kAllLanes) {
-        packed.store_aligned(dst);
-      } else {
-        simd::select(coverage[s], packed, Int::load_aligned(dst)).store_aligned(dst);
-      }
-    }
+    for (int s = 0; s < S; ++s, dst += kTilePixels) simd::store_masked(dst, coverage[s], packed);
     return;
   }
   const simd::Float4 color = saturate(out.color);
