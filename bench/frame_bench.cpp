@@ -10,6 +10,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
+#include <filesystem>
 #include <iostream>
 #include <string>
 #include <vector>
@@ -62,7 +63,13 @@ int main(int argc, char** argv) {
       const std::string path = out + "/" + name + "_" + std::to_string(settings.width) + "x" +
                                std::to_string(settings.height) + "_msaa" + std::to_string(settings.samples) + "_t" +
                                std::to_string(threads) + ".png";
-      luxel::rasterizer::write_image(scene->image(), path);
+      try {
+        std::filesystem::create_directories(out);  // as the peer harness does
+        luxel::rasterizer::write_image(scene->image(), path);
+      } catch (const std::exception& e) {
+        std::fprintf(stderr, "luxel_frame_bench: %s: %s\n", path.c_str(), e.what());
+        return 1;
+      }
     }
   }
   return 0;
