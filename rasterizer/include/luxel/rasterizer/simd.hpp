@@ -234,6 +234,18 @@ inline void store_bytes(uint8_t* p, const Int& v) {
 #endif
 }
 
+namespace detail {
+template <class T, class Batch>
+inline void store_masked_by_lane(T* p, const Int& mask, const Batch& v) {
+  alignas(64) int32_t m[kLanes];
+  alignas(64) T value[kLanes];
+  mask.store_aligned(m);
+  v.store_aligned(value);
+  for (int i = 0; i < kLanes; ++i)
+    if (m[i] < 0) p[i] = value[i];
+}
+}  // namespace detail
+
 /// Stores the lanes of v whose mask lane is all ones (sign bit set) to p, leaving the others'
 /// memory untouched and unread. p need not be aligned.
 inline void store_masked(int32_t* p, const Int& mask, const Int& v) {
@@ -242,26 +254,16 @@ inline void store_masked(int32_t* p, const Int& mask, const Int& v) {
 #elif defined(__AVX2__)
   _mm256_maskstore_epi32(p, mask, v);
 #else
-  alignas(64) int32_t m[kLanes], value[kLanes];
-  mask.store_aligned(m);
-  v.store_aligned(value);
-  for (int i = 0; i < kLanes; ++i)
-    if (m[i] < 0) p[i] = value[i];
+  detail::store_masked_by_lane(p, mask, v);
 #endif
 }
-
 inline void store_masked(float* p, const Int& mask, const Float& v) {
 #if defined(__AVX512F__)
   _mm512_mask_storeu_ps(p, _mm512_movepi32_mask(mask), v);
 #elif defined(__AVX2__)
   _mm256_maskstore_ps(p, mask, v);
 #else
-  alignas(64) int32_t m[kLanes];
-  alignas(64) float value[kLanes];
-  mask.store_aligned(m);
-  v.store_aligned(value);
-  for (int i = 0; i < kLanes; ++i)
-    if (m[i] < 0) p[i] = value[i];
+  detail::store_masked_by_lane(p, mask, v);
 #endif
 }
 
@@ -383,6 +385,16 @@ inline void transpose_rows(const float* const* rows, Float& x, Float& y, Float& 
 using Double = xsimd::batch<double, Arch>;
 static_assert(2 * Double::size == Float::size);
 
+namespace detail {
+template <class Batch>
+inline void to_doubles_by_lane(const Batch& v, Double& low, Double& high) {
+  alignas(64) typename Batch::value_type lanes_of_v[kLanes];
+  v.store_aligned(lanes_of_v);
+  low = lanes<Double>([&](int l) { return double(lanes_of_v[l]); });
+  high = lanes<Double>([&](int l) { return double(lanes_of_v[l + Double::size]); });
+}
+}  // namespace detail
+
 /// v's low and high lanes as doubles (exact).
 inline void to_doubles(const Int& v, Double& low, Double& high) {
 #if defined(__AVX512F__)
@@ -392,10 +404,7 @@ inline void to_doubles(const Int& v, Double& low, Double& high) {
   low = Double(_mm256_cvtepi32_pd(_mm256_castsi256_si128(v)));
   high = Double(_mm256_cvtepi32_pd(_mm256_extracti128_si256(v, 1)));
 #else
-  alignas(64) int32_t lanes_of_v[kLanes];
-  v.store_aligned(lanes_of_v);
-  low = lanes<Double>([&](int l) { return double(lanes_of_v[l]); });
-  high = lanes<Double>([&](int l) { return double(lanes_of_v[l + Double::size]); });
+  detail::to_doubles_by_lane(v, low, high);
 #endif
 }
 inline void to_doubles(const Float& v, Double& low, Double& high) {
@@ -406,10 +415,7 @@ inline void to_doubles(const Float& v, Double& low, Double& high) {
   low = Double(_mm256_cvtps_pd(_mm256_castps256_ps128(v)));
   high = Double(_mm256_cvtps_pd(_mm256_extractf128_ps(v, 1)));
 #else
-  alignas(64) float lanes_of_v[kLanes];
-  v.store_aligned(lanes_of_v);
-  low = lanes<Double>([&](int l) { return double(lanes_of_v[l]); });
-  high = lanes<Double>([&](int l) { return double(lanes_of_v[l + Double::size]); });
+  detail::to_doubles_by_lane(v, low, high);
 #endif
 }
 /// The floats nearest to `low` and `high`'s lanes, as one batch (the inverse of to_doubles).
