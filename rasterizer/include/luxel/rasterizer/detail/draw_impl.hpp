@@ -126,7 +126,11 @@ class TileRasterizer {
   /// Early and late depth tests take it from here alike, so that a pass with depth func Equal
   /// over the same triangles passes whichever test its shader allows.
   LUXEL_INLINE Float sample_depth(int s, float corner_z, const Float& min_depth, const Float& max_depth) const {
-    return xsimd::min(xsimd::max(sample_z_[s] + Float(corner_z), min_depth), max_depth);
+    return clamp_depth(sample_z_[s] + Float(corner_z), min_depth, max_depth);
+  }
+  /// A depth clamped to the viewport's depth range, as every depth test sees it.
+  static Float clamp_depth(const Float& z, const Float& min_depth, const Float& max_depth) {
+    return xsimd::min(xsimd::max(z, min_depth), max_depth);
   }
   static float corner_depth(const TriangleSetup& t, int px, int py) {
     return std::fma(t.z.dqdx, float(px) - t.ref_x, t.z.dqdy * (float(py) - t.ref_y));
@@ -373,6 +377,7 @@ template <class PS, int N, bool kEarlyZ, int S>
 bool TileRasterizer<PS, N, kEarlyZ, S>::wide_coverage(const TriangleSetup& t, int px, int py, const Int& clip,
                                                       Int* coverage) {
   // Edges too long for 32-bit per-sample steps: exact 64-bit evaluation, one sample at a time.
+  const Edge* edges = t.edges();
   Int any(0);
   for (int s = 0; s < S; ++s) {
     alignas(64) int32_t inside[simd::kLanes];
@@ -380,7 +385,7 @@ bool TileRasterizer<PS, N, kEarlyZ, S>::wide_coverage(const TriangleSetup& t, in
       const int64_t X = int64_t(px + simd::lane_x(l)) * kSubpixelsPerPixel + sample_x_[s];
       const int64_t Y = int64_t(py + simd::lane_y(l)) * kSubpixelsPerPixel + sample_y_[s];
       bool in = true;
-      for (int e = 0; e < 3; ++e) in &= t.edges()[e].a * X + t.edges()[e].b * Y + t.edges()[e].c >= 0;
+      for (int e = 0; e < 3; ++e) in &= edges[e].a * X + edges[e].b * Y + edges[e].c >= 0;
       inside[l] = in ? -1 : 0;
     }
     coverage[s] = clip & Int::load_aligned(inside);
@@ -400,8 +405,8 @@ Int TileRasterizer<PS, N, kEarlyZ, S>::depth_stencil_test(const TriangleSetup& t
   Int depth_pass = coverage;
   Float z;
   if (depth_test_) {
-    z = shader_depth ? xsimd::min(xsimd::max(*shader_depth, Float(min_depth_)), Float(max_depth_))
-                     : sample_depth(s, corner_z, Float(min_depth_), Float(max_depth_));
+    const Float min_depth(min_depth_), max_depth(max_depth_);
+    z = shader_depth ? clamp_depth(*shader_depth, min_depth, max_depth) : sample_depth(s, corner_z, min_depth, max_depth);
     depth_pass &= simd::mask_of(compare(depth_func_, z, dst_depth));
   }
   Int pass = depth_pass;
@@ -423,7 +428,7 @@ Int TileRasterizer<PS, N, kEarlyZ, S>::depth_stencil_test(const TriangleSetup& t
     updated = (value & ~write_mask) | (updated & write_mask);
     simd::store_bytes(stencil, updated);
   }
-  if (depth_write_) simd::select(pass, z, dst_depth).store_aligned(depth);
+  if (depth_write_) simd::store_masked(depth, pass, z);
   return pass;
 }
 
@@ -462,7 +467,7 @@ void TileRasterizer<PS, N, kEarlyZ, S>::write_color(int stamp, int s, const Int&
   }
   const Int write(static_cast<int32_t>(plan_.color_write_mask));
   value = (value & write) | (old & ~write);
-  simd::select(coverage, value, old).store_aligned(dst);
+  simd::store_masked(dst, coverage, value);
 }
 
 template <class PS, int N, bool kEarlyZ, int S>
