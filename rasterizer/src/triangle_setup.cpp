@@ -10,6 +10,7 @@
 #include <algorithm>
 #include <bit>
 #include <cmath>
+#include <cstddef>
 #include <cstdlib>
 #include <cstring>
 #include <new>
@@ -35,6 +36,9 @@ void ChunkBins::reset(int tile_count) {
 }
 
 namespace {
+
+static_assert(std::has_single_bit(unsigned(kTileSize)));
+constexpr int kTileShift = std::countr_zero(unsigned(kTileSize));
 
 constexpr int kMaxClipVertices = 3 + 6;  // each of the 6 clip planes adds at most one vertex
 constexpr int kFloatsPerVertex = 4 * (1 + kMaxVaryings);
@@ -162,14 +166,15 @@ struct TriangleLanes {
   simd::LaneBits snappable = 0;  ///< lanes whose three vertices snapped
   simd::LaneBits in_view = 0;    ///< lanes whose three vertices lie inside the view volume
 
-  /// Snaps the vertices of triangles 0..count-1 (the lanes above repeat the last triangle).
+  /// Snaps the vertices of triangles 0..count-1; the lanes above become copies of the last
+  /// triangle (so that every lane reads valid data) and are left out of both masks.
   void snap(const DrawConstants& dc, int count) {
-    snappable = in_view = simd::kAllLanes;
+    const simd::LaneBits lanes = simd::kAllLanes >> (simd::kLanes - count);
+    snappable = in_view = lanes;
     for (int k = 0; k < 3; ++k) {
-      const float* rows[simd::kLanes];
-      for (int l = 0; l < simd::kLanes; ++l) rows[l] = data[k][std::min(l, count - 1)];
+      for (int l = count; l < simd::kLanes; ++l) data[k][l] = data[k][count - 1];
       simd::LaneBits view;
-      snappable &= snap_vertices(dc, rows, vertex[k], view);
+      snappable &= snap_vertices(dc, data[k], vertex[k], view);
       in_view &= view;
     }
   }
@@ -180,21 +185,59 @@ struct TriangleLanes {
 /// computed in doubles one triangle at a time: the results are the same bits.
 struct SetupLanes {
   alignas(64) int32_t x0[simd::kLanes], y0[simd::kLanes], x1[simd::kLanes], y1[simd::kLanes];
-  alignas(64) float z_q0[simd::kLanes], z_dqdx[simd::kLanes], z_dqdy[simd::kLanes];
+  alignas(64) int32_t tile[simd::kLanes];  ///< the tile of pixel (x0, y0)
   alignas(64) double e1x[simd::kLanes], e1y[simd::kLanes], e2x[simd::kLanes], e2y[simd::kLanes];
   alignas(64) double inv_det[simd::kLanes];
-  alignas(64) int32_t small_corner[3][simd::kLanes], small_ab[3][simd::kLanes];  ///< SmallEdges (small lanes)
+  /// Lane l's record as bin_triangle writes it: the TriangleSetup header, and SmallEdges (small
+  /// lanes). Built in lanes and transposed: writing a record is two 32-byte copies.
+  alignas(32) int32_t header[simd::kLanes][8];
+  alignas(32) int32_t small_edges[simd::kLanes][8];
   simd::LaneBits zero_area = 0;  ///< degenerate after snapping
   simd::LaneBits culled = 0;     ///< facing away by the cull mode (zero-area lanes excluded)
   simd::LaneBits empty = 0;      ///< no pixel inside the clip rectangle
   simd::LaneBits clockwise = 0;  ///< on screen, y down
   simd::LaneBits small = 0;      ///< TriangleSetup::small
   simd::LaneBits affine = 0;     ///< equal 1/w at the three vertices
+  simd::LaneBits one_tile = 0;   ///< all pixels in `tile`
 
   PlaneBasis basis(int l) const { return {e1x[l], e1y[l], e2x[l], e2y[l], inv_det[l]}; }
+  /// Lanes that are set up but will not be binned.
+  simd::LaneBits rejected() const { return zero_area | culled | empty; }
 };
 
-void setup_lanes(const DrawConstants& dc, const TriangleLanes& tri, SetupLanes& out) {
+// The header as setup_lanes lays it out: eight 32-bit fields.
+static_assert(sizeof(TriangleSetup) == 32 && offsetof(TriangleSetup, x0) == 0 && offsetof(TriangleSetup, y0) == 2 &&
+              offsetof(TriangleSetup, x1) == 4 && offsetof(TriangleSetup, y1) == 6 &&
+              offsetof(TriangleSetup, ref_x) == 8 && offsetof(TriangleSetup, ref_y) == 12 &&
+              offsetof(TriangleSetup, z) == 16 && sizeof(Plane) == 12 &&
+              offsetof(TriangleSetup, record_blocks) == 28 && offsetof(TriangleSetup, flags) == 29);
+static_assert(sizeof(SmallEdges) == 32);
+
+/// Edge k of triangle l, on its vertices in positive (clockwise) order.
+Edge lane_edge(const TriangleLanes& tri, const SetupLanes& setup, int l, int k) {
+  const bool clockwise = setup.clockwise >> l & 1;
+  const int i1 = clockwise ? 1 : 2, i2 = clockwise ? 2 : 1;
+  const int from = k == 0 ? 0 : k == 1 ? i1 : i2, to = k == 0 ? i1 : k == 1 ? i2 : 0;
+  const SnappedLanes* v = tri.vertex;
+  return make_edge(v[from].X[l], v[from].Y[l], v[to].X[l], v[to].Y[l]);
+}
+
+/// Per-sample edge values of a stamp fit 32 bits (TriangleSetup::narrow_edges); triangle l is
+/// not small (small triangles always are).
+bool narrow_edges(const TriangleLanes& tri, const SetupLanes& setup, int l) {
+  bool narrow = true;
+  for (int k = 0; k < 3; ++k) {
+    const Edge e = lane_edge(tri, setup, l, k);
+    const int64_t span = std::abs(int64_t(e.a)) * (simd::kStampWidth * kSubpixelsPerPixel) +
+                         std::abs(int64_t(e.b)) * (simd::kStampHeight * kSubpixelsPerPixel);
+    narrow &= span <= kNarrowEdgeLimit;
+  }
+  return narrow;
+}
+
+/// Sets up the triangles of `tri` whose lanes are in `ready`. (Other lanes are computed too, from
+/// whatever their vertices hold, and must be ignored.)
+void setup_lanes(const DrawConstants& dc, const TriangleLanes& tri, simd::LaneBits ready, SetupLanes& out) {
   using simd::Double;
   using simd::Float;
   using simd::Int;
@@ -216,6 +259,9 @@ void setup_lanes(const DrawConstants& dc, const TriangleLanes& tri, SetupLanes& 
   x1.store_aligned(out.x1);
   y1.store_aligned(out.y1);
   out.empty = simd::to_bits((x0 >= x1) | (y0 >= y1));
+  const Int tx0 = x0 >> kTileShift, ty0 = y0 >> kTileShift;
+  (ty0 * Int(dc.tiles_x) + tx0).store_aligned(out.tile);
+  out.one_tile = simd::to_bits((tx0 == ((x1 - Int(1)) >> kTileShift)) & (ty0 == ((y1 - Int(1)) >> kTileShift)));
   const Int small_span(kSmallTriangleSize * kSubpixelsPerPixel);
   out.small = simd::to_bits((max_x - min_x < small_span) & (max_y - min_y < small_span));
   const Float w0 = Float::load_aligned(v[0].inv_w);
@@ -258,16 +304,20 @@ void setup_lanes(const DrawConstants& dc, const TriangleLanes& tri, SetupLanes& 
   const Int Xb = xsimd::select(clockwise, X2, X1), Yb = xsimd::select(clockwise, Y2, Y1);
   const Int corner_x = (x0 & Int(~(simd::kStampWidth - 1))) << kSubpixelBits;
   const Int corner_y = (y0 & Int(~(simd::kStampHeight - 1))) << kSubpixelBits;
+  Int small_edges[8];  // SmallEdges: corner[0..3], ab[0..3]
   auto small_edge = [&](int k, const Int& Px, const Int& Py, const Int& Qx, const Int& Qy) {
     const Int a = Py - Qy, b = Qx - Px;  // as make_edge
     const auto top_left = (a > Int(0)) | ((a == Int(0)) & (b > Int(0)));
     const Int bias = xsimd::select(top_left, Int(0), Int(1));
-    (a * (corner_x - Px) + b * (corner_y - Py) - bias).store_aligned(out.small_corner[k]);
-    ((a & Int(0xffff)) | (b << 16)).store_aligned(out.small_ab[k]);
+    small_edges[k] = a * (corner_x - Px) + b * (corner_y - Py) - bias;
+    small_edges[4 + k] = (a & Int(0xffff)) | (b << 16);
   };
   small_edge(0, X0, Y0, Xa, Ya);
   small_edge(1, Xa, Ya, Xb, Yb);
   small_edge(2, Xb, Yb, X0, Y0);
+  small_edges[3] = small_edges[7] = Int(0);
+  simd::transpose_to_rows(small_edges, out.small_edges);
+
   const CullMode cull = dc.rasterizer.cull;
   out.culled = cull == CullMode::CW    ? out.clockwise
                : cull == CullMode::CCW ? ~out.clockwise & ~out.zero_area & simd::kAllLanes
@@ -278,133 +328,126 @@ void setup_lanes(const DrawConstants& dc, const TriangleLanes& tri, SetupLanes& 
     const Float slope = xsimd::max(xsimd::abs(dqdx), xsimd::abs(dqdy));
     q0 += Float(dc.rasterizer.depth_bias) + Float(dc.rasterizer.slope_scaled_depth_bias) * slope;
   }
-  q0.store_aligned(out.z_q0);
-  dqdx.store_aligned(out.z_dqdx);
-  dqdy.store_aligned(out.z_dqdy);
+
+  // The record's size and flags. Flat varyings: the same finite bits at the three vertices
+  // (then they interpolate to their value at vertex 0, which the record stores alone).
+  simd::LaneBits flat = simd::kAllLanes;
+  for (int i = 0; i < dc.varyings; ++i) {
+    Float c[3][4];
+    for (int k = 0; k < 3; ++k) simd::transpose_rows(tri.data[k], c[k][0], c[k][1], c[k][2], c[k][3], 4 * (1 + i));
+    for (int j = 0; j < 4; ++j) {
+      const Int v0 = xsimd::bitwise_cast<Int>(c[0][j]), exponent(0x7f800000);  // all ones: Inf or NaN
+      flat &= simd::to_bits((v0 == xsimd::bitwise_cast<Int>(c[1][j])) & (v0 == xsimd::bitwise_cast<Int>(c[2][j])) &
+                            ((v0 & exponent) != exponent));
+    }
+  }
+  // Narrow edges: always for small triangles; for others (rare) a test in 64 bits.
+  simd::LaneBits narrow = out.small;
+  for (simd::LaneBits wide = ready & ~out.rejected() & ~out.small; wide; wide &= wide - 1)
+    if (narrow_edges(tri, out, std::countr_zero(wide))) narrow |= wide & -wide;
+  const simd::LaneBits front_facing = dc.rasterizer.front_counter_clockwise ? ~out.clockwise : out.clockwise;
+  auto flag = [](simd::LaneBits lanes, int bit) { return xsimd::select(simd::int_mask(lanes), Int(bit), Int(0)); };
+  const Int flags = flag(front_facing, TriangleSetup::kFrontFacing) | flag(narrow, TriangleSetup::kNarrowEdges) |
+                    flag(out.small, TriangleSetup::kSmall) | flag(out.affine, TriangleSetup::kAffine) |
+                    flag(flat, TriangleSetup::kFlat);
+  auto blocks = [&](bool small) {
+    const int n = dc.varyings;
+    return xsimd::select(simd::int_mask(flat), Int(triangle_record_size(n, small, true, false) / 16),
+                         xsimd::select(simd::int_mask(out.affine), Int(triangle_record_size(n, small, false, true) / 16),
+                                       Int(triangle_record_size(n, small, false, false) / 16)));
+  };
+  const Int size_and_flags = xsimd::select(simd::int_mask(out.small), blocks(true), blocks(false)) | (flags << 8);
+  // TriangleSetup, field by field (see the static_assert on its layout).
+  const Int header[8] = {(x0 & Int(0xffff)) | (y0 << 16),
+                         (x1 & Int(0xffff)) | (y1 << 16),
+                         xsimd::bitwise_cast<Int>(Float::load_aligned(v[0].x)),
+                         xsimd::bitwise_cast<Int>(Float::load_aligned(v[0].y)),
+                         xsimd::bitwise_cast<Int>(q0),
+                         xsimd::bitwise_cast<Int>(dqdx),
+                         xsimd::bitwise_cast<Int>(dqdy),
+                         size_and_flags};
+  simd::transpose_to_rows(header, out.header);
 }
 
-/// Writes triangle l's record into every tile it touches (less those wholly outside an edge).
-void bin_triangle(const DrawConstants& dc, const TriangleLanes& tri, const SetupLanes& setup, int l, ChunkBins& bins,
-                  DrawStats& stats) {
-  const simd::LaneBits bit = 1u << l;
-  if ((setup.zero_area | setup.culled | setup.empty) & bit) {
-    if (setup.culled & bit) {
-      ++stats.culled;
-    } else {
-      ++stats.degenerate;
-    }
+/// Writes triangle l's record at `record` from setup's rows: a record line was just allocated
+/// and is not in the cache, so nothing may be read from it, and a wider load of values just
+/// stored narrower (a struct built on the stack, copied) cannot be forwarded from the store
+/// buffer and waits for every older store to reach the cache.
+LUXEL_INLINE void write_record(const DrawConstants& dc, const TriangleLanes& tri, const SetupLanes& setup, int l,
+                               std::byte* record);
+
+/// The parts of a record other than a small flat-shaded triangle's (out of line: rare in the
+/// workloads where setup is the bottleneck): wide edges, interpolated varyings.
+[[gnu::noinline]] void write_record_rest(const DrawConstants& dc, const TriangleLanes& tri, const SetupLanes& setup,
+                                         int l, std::byte* record) {
+  const int flags = setup.header[l][7] >> 8;
+  const bool small = flags & TriangleSetup::kSmall;
+  if (small) {
+    std::memcpy(record + sizeof(TriangleSetup), setup.small_edges[l], sizeof(SmallEdges));
+  } else {
+    Edge* e = ::new (record + sizeof(TriangleSetup)) Edge[3];
+    for (int k = 0; k < 3; ++k) e[k] = lane_edge(tri, setup, l, k);
+  }
+  const glm::vec4* a[3];  // the varyings of the three vertices
+  for (int k = 0; k < 3; ++k) a[k] = reinterpret_cast<const glm::vec4*>(tri.data[k][l]) + 1;
+  std::byte* tail = record + TriangleSetup::varyings_offset(small);
+  if (flags & TriangleSetup::kFlat) {
+    for (int i = 0; i < dc.varyings; ++i) std::memcpy(tail + 16 * i, &a[0][i], 16);
     return;
   }
-  const bool clockwise = setup.clockwise & bit, small = setup.small & bit, affine = setup.affine & bit;
-
-  // Flat varyings (the same finite bits at the three vertices) interpolate to their value at
-  // vertex 0: the record stores that alone and no barycentrics.
-  const glm::vec4* a[3];
-  for (int k = 0; k < 3; ++k) a[k] = reinterpret_cast<const glm::vec4*>(tri.data[k][l]) + 1;
-  bool flat = true;
-  for (int i = 0; i < dc.varyings; ++i) {
-    using simd::Int4;
-    const Int4 v0 = Int4::load_unaligned(reinterpret_cast<const int32_t*>(&a[0][i]));
-    const Int4 v1 = Int4::load_unaligned(reinterpret_cast<const int32_t*>(&a[1][i]));
-    const Int4 v2 = Int4::load_unaligned(reinterpret_cast<const int32_t*>(&a[2][i]));
-    const Int4 exponent(0x7f800000);  // all ones: Inf or NaN
-    flat &= xsimd::all((v0 == v1) & (v0 == v2) & ((v0 & exponent) != exponent));
+  // Planes in the vertices' own order.
+  const PlaneBasis basis = setup.basis(l);
+  if (flags & TriangleSetup::kAffine) {
+    // Equal w: varyings are linear on screen, a plane per component (a constant one exactly).
+    Plane* planes = reinterpret_cast<Plane*>(tail);
+    for (int i = 0; i < dc.varyings; ++i)
+      for (int c = 0; c < 4; ++c) planes[4 * i + c] = basis.plane(a[0][i][c], a[1][i][c], a[2][i][c]);
+    return;
   }
-  const size_t size = triangle_record_size(dc.varyings, small, flat, affine);
-
-  // Edges on the vertices in positive (clockwise) order.
+  // Perspective-correct barycentrics: b_k = (b_k / w) / (1 / w).
   const SnappedLanes* v = tri.vertex;
-  const int i1 = clockwise ? 1 : 2, i2 = clockwise ? 2 : 1;
-  auto edge = [&](int k) LUXEL_INLINE_LAMBDA {
-    const int from = k == 0 ? 0 : k == 1 ? i1 : i2, to = k == 0 ? i1 : k == 1 ? i2 : 0;
-    return make_edge(v[from].X[l], v[from].Y[l], v[to].X[l], v[to].Y[l]);
-  };
-  bool narrow_edges = true;  // always for small triangles
-  if (!small) {
-    for (int k = 0; k < 3; ++k) {
-      const Edge e = edge(k);
-      const int64_t span = std::abs(int64_t(e.a)) * (simd::kStampWidth * kSubpixelsPerPixel) +
-                           std::abs(int64_t(e.b)) * (simd::kStampHeight * kSubpixelsPerPixel);
-      if (span > kNarrowEdgeLimit) narrow_edges = false;
+  Barycentrics& bary = *::new (tail) Barycentrics;
+  bary.inv_w = basis.plane(v[0].inv_w[l], v[1].inv_w[l], v[2].inv_w[l]);
+  bary.b1_w = basis.plane(0.0, v[1].inv_w[l], 0.0);
+  bary.b2_w = basis.plane(0.0, 0.0, v[2].inv_w[l]);
+  float* d = reinterpret_cast<float*>(tail + sizeof(Barycentrics));
+  for (int i = 0; i < dc.varyings; ++i, d += 12) {
+    for (int c = 0; c < 4; ++c) {
+      d[c] = a[0][i][c];
+      d[4 + c] = a[1][i][c] - a[0][i][c];
+      d[8 + c] = a[2][i][c] - a[0][i][c];
     }
   }
-  const bool front_facing = dc.rasterizer.front_counter_clockwise ? !clockwise : clockwise;
-  const uint8_t flags = (front_facing ? TriangleSetup::kFrontFacing : 0) |
-                        (narrow_edges ? TriangleSetup::kNarrowEdges : 0) | (small ? TriangleSetup::kSmall : 0) |
-                        (affine ? TriangleSetup::kAffine : 0) | (flat ? TriangleSetup::kFlat : 0);
+}
 
-  // The record is written field by field straight into its tile's stream, from registers: a
-  // record line was just allocated and is not in the cache, so nothing may be read from it, and a
-  // wider load of values just stored narrower (a struct built on the stack, copied) cannot be
-  // forwarded from the store buffer and waits for every older store to reach the cache.
-  auto write = [&](std::byte* record) LUXEL_INLINE_LAMBDA {
-    TriangleSetup& t = *::new (record) TriangleSetup;
-    if (small) {
-      SmallEdges& e = *::new (record + sizeof(TriangleSetup)) SmallEdges;
-      for (int k = 0; k < 3; ++k) {
-        e.corner[k] = setup.small_corner[k][l];
-        e.ab[k] = setup.small_ab[k][l];
-      }
-      e.corner[3] = e.ab[3] = 0;
-    } else {
-      Edge* e = ::new (record + sizeof(TriangleSetup)) Edge[3];
-      e[0] = edge(0);
-      e[1] = edge(1);
-      e[2] = edge(2);
-    }
-    t.x0 = static_cast<int16_t>(setup.x0[l]);
-    t.y0 = static_cast<int16_t>(setup.y0[l]);
-    t.x1 = static_cast<int16_t>(setup.x1[l]);
-    t.y1 = static_cast<int16_t>(setup.y1[l]);
-    t.ref_x = v[0].x[l];
-    t.ref_y = v[0].y[l];
-    t.z = {setup.z_q0[l], setup.z_dqdx[l], setup.z_dqdy[l]};
-    t.record_blocks = static_cast<uint8_t>(size / 16);
-    t.flags = flags;
-    std::byte* tail = record + TriangleSetup::varyings_offset(small);
-    if (flat) {
-      for (int i = 0; i < dc.varyings; ++i) std::memcpy(tail + 16 * i, &a[0][i], 16);
-      return;
-    }
-    // Planes in the vertices' own order.
-    const PlaneBasis basis = setup.basis(l);
-    if (affine) {
-      // Equal w: varyings are linear on screen, a plane per component (a constant one exactly).
-      Plane* planes = reinterpret_cast<Plane*>(tail);
-      for (int i = 0; i < dc.varyings; ++i)
-        for (int c = 0; c < 4; ++c) planes[4 * i + c] = basis.plane(a[0][i][c], a[1][i][c], a[2][i][c]);
-      return;
-    }
-    // Perspective-correct barycentrics: b_k = (b_k / w) / (1 / w).
-    Barycentrics& bary = *::new (tail) Barycentrics;
-    bary.inv_w = basis.plane(v[0].inv_w[l], v[1].inv_w[l], v[2].inv_w[l]);
-    bary.b1_w = basis.plane(0.0, v[1].inv_w[l], 0.0);
-    bary.b2_w = basis.plane(0.0, 0.0, v[2].inv_w[l]);
-    float* d = reinterpret_cast<float*>(tail + sizeof(Barycentrics));
-    for (int i = 0; i < dc.varyings; ++i, d += 12) {
-      for (int c = 0; c < 4; ++c) {
-        d[c] = a[0][i][c];
-        d[4 + c] = a[1][i][c] - a[0][i][c];
-        d[8 + c] = a[2][i][c] - a[0][i][c];
-      }
-    }
-  };
-  auto emit = [&](int tile) LUXEL_INLINE_LAMBDA {
-    RecordStream& records = bins.tile_records[tile];
-    if (records.empty()) bins.touched_tiles.push_back(static_cast<uint32_t>(tile));
-    write(records.append(size));
-  };
+void write_record(const DrawConstants& dc, const TriangleLanes& tri, const SetupLanes& setup, int l,
+                  std::byte* record) {
+  std::memcpy(record, setup.header[l], sizeof(TriangleSetup));
+  constexpr int kSmallFlat = TriangleSetup::kSmall | TriangleSetup::kFlat;
+  if ((setup.header[l][7] >> 8 & kSmallFlat) != kSmallFlat) {
+    write_record_rest(dc, tri, setup, l, record);
+    return;
+  }
+  std::memcpy(record + sizeof(TriangleSetup), setup.small_edges[l], sizeof(SmallEdges));
+  std::byte* tail = record + TriangleSetup::varyings_offset(true);
+  for (int i = 0; i < dc.varyings; ++i) std::memcpy(tail + 16 * i, tri.data[0][l] + 4 * (1 + i), 16);
+}
 
-  static_assert(std::has_single_bit(unsigned(kTileSize)));
-  constexpr int kTileShift = std::countr_zero(unsigned(kTileSize));
+/// Appends triangle l's record to `tile`'s stream.
+LUXEL_INLINE void emit_record(const DrawConstants& dc, const TriangleLanes& tri, const SetupLanes& setup, int l,
+                              int tile, ChunkBins& bins) {
+  RecordStream& records = bins.tile_records[tile];
+  if (records.empty()) bins.touched_tiles.push_back(static_cast<uint32_t>(tile));
+  write_record(dc, tri, setup, l, records.append(16 * size_t(setup.header[l][7] & 0xff)));
+}
+
+/// Writes triangle l's record (set up and not rejected) into every tile it touches (less those
+/// wholly outside an edge).
+[[gnu::noinline]] void bin_to_tiles(const DrawConstants& dc, const TriangleLanes& tri, const SetupLanes& setup, int l,
+                                    ChunkBins& bins) {
   const int tx0 = setup.x0[l] >> kTileShift, ty0 = setup.y0[l] >> kTileShift;
   const int tx1 = (setup.x1[l] - 1) >> kTileShift, ty1 = (setup.y1[l] - 1) >> kTileShift;
-  ++stats.rasterized;
-  if (tx0 == tx1 && ty0 == ty1) {
-    emit(ty0 * dc.tiles_x + tx0);
-    return;
-  }
-  const Edge edges[3] = {edge(0), edge(1), edge(2)};
+  const Edge edges[3] = {lane_edge(tri, setup, l, 0), lane_edge(tri, setup, l, 1), lane_edge(tri, setup, l, 2)};
   for (int ty = ty0; ty <= ty1; ++ty) {
     for (int tx = tx0; tx <= tx1; ++tx) {
       const int64_t X0 = int64_t(tx) * kTileSize * kSubpixelsPerPixel, X1 = X0 + kTileSize * kSubpixelsPerPixel - 1;
@@ -414,7 +457,7 @@ void bin_triangle(const DrawConstants& dc, const TriangleLanes& tri, const Setup
         const int64_t emax = e.c + std::max(e.a * X0, e.a * X1) + std::max(e.b * Y0, e.b * Y1);
         outside |= emax < 0;
       }
-      if (!outside) emit(ty * dc.tiles_x + tx);
+      if (!outside) emit_record(dc, tri, setup, l, ty * dc.tiles_x + tx, bins);
     }
   }
 }
@@ -425,11 +468,19 @@ template <class Other>
 void setup_and_bin(const DrawConstants& dc, const TriangleLanes& tri, int count, simd::LaneBits ready, ChunkBins& bins,
                    DrawStats& stats, Other&& other) {
   SetupLanes setup;
-  if (ready) setup_lanes(dc, tri, setup);
+  if (ready) setup_lanes(dc, tri, ready, setup);
+  const simd::LaneBits rejected = ready & setup.rejected(), binned = ready & ~rejected;
+  stats.culled += std::popcount(rejected & setup.culled);
+  stats.degenerate += std::popcount(rejected & ~setup.culled);
+  stats.rasterized += std::popcount(binned);
   for (int l = 0; l < count; ++l) {
-    if (ready >> l & 1) {
-      bin_triangle(dc, tri, setup, l, bins, stats);
-    } else {
+    if (binned >> l & 1) {
+      if (setup.one_tile >> l & 1) {
+        emit_record(dc, tri, setup, l, setup.tile[l], bins);
+      } else {
+        bin_to_tiles(dc, tri, setup, l, bins);
+      }
+    } else if (!(ready >> l & 1)) {
       other(l);
     }
   }

@@ -137,5 +137,15 @@ TEST(Simd, TransposeRowsPutsRowLInLaneL) {
     for (int c = 0; c < 4; ++c) EXPECT_EQ(got[c][l], rows[l][c]) << "lane " << l << ", component " << c;
 }
 
+TEST(Simd, TransposeToRowsPutsLaneLInRowL) {
+  // The inverse direction: field f of record l is lane l of fields[f].
+  Int fields[8];
+  for (int f = 0; f < 8; ++f) fields[f] = simd::lanes<Int>([&](int l) { return 100 * l + f; });
+  alignas(32) int32_t rows[kLanes][8];
+  simd::transpose_to_rows(fields, rows);
+  for (int l = 0; l < kLanes; ++l)
+    for (int f = 0; f < 8; ++f) EXPECT_EQ(rows[l][f], 100 * l + f) << "lane " << l << ", field " << f;
+}
+
 }  // namespace
 }  // namespace luxel::rasterizer

@@ -357,13 +357,14 @@ class ScopedFlushDenormals {
   unsigned saved_;
 };
 
-/// Transposes kLanes float4 rows into four batches: lane l of x, y, z, w is rows[l][0..3] (vertex
-/// positions into the front end's lanes). Rows need no alignment.
-inline void transpose_rows(const float* const* rows, Float& x, Float& y, Float& z, Float& w) {
+/// Transposes kLanes float4 rows into four batches: lane l of x, y, z, w is rows[l][offset + 0..3]
+/// (vertex positions or varyings into the front end's lanes). Rows need no alignment.
+inline void transpose_rows(const float* const* rows, Float& x, Float& y, Float& z, Float& w, int offset = 0) {
 #if defined(__AVX__) && !defined(__AVX512F__)
   static_assert(kLanes == 8);
   auto pair = [&](int l) {  // rows l and l + 4 in the two 128-bit halves
-    return _mm256_insertf128_ps(_mm256_castps128_ps256(_mm_loadu_ps(rows[l])), _mm_loadu_ps(rows[l + 4]), 1);
+    return _mm256_insertf128_ps(_mm256_castps128_ps256(_mm_loadu_ps(rows[l] + offset)),
+                                _mm_loadu_ps(rows[l + 4] + offset), 1);
   };
   const __m256 r04 = pair(0), r15 = pair(1), r26 = pair(2), r37 = pair(3);
   const __m256 xy01 = _mm256_unpacklo_ps(r04, r15), zw01 = _mm256_unpackhi_ps(r04, r15);
@@ -373,10 +374,42 @@ inline void transpose_rows(const float* const* rows, Float& x, Float& y, Float& 
   z = _mm256_shuffle_ps(zw01, zw23, 0x44);
   w = _mm256_shuffle_ps(zw01, zw23, 0xee);
 #else
-  x = lanes([&](int l) { return rows[l][0]; });
-  y = lanes([&](int l) { return rows[l][1]; });
-  z = lanes([&](int l) { return rows[l][2]; });
-  w = lanes([&](int l) { return rows[l][3]; });
+  x = lanes([&](int l) { return rows[l][offset]; });
+  y = lanes([&](int l) { return rows[l][offset + 1]; });
+  z = lanes([&](int l) { return rows[l][offset + 2]; });
+  w = lanes([&](int l) { return rows[l][offset + 3]; });
+#endif
+}
+
+/// The way back from lanes to records: rows[l][f] = lane l of fields[f], for eight 32-bit
+/// fields (triangle setup computes kLanes records side by side, a field per batch, and writes
+/// them out record by record). Rows are 32-byte aligned.
+inline void transpose_to_rows(const Int (&fields)[8], int32_t (*rows)[8]) {
+#if defined(__AVX2__) && !defined(__AVX512F__)
+  static_assert(kLanes == 8);
+  // An 8x8 transpose: pairs of fields, then fours, then the two 128-bit halves (lanes l, l + 4).
+  __m256i pairs[8], fours[8];
+  for (int f = 0; f < 8; f += 2) {
+    pairs[f] = _mm256_unpacklo_epi32(fields[f], fields[f + 1]);      // lanes 0, 1 | 4, 5
+    pairs[f + 1] = _mm256_unpackhi_epi32(fields[f], fields[f + 1]);  // lanes 2, 3 | 6, 7
+  }
+  for (int h = 0; h < 8; h += 4) {  // fields 0-3, then 4-7
+    fours[h] = _mm256_unpacklo_epi64(pairs[h], pairs[h + 2]);          // lane 0 | 4
+    fours[h + 1] = _mm256_unpackhi_epi64(pairs[h], pairs[h + 2]);      // lane 1 | 5
+    fours[h + 2] = _mm256_unpacklo_epi64(pairs[h + 1], pairs[h + 3]);  // lane 2 | 6
+    fours[h + 3] = _mm256_unpackhi_epi64(pairs[h + 1], pairs[h + 3]);  // lane 3 | 7
+  }
+  for (int l = 0; l < 4; ++l) {
+    _mm256_store_si256(reinterpret_cast<__m256i*>(rows[l]), _mm256_permute2x128_si256(fours[l], fours[l + 4], 0x20));
+    _mm256_store_si256(reinterpret_cast<__m256i*>(rows[l + 4]),
+                       _mm256_permute2x128_si256(fours[l], fours[l + 4], 0x31));
+  }
+#else
+  for (int f = 0; f < 8; ++f) {
+    alignas(64) int32_t lanes_of_field[kLanes];
+    fields[f].store_aligned(lanes_of_field);
+    for (int l = 0; l < kLanes; ++l) rows[l][f] = lanes_of_field[l];
+  }
 #endif
 }
 
