@@ -34,7 +34,7 @@ class FillScene final : public BuiltinScene {
     }
   };
   struct Pixel {
-    static constexpr bool kCanDiscard = false, kWritesDepth = false;
+    static constexpr bool kCanDiscard = false, kWritesDepth = false, kTrivial = true;
     glm::vec3 color;
     void operator()(const PixelInput<1>& in, PixelOutput& out) const {
       const Float ramp = Float(0.9f) + Float(0.1f) * in.varyings[0].x;
@@ -85,7 +85,7 @@ class TrisScene final : public BuiltinScene {
     }
   };
   struct Pixel {
-    static constexpr bool kCanDiscard = false, kWritesDepth = false;
+    static constexpr bool kCanDiscard = false, kWritesDepth = false, kTrivial = true;
     void operator()(const PixelInput<1>& in, PixelOutput& out) const { out.color = in.varyings[0]; }
   };
 

@@ -392,5 +392,65 @@ TEST(OutputMerger, DepthInterpolatedAtSamplePositions) {
     }
 }
 
+// A pixel functor that declares itself trivial (draw.hpp) is also run on stamps that early depth
+// left without a live sample: it must write exactly what the branching path writes, and count
+// the same samples. Hundreds of small triangles at random depths, 4 samples, depth test Less.
+struct TrivialVaryingPS : VaryingPS {
+  static constexpr bool kTrivial = true;
+};
+
+TEST(EarlyDepth, TrivialPixelFunctorWritesWhatTheBranchingPathWrites) {
+  const int W = 96, H = 64, S = 4, kTriangles = 3000;
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<float> unit(0.0f, 1.0f);
+  std::vector<glm::vec4> positions;
+  std::vector<std::array<glm::vec4, 1>> colors;
+  for (int t = 0; t < kTriangles; ++t) {
+    const float cx = unit(rng) * 2 - 1, cy = unit(rng) * 2 - 1, z = unit(rng), r = 0.02f + 0.05f * unit(rng);
+    const glm::vec4 color(unit(rng), unit(rng), unit(rng), 1.0f);
+    for (int k = 0; k < 3; ++k) {
+      const float angle = unit(rng) * 6.2831853f;
+      positions.push_back({cx + r * std::cos(angle), cy + r * std::sin(angle), z, 1.0f});
+      colors.push_back({color});
+    }
+  }
+  PipelineState st;
+  st.rasterizer.cull = CullMode::None;
+  st.depth_stencil.depth_enable = true;
+  st.depth_stencil.depth_func = CompareFunc::Less;
+  auto render = [&](auto pixel_shader, std::vector<uint32_t>& color, std::vector<float>& depth, uint64_t& passed,
+                    uint64_t& shaded) {
+    Context ctx(2);
+    ColorTarget target(W, H, S);
+    DepthStencilTarget ds(W, H, S);
+    clear_color(ctx, target, {0, 0, 0, 1});
+    clear_depth(ctx, ds, 1.0f);
+    ctx.reset_stats();
+    OcclusionQuery q;
+    ctx.begin_query(q);
+    draw(ctx, Framebuffer{&target, &ds}, st, Geometry::non_indexed(uint32_t(positions.size())),
+         ArrayVS<1>{positions.data(), colors.data()}, pixel_shader);
+    ctx.end_query();
+    color = read_color(ctx, target);
+    for (int y = 0; y < H; ++y)
+      for (int x = 0; x < W; ++x)
+        for (int s = 0; s < S; ++s) depth.push_back(ds.depth(x, y, s));
+    passed = ctx.query_result(q);
+    shaded = ctx.stats().stamps_shaded;
+  };
+  std::vector<uint32_t> color_branching, color_trivial;
+  std::vector<float> depth_branching, depth_trivial;
+  uint64_t passed_branching = 0, passed_trivial = 0, shaded_branching = 0, shaded_trivial = 0;
+  render(VaryingPS{}, color_branching, depth_branching, passed_branching, shaded_branching);
+  render(TrivialVaryingPS{}, color_trivial, depth_trivial, passed_trivial, shaded_trivial);
+  EXPECT_EQ(color_trivial, color_branching);
+  EXPECT_EQ(depth_trivial, depth_branching);
+  EXPECT_EQ(passed_trivial, passed_branching);
+  // The scene is deep enough that early depth kills whole stamps, which only the trivial
+  // functor still runs on.
+  EXPECT_GT(shaded_trivial, shaded_branching);
+  EXPECT_GT(passed_branching, 0u);
+}
+
 }  // namespace
 }  // namespace luxel::rasterizer::test

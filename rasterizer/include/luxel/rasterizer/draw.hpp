@@ -15,7 +15,12 @@
 //     void operator()(const PixelInput<N>& in, PixelOutput& out) const;
 //   It shades one stamp: simd::kLanes pixels as 2x2 quads (see simd.hpp), interpolants already
 //   perspective-correct at pixel centers. Lanes outside `in.live` are helpers: they complete a
-//   quad for derivatives and are never written.
+//   quad for derivatives and are never written. A functor of a few instructions (an interpolant
+//   or a constant out, as depth-only, UI and the W1/W2 workloads' shaders) may say so:
+//     static constexpr bool kTrivial = true;
+//   then a stamp whose samples all failed the early depth test is shaded with no live lane
+//   (writing nothing) instead of branched around: on depth-mixed geometry that branch
+//   mispredicts often, and a misprediction costs more than such a shader (W2: 2-3 ms of 57).
 //
 // The pipeline: vertex functor -> clip (near, far, guard band) -> snap to 1/256 pixel -> cull ->
 // setup -> bin into tiles -> per tile, in submission order: coverage per sample, early depth /
@@ -75,6 +80,10 @@ concept PixelFunctor = requires(const PS& ps, const PixelInput<N>& in, PixelOutp
   { PS::kWritesDepth } -> std::convertible_to<bool>;
   ps(in, out);
 };
+
+/// A pixel functor that declares itself trivial (see above).
+template <class PS>
+inline constexpr bool kTrivialPixelFunctor = requires { requires PS::kTrivial; };
 
 /// Which vertices make the triangles: every three indices (or, without indices, every three
 /// consecutive vertices) are one triangle. Triangles with an index >= vertex_count are dropped.

@@ -515,7 +515,9 @@ void TileRasterizer<PS, N, kEarlyZ, S>::shade_stamp(const TriangleSetup& t, int 
             live |= coverage[s];
           }
       }
-      if (!simd::sign_bits(live)) return;
+      if constexpr (!kTrivialPixelFunctor<PS>) {  // see draw.hpp
+        if (!simd::sign_bits(live)) return;
+      }
     } else if (depth_) {
       for (int s = 0; s < S; ++s) {
         coverage[s] = depth_stencil_test(t, corner_z, stamp, s, coverage[s], nullptr);
