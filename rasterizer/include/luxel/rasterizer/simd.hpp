@@ -194,13 +194,13 @@ inline Int select(const Int& mask, const Int& a, const Int& b) {
 }
 
 /// The mask whose lane l is bit l of `bits`.
+/// (The lane bits are built in place, not kept in a function-local static: the compiler folds
+/// them into a constant, where a static costs its guard's check on every call.)
 inline IntMask int_mask(LaneBits bits) {
-  static const Int lane_bit = lanes<Int>([](int l) { return 1 << l; });
-  return (Int(static_cast<int32_t>(bits)) & lane_bit) != Int(0);
+  return (Int(static_cast<int32_t>(bits)) & lanes<Int>([](int l) { return 1 << l; })) != Int(0);
 }
 inline FloatMask float_mask(LaneBits bits) {
-  static const Int lane_bit = lanes<Int>([](int l) { return 1 << l; });
-  return xsimd::to_float(Int(static_cast<int32_t>(bits)) & lane_bit) != Float(0.0f);
+  return xsimd::to_float(Int(static_cast<int32_t>(bits)) & lanes<Int>([](int l) { return 1 << l; })) != Float(0.0f);
 }
 
 /// kLanes bytes at p, widened to 32-bit lanes.
