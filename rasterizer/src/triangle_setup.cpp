@@ -188,7 +188,7 @@ struct SetupLanes {
   alignas(64) int32_t tile[simd::kLanes];  ///< the tile of pixel (x0, y0)
   alignas(64) double e1x[simd::kLanes], e1y[simd::kLanes], e2x[simd::kLanes], e2y[simd::kLanes];
   alignas(64) double inv_det[simd::kLanes];
-  /// Lane l's record as bin_triangle writes it: the TriangleSetup header, and SmallEdges (small
+  /// Lane l's record as write_record writes it: the TriangleSetup header, and SmallEdges (small
   /// lanes). Built in lanes and transposed: writing a record is two 32-byte copies.
   alignas(32) int32_t header[simd::kLanes][8];
   alignas(32) int32_t small_edges[simd::kLanes][8];
