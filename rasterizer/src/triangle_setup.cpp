@@ -369,15 +369,8 @@ void setup_lanes(const DrawConstants& dc, const TriangleLanes& tri, simd::LaneBi
   simd::transpose_to_rows(header, out.header);
 }
 
-/// Writes triangle l's record at `record` from setup's rows: a record line was just allocated
-/// and is not in the cache, so nothing may be read from it, and a wider load of values just
-/// stored narrower (a struct built on the stack, copied) cannot be forwarded from the store
-/// buffer and waits for every older store to reach the cache.
-LUXEL_INLINE void write_record(const DrawConstants& dc, const TriangleLanes& tri, const SetupLanes& setup, int l,
-                               std::byte* record);
-
-/// The parts of a record other than a small flat-shaded triangle's (out of line: rare in the
-/// workloads where setup is the bottleneck): wide edges, interpolated varyings.
+/// The parts of a record after its header, for any triangle but a small flat-shaded one (out of
+/// line: rare in the workloads where setup is the bottleneck): wide edges, interpolated varyings.
 [[gnu::noinline]] void write_record_rest(const DrawConstants& dc, const TriangleLanes& tri, const SetupLanes& setup,
                                          int l, std::byte* record) {
   const int flags = setup.header[l][7] >> 8;
@@ -420,8 +413,12 @@ LUXEL_INLINE void write_record(const DrawConstants& dc, const TriangleLanes& tri
   }
 }
 
-void write_record(const DrawConstants& dc, const TriangleLanes& tri, const SetupLanes& setup, int l,
-                  std::byte* record) {
+/// Writes triangle l's record at `record` from setup's rows: a record line was just allocated
+/// and is not in the cache, so nothing may be read from it, and a wider load of values just
+/// stored narrower (a struct built on the stack, copied) cannot be forwarded from the store
+/// buffer and waits for every older store to reach the cache.
+LUXEL_INLINE void write_record(const DrawConstants& dc, const TriangleLanes& tri, const SetupLanes& setup, int l,
+                               std::byte* record) {
   std::memcpy(record, setup.header[l], sizeof(TriangleSetup));
   constexpr int kSmallFlat = TriangleSetup::kSmall | TriangleSetup::kFlat;
   if ((setup.header[l][7] >> 8 & kSmallFlat) != kSmallFlat) {

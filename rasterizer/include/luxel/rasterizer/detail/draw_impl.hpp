@@ -49,8 +49,8 @@ inline Float eval_plane(const Plane& p, const Float& dx, const Float& dy) {
 }
 
 /// Where a draw tests depth and stencil, fixed per draw. The common early cases have their own
-/// paths, where the compare function is a constant: a switch and flag checks per stamp cost
-/// 2-3 ms of W2's 57.
+/// paths, where the compare function is a constant: a switch and flag checks per stamp, and the
+/// generic path's code in the loop, cost W2 2-6 ms of 57.
 enum class DepthPath {
   Late,            ///< after the pixel functor (it can discard or write depth, or alpha test is on)
   Early,           ///< before it: any depth/stencil state, or none
@@ -522,9 +522,7 @@ void TileRasterizer<PS, N, kPath, S>::shade_stamp(const TriangleSetup& t, int px
     }
   } else if constexpr (kPath == DepthPath::Early) {
     if (simple_depth_ && depth_test_) {
-      switch (depth_func_) {
-        case CompareFunc::Less: live = early_depth<CompareFunc::Less>(corner_z, stamp, coverage); break;
-        case CompareFunc::LessEqual: live = early_depth<CompareFunc::LessEqual>(corner_z, stamp, coverage); break;
+      switch (depth_func_) {  // Less and LessEqual have their own paths
         case CompareFunc::Greater: live = early_depth<CompareFunc::Greater>(corner_z, stamp, coverage); break;
         case CompareFunc::GreaterEqual: live = early_depth<CompareFunc::GreaterEqual>(corner_z, stamp, coverage); break;
         default:
@@ -720,13 +718,19 @@ class DrawCommand final : public Command {
   template <int S>
   void execute_with(int tile, TileCounters& counters) {
     const bool count = query_slot_ >= 0;
-    switch (depth_path_) {
-      case DepthPath::Late: return run(TileRasterizer<PS, N, DepthPath::Late, S>(plan_, ps_, tile, count), tile, counters);
-      case DepthPath::Early: return run(TileRasterizer<PS, N, DepthPath::Early, S>(plan_, ps_, tile, count), tile, counters);
-      case DepthPath::EarlyLess:
-        return run(TileRasterizer<PS, N, DepthPath::EarlyLess, S>(plan_, ps_, tile, count), tile, counters);
-      case DepthPath::EarlyLessEqual:
-        return run(TileRasterizer<PS, N, DepthPath::EarlyLessEqual, S>(plan_, ps_, tile, count), tile, counters);
+    if constexpr (PS::kCanDiscard || PS::kWritesDepth) {  // only the late path: instantiate no other
+      run(TileRasterizer<PS, N, DepthPath::Late, S>(plan_, ps_, tile, count), tile, counters);
+    } else {
+      switch (depth_path_) {
+        case DepthPath::Late:
+          return run(TileRasterizer<PS, N, DepthPath::Late, S>(plan_, ps_, tile, count), tile, counters);
+        case DepthPath::Early:
+          return run(TileRasterizer<PS, N, DepthPath::Early, S>(plan_, ps_, tile, count), tile, counters);
+        case DepthPath::EarlyLess:
+          return run(TileRasterizer<PS, N, DepthPath::EarlyLess, S>(plan_, ps_, tile, count), tile, counters);
+        case DepthPath::EarlyLessEqual:
+          return run(TileRasterizer<PS, N, DepthPath::EarlyLessEqual, S>(plan_, ps_, tile, count), tile, counters);
+      }
     }
   }
 
