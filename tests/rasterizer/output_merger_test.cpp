@@ -418,8 +418,12 @@ TEST(EarlyDepth, TrivialPixelFunctorWritesWhatTheBranchingPathWrites) {
   st.rasterizer.cull = CullMode::None;
   st.depth_stencil.depth_enable = true;
   st.depth_stencil.depth_func = CompareFunc::Less;
-  auto render = [&](auto pixel_shader, std::vector<uint32_t>& color, std::vector<float>& depth, uint64_t& passed,
-                    uint64_t& shaded) {
+  struct Result {
+    std::vector<uint32_t> color;
+    std::vector<float> depth;
+    uint64_t passed = 0, shaded = 0;  // occlusion count, pixel functor invocations
+  };
+  auto render = [&](auto pixel_shader) {
     Context ctx(2);
     ColorTarget target(W, H, S);
     DepthStencilTarget ds(W, H, S);
@@ -431,25 +435,23 @@ TEST(EarlyDepth, TrivialPixelFunctorWritesWhatTheBranchingPathWrites) {
     draw(ctx, Framebuffer{&target, &ds}, st, Geometry::non_indexed(uint32_t(positions.size())),
          ArrayVS<1>{positions.data(), colors.data()}, pixel_shader);
     ctx.end_query();
-    color = read_color(ctx, target);
+    Result r;
+    r.color = read_color(ctx, target);
     for (int y = 0; y < H; ++y)
       for (int x = 0; x < W; ++x)
-        for (int s = 0; s < S; ++s) depth.push_back(ds.depth(x, y, s));
-    passed = ctx.query_result(q);
-    shaded = ctx.stats().stamps_shaded;
+        for (int s = 0; s < S; ++s) r.depth.push_back(ds.depth(x, y, s));
+    r.passed = ctx.query_result(q);
+    r.shaded = ctx.stats().stamps_shaded;
+    return r;
   };
-  std::vector<uint32_t> color_branching, color_trivial;
-  std::vector<float> depth_branching, depth_trivial;
-  uint64_t passed_branching = 0, passed_trivial = 0, shaded_branching = 0, shaded_trivial = 0;
-  render(VaryingPS{}, color_branching, depth_branching, passed_branching, shaded_branching);
-  render(TrivialVaryingPS{}, color_trivial, depth_trivial, passed_trivial, shaded_trivial);
-  EXPECT_EQ(color_trivial, color_branching);
-  EXPECT_EQ(depth_trivial, depth_branching);
-  EXPECT_EQ(passed_trivial, passed_branching);
+  const Result branching = render(VaryingPS{}), trivial = render(TrivialVaryingPS{});
+  EXPECT_EQ(trivial.color, branching.color);
+  EXPECT_EQ(trivial.depth, branching.depth);
+  EXPECT_EQ(trivial.passed, branching.passed);
   // The scene is deep enough that early depth kills whole stamps, which only the trivial
   // functor still runs on.
-  EXPECT_GT(shaded_trivial, shaded_branching);
-  EXPECT_GT(passed_branching, 0u);
+  EXPECT_GT(trivial.shaded, branching.shaded);
+  EXPECT_GT(branching.passed, 0u);
 }
 
 }  // namespace

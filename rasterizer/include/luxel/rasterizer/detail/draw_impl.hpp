@@ -512,11 +512,13 @@ void TileRasterizer<PS, N, kPath, S>::interpolate(const TriangleSetup& t, const 
 template <class PS, int N, DepthPath kPath, int S>
 void TileRasterizer<PS, N, kPath, S>::shade_stamp(const TriangleSetup& t, int px, int py, int stamp,
                                                    Int* coverage) {
-  const float corner_z = depth_test_ ? corner_depth(t, px, py) : 0.0f;
+  // The fixed paths test depth by construction: no flag to read.
+  constexpr bool kFixedDepthPath = kPath == DepthPath::EarlyLess || kPath == DepthPath::EarlyLessEqual;
+  const float corner_z = kFixedDepthPath || depth_test_ ? corner_depth(t, px, py) : 0.0f;
   Int live(0);
-  if constexpr (kPath == DepthPath::EarlyLess || kPath == DepthPath::EarlyLessEqual) {
+  if constexpr (kFixedDepthPath) {
     constexpr CompareFunc kFunc = kPath == DepthPath::EarlyLess ? CompareFunc::Less : CompareFunc::LessEqual;
-    live = early_depth<kFunc>(corner_depth(t, px, py), stamp, coverage);
+    live = early_depth<kFunc>(corner_z, stamp, coverage);
     if constexpr (!kTrivialPixelFunctor<PS>) {  // see draw.hpp
       if (!simd::sign_bits(live)) return;
     }
