@@ -2,13 +2,18 @@
 // llvmpipe peer (../shared/peers/llvmpipe) so both run side by side:
 //   workload=<name> width=W height=H msaa=S threads=T frames=N median_ms=X min_ms=Y
 // A frame is what the peer calls a frame: clear, draw, resolve to a 1-sample image.
+// stderr gets the CPU, the instruction set and the fast paths turned off (LUXEL_NO_FASTPATH).
+
+#include "machine.hpp"
 
 #include "luxel/frame/builtin.hpp"
+#include "luxel/rasterizer/fast_paths.hpp"
 
 #include <CLI/CLI.hpp>
 
 #include <algorithm>
 #include <chrono>
+#include <cstdlib>
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
@@ -34,7 +39,19 @@ int main(int argc, char** argv) {
   CLI11_PARSE(app, argc, argv);
   if (workloads.empty()) workloads = {"fill", "tris"};
 
-  luxel::rasterizer::Context ctx(threads);
+  luxel::rasterizer::ContextOptions options;
+  options.threads = threads;
+  if (const char* off = std::getenv("LUXEL_NO_FASTPATH")) {
+    try {
+      options.fast_paths = luxel::rasterizer::parse_fast_paths_off(off);
+    } catch (const std::invalid_argument& e) {
+      std::fprintf(stderr, "luxel_frame_bench: LUXEL_NO_FASTPATH: %s\n", e.what());
+      return 2;
+    }
+  }
+  std::fprintf(stderr, "%s fast_paths_off=%s\n", luxel::bench::machine_line().c_str(),
+               luxel::rasterizer::fast_paths_off_names(options.fast_paths).c_str());
+  luxel::rasterizer::Context ctx(options);
   for (const std::string& name : workloads) {
     std::unique_ptr<luxel::frame::BuiltinScene> scene;
     try {

@@ -2,6 +2,8 @@
 // coverage and early depth on large and thin triangles, and whole draws of small triangles.
 // Items are triangles (front end) or pixels (coverage); Google Benchmark reports rates.
 
+#include "machine.hpp"
+
 #include "luxel/rasterizer/draw.hpp"
 
 #include <benchmark/benchmark.h>
@@ -10,6 +12,12 @@
 #include <vector>
 
 namespace {
+
+// The CPU and instruction set in the context block every run prints first.
+const bool kMachineInContext = [] {
+  benchmark::AddCustomContext("machine", luxel::bench::machine_line());
+  return true;
+}();
 
 using namespace luxel::rasterizer;
 using simd::Float;

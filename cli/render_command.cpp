@@ -1,9 +1,13 @@
 // luxel render --scene builtin:NAME [--width --height --msaa --threads --out FILE]
+// LUXEL_NO_FASTPATH=name,... (or all) turns rasterizer fast paths off (fast_paths.hpp).
 
 #include "commands.hpp"
 
 #include "luxel/frame/builtin.hpp"
+#include "luxel/rasterizer/fast_paths.hpp"
 #include "luxel/rasterizer/image.hpp"
+
+#include <cstdlib>
 
 #include <iostream>
 #include <memory>
@@ -40,6 +44,16 @@ Runner add_render_command(CLI::App& app) {
       std::cerr << "luxel render: --scene " << options->scene << ": only builtin:NAME scenes are supported so far\n";
       return 2;
     }
+    rasterizer::ContextOptions context_options;
+    context_options.threads = options->threads;
+    if (const char* off = std::getenv("LUXEL_NO_FASTPATH")) {
+      try {
+        context_options.fast_paths = rasterizer::parse_fast_paths_off(off);
+      } catch (const std::invalid_argument& e) {
+        std::cerr << "luxel render: LUXEL_NO_FASTPATH: " << e.what() << "\n";
+        return 2;
+      }
+    }
     std::unique_ptr<frame::BuiltinScene> scene;
     try {
       scene = frame::make_builtin_scene(options->scene.substr(prefix.size()), options->settings);
@@ -47,7 +61,7 @@ Runner add_render_command(CLI::App& app) {
       std::cerr << "luxel render: " << e.what() << "\n";
       return 2;
     }
-    rasterizer::Context ctx(options->threads);
+    rasterizer::Context ctx(context_options);
     scene->render(ctx);
     try {
       rasterizer::write_image(scene->image(), options->out);
@@ -62,7 +76,8 @@ Runner add_render_command(CLI::App& app) {
                 << " small_walks=" << s.small_walks << " blocks_full=" << s.blocks_full
                 << " non_finite=" << s.non_finite << " bad_index=" << s.bad_index << " stamps_full=" << s.stamps_full
                 << " stamps_partial=" << s.stamps_partial << " stamps_wide_edges=" << s.stamps_wide_edges
-                << " stamps_shaded=" << s.stamps_shaded << "\n";
+                << " stamps_shaded=" << s.stamps_shaded
+                << " fast_paths_off=" << rasterizer::fast_paths_off_names(context_options.fast_paths) << "\n";
     }
     return 0;
   };

@@ -31,7 +31,7 @@ int CommandQueue::query_slot(OcclusionQuery* query) {
 void CommandQueue::reset() {
   commands_.clear();
   chunks_used_ = 0;
-  pending_triangles_ = 0;
+  pending_record_bytes_ = 0;
   queries_.clear();
   *front_end_stats_ = {};
 }

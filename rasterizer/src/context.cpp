@@ -20,9 +20,11 @@ ScopedFlushDenormals::ScopedFlushDenormals() : saved_(_mm_getcsr()) {
 ScopedFlushDenormals::~ScopedFlushDenormals() { _mm_setcsr(saved_); }
 }  // namespace simd
 
-Context::Context(int threads)
-    : queue_(std::make_unique<detail::CommandQueue>()), stats_(std::make_unique<DrawStats>()) {
+Context::Context(const ContextOptions& options)
+    : options_(options), queue_(std::make_unique<detail::CommandQueue>()), stats_(std::make_unique<DrawStats>()) {
+  int threads = options.threads;
   if (threads <= 0) threads = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+  options_.threads = threads;
   workers_.reserve(threads - 1);
   for (int t = 1; t < threads; ++t) workers_.emplace_back([this, t] { worker_main(t); });
 }
@@ -56,6 +58,7 @@ void Context::reset_stats() { *stats_ = {}; }
 void Context::flush() {
   detail::CommandQueue& q = *queue_;
   if (q.empty()) return;
+  ++flush_count_;
   const int tiles = q.layout().tile_count();
   auto& counters = q.tile_counters();
   auto& tile_stats = q.tile_stats();
@@ -89,7 +92,7 @@ void Context::run_items(int thread) {
 namespace {
 /// How long an idle thread spins before it blocks. The front end runs one parallel_for per draw,
 /// and waking a blocked thread takes tens of microseconds: a sizable share of a small draw's
-/// front end (W1's eight draws of 4,608 triangles take ~0.2 ms each).
+/// front end (bench/README.md).
 constexpr auto kSpinTime = std::chrono::microseconds(50);
 
 /// Spins until done() or kSpinTime has passed; true if done.

@@ -46,7 +46,7 @@ const SrgbTables& srgb_tables() {
   return tables;
 }
 
-DrawPlan plan_draw(const Framebuffer& fb, const PipelineState& state, int varyings) {
+DrawPlan plan_draw(const Framebuffer& fb, const PipelineState& state, int varyings, FastPaths fast_paths) {
   DrawPlan plan;
   plan.state = &state;
   plan.color = fb.color;
@@ -102,6 +102,7 @@ DrawPlan plan_draw(const Framebuffer& fb, const PipelineState& state, int varyin
   dc.samples = plan.layout.samples;
   dc.varyings = varyings;
   dc.rasterizer = state.rasterizer;
+  dc.fast_paths = fast_paths;
   const SampleOffset* offsets = standard_sample_offsets(plan.layout.samples);
   for (int s = 0; s < plan.layout.samples; ++s) plan.sample_offsets[s] = offsets[s];
 

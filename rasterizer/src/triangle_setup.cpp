@@ -25,6 +25,12 @@ void RecordStream::grow(size_t needed) {
   capacity_ = capacity;
 }
 
+size_t ChunkBins::bytes() const {
+  size_t bytes = tile_records.size() * sizeof(RecordStream);
+  for (uint32_t t : touched_tiles) bytes += tile_records[t].size();
+  return bytes;
+}
+
 void ChunkBins::reset(int tile_count) {
   if (static_cast<int>(tile_records.size()) != tile_count) {
     tile_records.clear();
@@ -263,9 +269,12 @@ void setup_lanes(const DrawConstants& dc, const TriangleLanes& tri, simd::LaneBi
   (ty0 * Int(dc.tiles_x) + tx0).store_aligned(out.tile);
   out.one_tile = simd::to_bits((tx0 == ((x1 - Int(1)) >> kTileShift)) & (ty0 == ((y1 - Int(1)) >> kTileShift)));
   const Int small_span(kSmallTriangleSize * kSubpixelsPerPixel);
-  out.small = simd::to_bits((max_x - min_x < small_span) & (max_y - min_y < small_span));
+  const FastPaths fast = dc.fast_paths;
+  if (fast.on(FastPath::SmallTriangleWalk) && fast.on(FastPath::NarrowEdges))
+    out.small = simd::to_bits((max_x - min_x < small_span) & (max_y - min_y < small_span));
   const Float w0 = Float::load_aligned(v[0].inv_w);
-  out.affine = simd::to_bits((w0 == Float::load_aligned(v[1].inv_w)) & (w0 == Float::load_aligned(v[2].inv_w)));
+  if (fast.on(FastPath::AffineRecords))
+    out.affine = simd::to_bits((w0 == Float::load_aligned(v[1].inv_w)) & (w0 == Float::load_aligned(v[2].inv_w)));
 
   // The doubled signed area and the depth plane, in doubles, the low lanes then the high.
   Double dx1[2], dy1[2], dx2[2], dy2[2], z0[2], z1[2], z2[2];
@@ -331,8 +340,8 @@ void setup_lanes(const DrawConstants& dc, const TriangleLanes& tri, simd::LaneBi
 
   // The record's size and flags. Flat varyings: the same finite bits at the three vertices
   // (then they interpolate to their value at vertex 0, which the record stores alone).
-  simd::LaneBits flat = simd::kAllLanes;
-  for (int i = 0; i < dc.varyings; ++i) {
+  simd::LaneBits flat = fast.on(FastPath::FlatRecords) ? simd::kAllLanes : 0;
+  for (int i = 0; i < dc.varyings && flat; ++i) {
     Float c[3][4];
     for (int k = 0; k < 3; ++k) simd::transpose_rows(tri.data[k], c[k][0], c[k][1], c[k][2], c[k][3], 4 * (1 + i));
     for (int j = 0; j < 4; ++j) {
@@ -343,7 +352,8 @@ void setup_lanes(const DrawConstants& dc, const TriangleLanes& tri, simd::LaneBi
   }
   // Narrow edges: always for small triangles; for others (rare) a test in 64 bits.
   simd::LaneBits narrow = out.small;
-  for (simd::LaneBits wide = ready & ~out.rejected() & ~out.small; wide; wide &= wide - 1)
+  const simd::LaneBits others = fast.on(FastPath::NarrowEdges) ? ready & ~out.rejected() & ~out.small : 0;
+  for (simd::LaneBits wide = others; wide; wide &= wide - 1)
     if (narrow_edges(tri, out, std::countr_zero(wide))) narrow |= wide & -wide;
   const simd::LaneBits front_facing = dc.rasterizer.front_counter_clockwise ? ~out.clockwise : out.clockwise;
   auto flag = [](simd::LaneBits lanes, int bit) { return xsimd::select(simd::int_mask(lanes), Int(bit), Int(0)); };

@@ -42,9 +42,9 @@ TEST(OutputMerger, RandomScenesMatchTheScalarReference) {
   EXPECT_GT(counted, 0u);
 }
 
-// A draw of more triangles than the queue holds is recorded in parts with flushes in between
-// (kMaxPendingTriangles): order-dependent blending, stencil counting and the occlusion query
-// must come out as if it were one.
+// A draw whose records exceed the queue's budget is recorded in parts with flushes in between
+// (ContextOptions::max_pending_record_bytes, kTrianglesPerPart): order-dependent blending,
+// stencil counting and the occlusion query must come out as if it were one.
 TEST(OutputMerger, DrawLargerThanTheQueueMatchesTheReference) {
   Scene scene;
   scene.width = 160;
@@ -66,7 +66,7 @@ TEST(OutputMerger, DrawLargerThanTheQueueMatchesTheReference) {
   d.shade.seed = 7;
   std::mt19937 rng(2024);
   static constexpr float kZ[] = {0.125f, 0.25f, 0.5f, 0.75f};
-  const int n = static_cast<int>(detail::kMaxPendingTriangles) + 3001;
+  const int n = static_cast<int>(kTrianglesPerPart) * 2 + 3001;
   for (int i = 0; i < n; ++i) {
     // Triangles of a few pixels on the 1/16 pixel grid, anywhere on the target.
     const double x = int(rng() % (160 * 16)) / 16.0, y = int(rng() % (120 * 16)) / 16.0;
@@ -74,8 +74,12 @@ TEST(OutputMerger, DrawLargerThanTheQueueMatchesTheReference) {
     d.triangles.push_back({{{x, y}, {x + leg(), y + leg()}, {x + leg(), y + leg()}}, kZ[rng() % 4]});
   }
   scene.draws.push_back(std::move(d));
-  Context ctx(2);
+  ContextOptions options;
+  options.threads = 2;
+  options.max_pending_record_bytes = 1 << 20;  // less than a part's records
+  Context ctx(options);
   const SceneOutput out = render_scene(ctx, scene);
+  EXPECT_GE(ctx.flush_count(), 3u);  // in the draw, twice, and at the end
   const SceneReference ref = reference_scene(scene);
   std::vector<std::string> messages;
   EXPECT_EQ(compare_scene(scene, out, ref, messages, 8), 0) << join(messages);

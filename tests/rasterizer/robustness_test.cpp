@@ -4,7 +4,6 @@
 #include "coverage_support.hpp"
 #include "raster_support.hpp"
 
-#include "luxel/rasterizer/detail/command_queue.hpp"  // kMaxPendingTriangles
 #include "luxel/rasterizer/limits.hpp"
 
 #include <gtest/gtest.h>
@@ -250,10 +249,13 @@ struct SparseTinyVS {
   }
 };
 
-// More triangles than a frame may hold make a draw flush the pending frame first; the result is
-// as if nothing happened.
-TEST(Robustness, DrawsBeyondThePendingTriangleLimit) {
-  Context ctx(2);
+// Records beyond the pending frame's budget make the next draw flush the frame first; the
+// result is the same as one frame's (additive blending counts every visible triangle).
+TEST(Robustness, DrawsBeyondThePendingRecordBudget) {
+  ContextOptions options;
+  options.threads = 2;
+  options.max_pending_record_bytes = 1;  // whatever a draw binned is over it
+  Context ctx(options);
   const int W = 32, H = 32;
   ColorTarget target(W, H, 1);
   PipelineState st;
@@ -263,12 +265,14 @@ TEST(Robustness, DrawsBeyondThePendingTriangleLimit) {
   clear_color(ctx, target, glm::vec4(0.0f));
   const Framebuffer fb{&target, nullptr};
   draw(ctx, fb, st, Geometry::non_indexed(3), PositionVS{kFull}, ConstantPS{{1 / 255.0f, 0, 0, 0}});
-  // Each draw is over half the limit: the second and third flush the frame before binning.
-  const uint32_t n = uint32_t(detail::kMaxPendingTriangles) / 2 + 7;
+  // Three draws of two parts each, mostly off screen: every part but the first draw's flushes
+  // what came before it, in the middle of a draw too.
+  const uint32_t n = kTrianglesPerPart + 7;
   draw(ctx, fb, st, Geometry::non_indexed(3 * n), SparseTinyVS{}, ConstantPS{{0, 1 / 255.0f, 0, 0}});
   draw(ctx, fb, st, Geometry::non_indexed(3 * n), SparseTinyVS{}, ConstantPS{{0, 0, 1 / 255.0f, 0}});
   draw(ctx, fb, st, Geometry::non_indexed(3 * n), SparseTinyVS{}, ConstantPS{{0, 0, 0, 1 / 255.0f}});
   ctx.flush();
+  EXPECT_EQ(ctx.flush_count(), 7u);  // 6 before parts, 1 at the end
   const int visible = int((n + SparseTinyVS::kEvery - 1) / SparseTinyVS::kEvery);
   EXPECT_EQ(target.sample(5, 7, 0), rgba8(1, visible, visible, visible));
   EXPECT_EQ(target.sample(6, 7, 0), rgba8(1, 0, 0, 0));

@@ -61,29 +61,6 @@ TEST(Simd, Int4LaneBroadcastAndSignBits) {
   }
 }
 
-TEST(Simd, MaskedStoresWriteOnlyTheMaskedLanes) {
-  std::mt19937 rng(3);
-  for (int round = 0; round < kRounds; ++round) {
-    int32_t mask[kLanes], value[kLanes], memory[kLanes + 2], expected[kLanes + 2];
-    float fvalue[kLanes], fmemory[kLanes + 2], fexpected[kLanes + 2];
-    for (int l = 0; l < kLanes + 2; ++l) {
-      memory[l] = expected[l] = static_cast<int32_t>(rng());
-      fmemory[l] = fexpected[l] = static_cast<float>(l) - 0.5f;
-    }
-    for (int l = 0; l < kLanes; ++l) {
-      mask[l] = rng() & 1 ? -1 : 0;
-      value[l] = static_cast<int32_t>(rng());
-      fvalue[l] = static_cast<float>(value[l]);
-      if (mask[l]) expected[l + 1] = value[l], fexpected[l + 1] = fvalue[l];
-    }
-    // One element in, so the store is unaligned and the neighbours show any overrun.
-    simd::store_masked(memory + 1, load(mask), load(value));
-    simd::store_masked(fmemory + 1, load(mask), Float::load_unaligned(fvalue));
-    ASSERT_EQ(std::memcmp(memory, expected, sizeof memory), 0);
-    ASSERT_EQ(std::memcmp(fmemory, fexpected, sizeof fmemory), 0);
-  }
-}
-
 TEST(Simd, DoubleHalvesAreExactAndRoundBack) {
   std::mt19937 rng(4);
   constexpr int kHalf = static_cast<int>(Double::size);

@@ -4,7 +4,10 @@
 // varies from run to run, so every item must write only memory that it alone owns. Output bytes
 // then never depend on the thread count.
 
+#include "luxel/rasterizer/fast_paths.hpp"
+
 #include <atomic>
+#include <cstddef>
 #include <condition_variable>
 #include <cstdint>
 #include <functional>
@@ -32,16 +35,32 @@ class OcclusionQuery {
   uint64_t samples_ = 0;
 };
 
+/// How a Context runs. None of it changes the bytes a frame produces.
+struct ContextOptions {
+  /// 0 means one per hardware thread. The calling thread is one of them: with 1 thread no worker
+  /// starts.
+  int threads = 0;
+  /// The fast paths the rasterizer may take (see fast_paths.hpp).
+  FastPaths fast_paths;
+  /// The deferred frame flushes by itself, in the middle of a draw if need be, once the records
+  /// of the triangles binned since the last flush take this many bytes (checked between parts
+  /// of at most kTrianglesPerPart triangles, so one part may go beyond it). A flush reads and
+  /// writes every touched tile's samples once, so the larger the budget, the fewer times a
+  /// frame's samples travel through memory; the smaller, the more of the records are still
+  /// cached when the tiles read them.
+  size_t max_pending_record_bytes = size_t(128) << 20;
+};
+
 class Context {
  public:
-  /// `threads` = 0 means one per hardware thread. The calling thread is one of them: a Context
-  /// with 1 thread starts no worker.
-  explicit Context(int threads = 0);
+  explicit Context(int threads = 0) : Context(with_threads(threads)) {}
+  explicit Context(const ContextOptions& options);
   ~Context();
   Context(const Context&) = delete;
   Context& operator=(const Context&) = delete;
 
   int thread_count() const { return static_cast<int>(workers_.size()) + 1; }
+  const ContextOptions& options() const { return options_; }
 
   /// Runs fn(item, thread) for item in [0, count), spread over all threads, and returns when all
   /// are done. `thread` in [0, thread_count()) names the thread (for per-thread scratch memory).
@@ -55,6 +74,8 @@ class Context {
 
   /// Runs everything recorded so far.
   void flush();
+  /// How many flushes had work to run, the ones the queue made by itself included.
+  uint64_t flush_count() const { return flush_count_; }
 
   /// Starts counting into `query` (resetting it). One query is active at a time.
   void begin_query(OcclusionQuery& query);
@@ -73,9 +94,15 @@ class Context {
   detail::CommandQueue& queue() { return *queue_; }
 
  private:
+  static ContextOptions with_threads(int threads) {
+    ContextOptions options;
+    options.threads = threads;
+    return options;
+  }
   void worker_main(int thread);
   void run_items(int thread);
 
+  ContextOptions options_;
   std::vector<std::thread> workers_;
   std::mutex mutex_;
   std::condition_variable wake_;
@@ -88,6 +115,7 @@ class Context {
   bool stopping_ = false;
   alignas(64) std::atomic<int> next_item_{0};
   OcclusionQuery* active_query_ = nullptr;
+  uint64_t flush_count_ = 0;
   std::unique_ptr<detail::CommandQueue> queue_;
   std::unique_ptr<DrawStats> stats_;
 };

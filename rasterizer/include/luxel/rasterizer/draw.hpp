@@ -20,7 +20,7 @@
 //     static constexpr bool kTrivial = true;
 //   then a stamp whose samples all failed the early depth test is shaded with no live lane
 //   (writing nothing) instead of branched around: on depth-mixed geometry that branch
-//   mispredicts often, and a misprediction costs more than such a shader (W2: 2-3 ms of 57).
+//   mispredicts often, and a misprediction costs more than such a shader.
 //
 // The pipeline: vertex functor -> clip (near, far, guard band) -> snap to 1/256 pixel -> cull ->
 // setup -> bin into tiles -> per tile, in submission order: coverage per sample, early depth /

@@ -36,14 +36,19 @@ inline constexpr int kMaxSamples = 8;
 
 /// A draw's front end (vertex functor, clip, setup, binning) is cut into chunks of at most this
 /// many triangles, run in parallel; each chunk has its own bins, and a tile replays the chunks in
-/// order, so submission order is kept for any thread count. (W2 on 2 threads: 87-91 ms a frame
-/// with 32768, 91-94 ms with 8192.)
+/// order, so submission order is kept for any thread count. Fewer, larger chunks mean fewer bins
+/// to write and replay (bench/README.md).
 inline constexpr int kTrianglesPerChunk = 32768;
 /// Smaller draws are cut into one chunk per thread, of at least kMinTrianglesPerChunk, so that
 /// their front end, too, runs on every thread (the chunking never changes the output). More
-/// chunks cost more than they balance: each has its own bins to write and replay (W1's eight
-/// draws of 4,608 triangles: front end 2.4 ms a frame in 8 chunks each, 1.8 ms in 2, 2 threads).
+/// chunks cost more than they balance: each has its own bins to write and replay.
 inline constexpr int kMinTrianglesPerChunk = 512;
 static_assert(kMinTrianglesPerChunk <= kTrianglesPerChunk);
+
+/// A draw is recorded in parts of at most this many triangles; between two parts the deferred
+/// frame flushes if its records exceed their budget (ContextOptions::max_pending_record_bytes),
+/// so one part is what the records can grow beyond it.
+inline constexpr uint32_t kTrianglesPerPart = uint32_t(1) << 16;
+static_assert(kTrianglesPerChunk <= kTrianglesPerPart);
 
 }  // namespace luxel::rasterizer

@@ -44,6 +44,18 @@ using FloatMask = xsimd::batch_bool<float, Arch>;
 using IntMask = xsimd::batch_bool<int32_t, Arch>;
 
 inline constexpr int kLanes = static_cast<int>(Float::size);
+
+/// The instruction set the lanes were compiled for (chosen at build time: LUXEL_ARCH).
+inline constexpr const char* kIsaName =
+#if defined(__AVX512F__)
+    "avx512";
+#elif defined(__AVX2__)
+    "avx2";
+#elif defined(__SSE4_2__)
+    "sse4.2";
+#else
+    "portable";
+#endif
 static_assert(kLanes >= 4 && kLanes % 4 == 0, "a stamp holds whole 2x2 quads");
 inline constexpr int kQuadsPerStamp = kLanes / 4;
 inline constexpr int kStampWidth = kLanes / 2;
@@ -231,39 +243,6 @@ inline void store_bytes(uint8_t* p, const Int& v) {
   alignas(64) int32_t v2[kLanes];
   v.store_aligned(v2);
   for (int i = 0; i < kLanes; ++i) p[i] = static_cast<uint8_t>(v2[i]);
-#endif
-}
-
-namespace detail {
-template <class T, class Batch>
-inline void store_masked_by_lane(T* p, const Int& mask, const Batch& v) {
-  alignas(64) int32_t m[kLanes];
-  alignas(64) T value[kLanes];
-  mask.store_aligned(m);
-  v.store_aligned(value);
-  for (int i = 0; i < kLanes; ++i)
-    if (m[i] < 0) p[i] = value[i];
-}
-}  // namespace detail
-
-/// Stores the lanes of v whose mask lane is all ones (sign bit set) to p, leaving the others'
-/// memory untouched and unread. p need not be aligned.
-inline void store_masked(int32_t* p, const Int& mask, const Int& v) {
-#if defined(__AVX512F__)
-  _mm512_mask_storeu_epi32(p, _mm512_movepi32_mask(mask), v);
-#elif defined(__AVX2__)
-  _mm256_maskstore_epi32(p, mask, v);
-#else
-  detail::store_masked_by_lane(p, mask, v);
-#endif
-}
-inline void store_masked(float* p, const Int& mask, const Float& v) {
-#if defined(__AVX512F__)
-  _mm512_mask_storeu_ps(p, _mm512_movepi32_mask(mask), v);
-#elif defined(__AVX2__)
-  _mm256_maskstore_ps(p, mask, v);
-#else
-  detail::store_masked_by_lane(p, mask, v);
 #endif
 }
 
@@ -484,8 +463,7 @@ inline LaneBits to_bits(const xsimd::batch_bool<double, Arch>& low, const xsimd:
 
 /// Asks for the cache line holding p, to be read soon. Never faults, whatever p is.
 inline void prefetch(const void* p) { __builtin_prefetch(p, 0, 3); }
-/// Asks for the cache line holding p, to be written soon. Never faults, whatever p is. (On
-/// x86-64-v3 a read prefetch: `prefetchw` measured the same on W2.)
+/// Asks for the cache line holding p, to be written soon. Never faults, whatever p is.
 inline void prefetch_for_write(const void* p) { __builtin_prefetch(p, 1, 3); }
 
 /// Tells the CPU this is a spin-wait loop (x86 `pause`: saves power, frees the sibling thread).
@@ -497,7 +475,7 @@ inline void spin_pause() {
 
 /// Fills n 32-bit words (clears of whole tiles). On x86-64 this is `rep stosd`: its fast-string
 /// path writes whole cache lines without first reading them from memory, which vector stores
-/// must (read for ownership). Measured on W1's color and depth clears: ~1 ms of 16 a frame.
+/// must (read for ownership).
 inline void fill_u32(uint32_t* dst, uint32_t value, std::size_t n) {
 #if defined(__x86_64__)
   asm volatile("rep stosl" : "+D"(dst), "+c"(n) : "a"(value) : "memory");

@@ -45,8 +45,9 @@ class CommandQueue {
 
   /// Chunks for a draw's front end, reset and stable until the flush.
   std::vector<ChunkBins*> allocate_chunks(int count);
-  uint64_t pending_triangles() const { return pending_triangles_; }
-  void add_pending_triangles(uint64_t n) { pending_triangles_ += n; }
+  /// Bytes the chunks of the pending frame hold (ChunkBins::bytes).
+  size_t pending_record_bytes() const { return pending_record_bytes_; }
+  void add_pending_record_bytes(size_t n) { pending_record_bytes_ += n; }
 
   void push(std::unique_ptr<Command> command) { commands_.push_back(std::move(command)); }
 
@@ -67,18 +68,11 @@ class CommandQueue {
   std::vector<std::unique_ptr<Command>> commands_;
   std::vector<std::unique_ptr<ChunkBins>> chunk_pool_;
   size_t chunks_used_ = 0;
-  uint64_t pending_triangles_ = 0;
+  size_t pending_record_bytes_ = 0;
   std::vector<OcclusionQuery*> queries_;
   std::vector<TileCounters> tile_counters_;
   std::vector<DrawStats> tile_stats_;
   std::unique_ptr<DrawStats> front_end_stats_;
 };
-
-/// Most triangles binned before the queue flushes on its own, in the middle of a draw if need be.
-/// Small enough that the binned records (~100 bytes a triangle) are still in the cache when the
-/// tiles read them, large enough that the tiles' samples are not fetched too often: on W2
-/// (1 M triangles in one draw) 2^16 took 92-99 ms a frame, 2^21 (never flushing) 110 ms, 2^18
-/// 100 ms, 2^15 106 ms, 2^14 124 ms.
-inline constexpr uint64_t kMaxPendingTriangles = uint64_t(1) << 16;
 
 }  // namespace luxel::rasterizer::detail

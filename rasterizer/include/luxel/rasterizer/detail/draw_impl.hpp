@@ -25,7 +25,7 @@ struct DrawPlan {
   uint32_t color_write_mask = 0;  ///< RGBA8 bits to write
 };
 
-DrawPlan plan_draw(const Framebuffer& fb, const PipelineState& state, int varyings);
+DrawPlan plan_draw(const Framebuffer& fb, const PipelineState& state, int varyings, FastPaths fast_paths);
 
 /// Lane constants of a stamp, built once.
 struct StampLanes {
@@ -50,7 +50,7 @@ inline Float eval_plane(const Plane& p, const Float& dx, const Float& dy) {
 
 /// Where a draw tests depth and stencil, fixed per draw. The common early cases have their own
 /// paths, where the compare function is a constant: a switch and flag checks per stamp, and the
-/// generic path's code in the loop, cost W2 2-6 ms of 57.
+/// generic path's code in the loop, cost small triangles dearly (bench/README.md).
 enum class DepthPath {
   Late,            ///< after the pixel functor (it can discard or write depth, or alpha test is on)
   Early,           ///< before it: any depth/stencil state, or none
@@ -59,6 +59,11 @@ enum class DepthPath {
 };
 
 /// Rasterizes the triangles binned to one tile, in submission order. S is the sample count.
+///
+/// Every depth and color write of a stamp stores whole vectors: the new values of the lanes that
+/// pass, blended with the old values of the others. AVX2 masked stores (vmaskmovps, vpmaskmovd)
+/// would not read the old values, but AMD Zen runs them as microcode and neither vendor forwards
+/// a later load from them; a load, a blend and a store are simple instructions on both.
 template <class PS, int N, DepthPath kPath, int S>
 class TileRasterizer {
  public:
@@ -94,6 +99,10 @@ class TileRasterizer {
     } else {
       color_write_ = state_.blend.srgb_write ? ColorWrite::PlainSrgb : ColorWrite::Plain;
     }
+    const FastPaths fast = plan.constants.fast_paths;
+    full_coverage_ = fast.on(FastPath::FullCoverage);
+    fixed_depth_ = fast.on(FastPath::FixedDepthPaths);
+    trivial_ = kTrivialPixelFunctor<PS> && fast.on(FastPath::TrivialShaders);
     depth_test_ = plan.depth_test;
     depth_write_ = plan.depth_write;
     depth_func_ = state_.depth_stencil.depth_func;
@@ -117,7 +126,7 @@ class TileRasterizer {
   static_assert(kTileSize % kBlockSize == 0 && kBlockSize % simd::kStampWidth == 0);
 
   /// The path for other triangles. Out of line: the record loop, with the small-triangle walk
-  /// inlined, stays small (W2 -1 ms).
+  /// inlined, stays small.
   [[gnu::noinline]] void rasterize(const TriangleSetup& t, int x0, int y0, int x1, int y1);
   /// The path for small triangles (TriangleSetup::small()): 32-bit edge values throughout.
   void rasterize_small(const TriangleSetup& t, int sx0, int sy0, int x1, int y1);
@@ -172,6 +181,9 @@ class TileRasterizer {
   bool count_samples_;
   bool whole_tile_;
   bool simple_depth_;   ///< depth buffer without stencil
+  bool full_coverage_;  ///< FastPath::FullCoverage
+  bool fixed_depth_;    ///< FastPath::FixedDepthPaths
+  bool trivial_;        ///< a kTrivial functor, FastPath::TrivialShaders on
   bool depth_test_, depth_write_;
   CompareFunc depth_func_;
   float min_depth_, max_depth_;
@@ -230,10 +242,11 @@ void TileRasterizer<PS, N, kPath, S>::rasterize(const TriangleSetup& t, int sx0,
     }
     edge_bounds(E, simd::kStampWidth * kSubpixelsPerPixel, simd::kStampHeight * kSubpixelsPerPixel,
                 edges.min_offset[e], edges.max_offset[e]);
+    if (!full_coverage_) edges.min_offset[e] = -(int64_t(1) << 62);  // no stamp is wholly inside
   }
   // Small triangles: straight to stamps. Larger ones: 16x16 blocks first, each rejected,
   // accepted whole (no edge tests for its stamps), or walked stamp by stamp.
-  if (x1 - sx0 <= kBlockSize || y1 - sy0 <= kBlockSize) {
+  if (x1 - sx0 <= kBlockSize || y1 - sy0 <= kBlockSize || !full_coverage_) {
     rasterize_stamps(t, edges, sx0, sy0, x1, y1);
     return;
   }
@@ -288,7 +301,8 @@ void TileRasterizer<PS, N, kPath, S>::rasterize_small(const TriangleSetup& t, in
   const Int4 step_x = a * Int4(kStampW), step_y = b * Int4(kStampH);
   const Int4 a_span = step_x - a, b_span = step_y - b;  // (stamp size - 1) subpixels
   const Int4 zero(0);
-  const Int4 lo = xsimd::min(a_span, zero) + xsimd::min(b_span, zero);
+  // Without FastPath::FullCoverage no stamp counts as wholly inside: |v| < 2^30 (above).
+  const Int4 lo = full_coverage_ ? xsimd::min(a_span, zero) + xsimd::min(b_span, zero) : Int4(-(1 << 30));
   const Int4 hi = xsimd::max(a_span, zero) + xsimd::max(b_span, zero);
   // Per edge, the offsets of every lane's sample s from the stamp's corner: a X + b Y, one
   // 16-bit dot product per lane (|a|, |b| < 2^13, offsets < 2^11).
@@ -440,7 +454,7 @@ Int TileRasterizer<PS, N, kPath, S>::depth_stencil_test(const TriangleSetup& t, 
     updated = (value & ~write_mask) | (updated & write_mask);
     simd::store_bytes(stencil, updated);
   }
-  if (depth_write_) simd::store_masked(depth, pass, z);
+  if (depth_write_) simd::select(pass, z, dst_depth).store_aligned(depth);
   return pass;
 }
 
@@ -458,7 +472,7 @@ Int TileRasterizer<PS, N, kPath, S>::early_depth(float corner_z, int stamp, Int*
     const Float d = Float::load_aligned(depth);
     const Float z = sample_depth(s, corner_z, min_depth, max_depth);
     const Int pass = coverage[s] & simd::mask_of(compare(kFunc, z, d));
-    if (depth_write) simd::store_masked(depth, pass, z);
+    if (depth_write) simd::select(pass, z, d).store_aligned(depth);
     coverage[s] = pass;
     live |= pass;
   }
@@ -479,7 +493,7 @@ void TileRasterizer<PS, N, kPath, S>::write_color(int stamp, int s, const Int& c
   }
   const Int write(static_cast<int32_t>(plan_.color_write_mask));
   value = (value & write) | (old & ~write);
-  simd::store_masked(dst, coverage, value);
+  simd::select(coverage, value, old).store_aligned(dst);
 }
 
 template <class PS, int N, DepthPath kPath, int S>
@@ -519,11 +533,9 @@ void TileRasterizer<PS, N, kPath, S>::shade_stamp(const TriangleSetup& t, int px
   if constexpr (kFixedDepthPath) {
     constexpr CompareFunc kFunc = kPath == DepthPath::EarlyLess ? CompareFunc::Less : CompareFunc::LessEqual;
     live = early_depth<kFunc>(corner_z, stamp, coverage);
-    if constexpr (!kTrivialPixelFunctor<PS>) {  // see draw.hpp
-      if (!simd::sign_bits(live)) return;
-    }
+    if ((!kTrivialPixelFunctor<PS> || !trivial_) && !simd::sign_bits(live)) return;  // kTrivial: see draw.hpp
   } else if constexpr (kPath == DepthPath::Early) {
-    if (simple_depth_ && depth_test_) {
+    if (simple_depth_ && depth_test_ && fixed_depth_) {
       switch (depth_func_) {  // Less and LessEqual have their own paths
         case CompareFunc::Greater: live = early_depth<CompareFunc::Greater>(corner_z, stamp, coverage); break;
         case CompareFunc::GreaterEqual: live = early_depth<CompareFunc::GreaterEqual>(corner_z, stamp, coverage); break;
@@ -533,9 +545,7 @@ void TileRasterizer<PS, N, kPath, S>::shade_stamp(const TriangleSetup& t, int px
             live |= coverage[s];
           }
       }
-      if constexpr (!kTrivialPixelFunctor<PS>) {  // see draw.hpp
-        if (!simd::sign_bits(live)) return;
-      }
+      if ((!kTrivialPixelFunctor<PS> || !trivial_) && !simd::sign_bits(live)) return;  // kTrivial: see draw.hpp
     } else if (depth_) {
       for (int s = 0; s < S; ++s) {
         coverage[s] = depth_stencil_test(t, corner_z, stamp, s, coverage[s], nullptr);
@@ -584,11 +594,11 @@ void TileRasterizer<PS, N, kPath, S>::shade_stamp(const TriangleSetup& t, int px
     for (int s = 0; s < S; ++s) samples_passed += std::popcount(simd::sign_bits(coverage[s]));
   if (color_write_ == ColorWrite::None) return;
   if (color_write_ != ColorWrite::Merged) {
-    // No blending, all channels: packing clamps by itself, and the covered lanes are stored
-    // without reading what they replace (a load would wait for the line to arrive).
+    // No blending, all channels: packing clamps by itself.
     const Int packed = color_write_ == ColorWrite::PlainSrgb ? pack_srgb8(out.color) : pack_unorm8(out.color);
     int32_t* dst = reinterpret_cast<int32_t*>(color_ + stamp * simd::kLanes);
-    for (int s = 0; s < S; ++s, dst += kTilePixels) simd::store_masked(dst, coverage[s], packed);
+    for (int s = 0; s < S; ++s, dst += kTilePixels)
+      simd::select(coverage[s], packed, Int::load_aligned(dst)).store_aligned(dst);
     return;
   }
   const simd::Float4 color = saturate(out.color);
@@ -623,7 +633,9 @@ void front_end_chunk(const DrawConstants& dc, const Geometry& geometry, const VS
   }
   // A small direct-mapped post-transform cache: shared vertices are shaded once most of the time.
   // An entry a pending triangle of the batch still reads is not evicted: the batch goes first.
+  // Without FastPath::VertexCache every vertex of every triangle is shaded into the batch.
   constexpr uint32_t kCacheSize = 64;
+  const bool use_cache = dc.fast_paths.on(FastPath::VertexCache);
   struct Entry {
     uint32_t index = ~0u;
     uint32_t batch = ~0u;  ///< the last batch that reads this entry
@@ -659,7 +671,7 @@ void front_end_chunk(const DrawConstants& dc, const Geometry& geometry, const VS
       continue;
     }
     bool evicts = false;
-    for (int k = 0; k < 3; ++k) {
+    for (int k = 0; k < 3 && use_cache; ++k) {
       const Entry& e = cache[idx[k] % kCacheSize];
       evicts |= e.index != idx[k] && e.batch == batch;
     }
@@ -667,7 +679,7 @@ void front_end_chunk(const DrawConstants& dc, const Geometry& geometry, const VS
     const glm::vec4** p = pending + 3 * pending_count;
     for (int k = 0; k < 3; ++k) {
       const uint32_t slot = idx[k] % kCacheSize;
-      bool collides = false;  // an earlier vertex of this triangle lives in the same slot
+      bool collides = !use_cache;  // or an earlier vertex of this triangle lives in the same slot
       for (int j = 0; j < k; ++j) collides |= (idx[j] % kCacheSize == slot) && idx[j] != idx[k];
       if (collides) {
         vs(idx[k], spill[pending_count][k]);
@@ -696,7 +708,8 @@ class DrawCommand final : public Command {
       : plan_(plan), state_(state), ps_(ps), chunks_(std::move(chunks)), query_slot_(query_slot) {
     plan_.state = &state_;
     const CompareFunc depth_func = state_.depth_stencil.depth_func;
-    const bool depth_only = plan_.depth_stencil && plan_.depth_test && !plan_.stencil;
+    const bool depth_only = plan_.depth_stencil && plan_.depth_test && !plan_.stencil &&
+                            plan_.constants.fast_paths.on(FastPath::FixedDepthPaths);
     depth_path_ = PS::kCanDiscard || PS::kWritesDepth || plan_.alpha_test              ? DepthPath::Late
                    : depth_only && depth_func == CompareFunc::Less      ? DepthPath::EarlyLess
                    : depth_only && depth_func == CompareFunc::LessEqual ? DepthPath::EarlyLessEqual
@@ -766,7 +779,7 @@ void draw(Context& ctx, const Framebuffer& fb, const PipelineState& state, const
           const VS& vertex_shader, const PS& pixel_shader) {
   using namespace detail;
   constexpr int N = VS::kVaryings;
-  const DrawPlan plan = plan_draw(fb, state, N);
+  const DrawPlan plan = plan_draw(fb, state, N, ctx.options().fast_paths);
   const uint32_t triangles = geometry.triangle_count();
   CommandQueue& queue = ctx.queue();
   if (!queue.accepts(plan.layout)) ctx.flush();
@@ -776,11 +789,11 @@ void draw(Context& ctx, const Framebuffer& fb, const PipelineState& state, const
       plan.constants.clip_y0 >= plan.constants.clip_y1)
     return;
 
-  // A large draw is recorded in parts with the queue flushed between them (kMaxPendingTriangles).
+  // A large draw is recorded in parts, and the queue flushes between them once its records take
+  // more than the context's budget (ContextOptions::max_pending_record_bytes).
   for (uint32_t part_first = 0; part_first < triangles;) {
-    if (queue.pending_triangles() >= kMaxPendingTriangles) ctx.flush();
-    const uint32_t part = static_cast<uint32_t>(
-        std::min<uint64_t>(triangles - part_first, kMaxPendingTriangles - queue.pending_triangles()));
+    if (queue.pending_record_bytes() >= ctx.options().max_pending_record_bytes) ctx.flush();
+    const uint32_t part = std::min<uint32_t>(triangles - part_first, kTrianglesPerPart);
     // Front end now, in parallel over chunks of triangles; each chunk bins into its own lists.
     const uint32_t threads = static_cast<uint32_t>(ctx.thread_count());
     const uint32_t per_chunk = std::clamp<uint32_t>((part + threads - 1) / threads,
@@ -794,7 +807,7 @@ void draw(Context& ctx, const Framebuffer& fb, const PipelineState& state, const
       front_end_chunk(plan.constants, geometry, vertex_shader, first, last, *chunks[c], chunk_stats[c]);
     });
     for (const DrawStats& s : chunk_stats) queue.front_end_stats() += s;
-    queue.add_pending_triangles(part);
+    for (const ChunkBins* c : chunks) queue.add_pending_record_bytes(c->bytes());
     const int slot = queue.query_slot(ctx.active_query());
     queue.push(std::make_unique<DrawCommand<PS, N>>(plan, state, pixel_shader, std::move(chunks), slot));
     part_first += part;

@@ -2,6 +2,7 @@
 // Private to the rasterizer: what the front end (clip, snap, setup, bin) hands the tile
 // rasterizers. Not templated on shaders, so it lives in triangle_setup.cpp.
 
+#include "luxel/rasterizer/fast_paths.hpp"
 #include "luxel/rasterizer/limits.hpp"
 #include "luxel/rasterizer/simd.hpp"
 #include "luxel/rasterizer/state.hpp"
@@ -36,6 +37,7 @@ struct DrawConstants {
   int samples = 1;
   int varyings = 0;
   RasterizerState rasterizer;
+  FastPaths fast_paths;
 };
 
 /// E(X, Y) = a X + b Y + c over subpixel coordinates; a sample is inside when E >= 0 for all
@@ -173,6 +175,8 @@ struct ChunkBins {
   std::vector<uint32_t> touched_tiles;
 
   void reset(int tile_count);
+  /// The records' bytes and the per-tile streams' own: what the chunk costs until the flush.
+  size_t bytes() const;
 };
 
 /// The front end takes triangles in batches of at most this many: the vertex functor runs for a
@@ -180,7 +184,7 @@ struct ChunkBins {
 /// outputs in other widths than a functor writes them (a float4 compared or copied whole after
 /// four float stores), which the CPU cannot forward from its store buffer; read right after the
 /// functor, each such load waited until every older store, the binned records' included, had
-/// reached the cache (measured: 13% of W2's frame). A batch later, the vertices are in the cache.
+/// reached the cache. A batch later, the vertices are in the cache.
 inline constexpr int kFrontEndBatch = 16;
 
 /// Clips, sets up and bins `count` (at most kFrontEndBatch) triangles, in order.
