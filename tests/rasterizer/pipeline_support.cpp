@@ -49,9 +49,9 @@ ShadeResult shade(const ShadeParams& p, int x, int y) {
 
 namespace {
 
-template <bool kDiscard, bool kDepth>
+template <bool kDiscard, bool kDepth, bool kTrivialPS = false>
 struct ScenePS {
-  static constexpr bool kCanDiscard = kDiscard, kWritesDepth = kDepth;
+  static constexpr bool kCanDiscard = kDiscard, kWritesDepth = kDepth, kTrivial = kTrivialPS;
   ShadeParams params;
   void operator()(const PixelInput<1>& in, PixelOutput& out) const {
     const auto xs = lanes_of(in.x), ys = lanes_of(in.y);
@@ -69,10 +69,10 @@ struct ScenePS {
   }
 };
 
-template <bool kDiscard, bool kDepth>
+template <bool kDiscard, bool kDepth, bool kTrivialPS = false>
 void draw_with(Context& ctx, const Framebuffer& fb, const SceneDraw& d, const std::vector<glm::vec4>& clip) {
   draw(ctx, fb, d.state, Geometry::non_indexed(uint32_t(clip.size())), PositionVS{clip.data()},
-       ScenePS<kDiscard, kDepth>{d.shade});
+       ScenePS<kDiscard, kDepth, kTrivialPS>{d.shade});
 }
 
 double sat(double v) { return std::isnan(v) ? 0.0 : std::clamp(v, 0.0, 1.0); }
@@ -257,6 +257,7 @@ Scene random_scene(uint32_t seed, int samples) {
     d.shade.seed = rng();
     d.shade.discard = chance(30);
     d.shade.write_depth = chance(20);
+    d.shade.trivial = d.shade.seed & 1;  // (from a value drawn already: the scenes stay as they were)
     const int tris = 1 + pick(3);
     for (int t = 0; t < tris; ++t) {
       SceneTriangle tri;
@@ -317,7 +318,9 @@ SceneOutput render_scene(Context& ctx, const Scene& scene) {
     if (d.shade.discard) {
       d.shade.write_depth ? draw_with<true, true>(ctx, fb, d, clip) : draw_with<true, false>(ctx, fb, d, clip);
     } else {
-      d.shade.write_depth ? draw_with<false, true>(ctx, fb, d, clip) : draw_with<false, false>(ctx, fb, d, clip);
+      d.shade.write_depth ? draw_with<false, true>(ctx, fb, d, clip)
+      : d.shade.trivial   ? draw_with<false, false, true>(ctx, fb, d, clip)
+                          : draw_with<false, false>(ctx, fb, d, clip);
     }
   }
   if (active) ctx.end_query();

@@ -31,6 +31,7 @@ struct ShadeParams {
   bool discard = false;      ///< some pixels texkill
   bool write_depth = false;  ///< outputs depth (from a set that includes values outside [0, 1])
   bool allow_nan = true;     ///< some color channels are NaN
+  bool trivial = false;      ///< drawn by a functor that declares kTrivial (draw.hpp), unless it discards or writes depth
 };
 struct ShadeResult {
   float color[4];

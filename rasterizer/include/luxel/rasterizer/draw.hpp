@@ -20,7 +20,9 @@
 //     static constexpr bool kTrivial = true;
 //   then a stamp whose samples all failed the early depth test is shaded with no live lane
 //   (writing nothing) instead of branched around: on depth-mixed geometry that branch
-//   mispredicts often, and a misprediction costs more than such a shader.
+//   mispredicts often, and a misprediction costs more than such a shader. Its draws also test
+//   depth with the compare function compiled in (FastPath::FixedDepthPaths), which pays where
+//   per-stamp overheads weigh as much as the shading and costs compile time everywhere else.
 //
 // The pipeline: vertex functor -> clip (near, far, guard band) -> snap to 1/256 pixel -> cull ->
 // setup -> bin into tiles -> per tile, in submission order: coverage per sample, early depth /

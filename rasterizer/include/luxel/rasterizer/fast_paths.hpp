@@ -25,7 +25,8 @@ enum class FastPath : uint32_t {
   /// (DrawStats::blocks_full, stamps_full).
   FullCoverage = 1u << 2,
   /// Early depth tests whose compare function is a compile-time constant (Less, LessEqual,
-  /// Greater, GreaterEqual without stencil); off, the general depth/stencil test runs.
+  /// Greater, GreaterEqual without stencil), for trivial pixel functors (draw.hpp); off, the
+  /// general depth/stencil test runs.
   FixedDepthPaths = 1u << 3,
   /// Pixel functors that declare kTrivial are run on stamps whose samples all failed early
   /// depth, with no live lane, instead of being branched around (see draw.hpp).

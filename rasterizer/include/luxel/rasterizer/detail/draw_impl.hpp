@@ -50,7 +50,9 @@ inline Float eval_plane(const Plane& p, const Float& dx, const Float& dy) {
 
 /// Where a draw tests depth and stencil, fixed per draw. The common early cases have their own
 /// paths, where the compare function is a constant: a switch and flag checks per stamp, and the
-/// generic path's code in the loop, cost small triangles dearly (bench/README.md).
+/// generic path's code in the loop, cost small triangles dearly (bench/README.md). Only trivial
+/// pixel functors (draw.hpp) get them: beside any other shader those costs are small, and every
+/// path is one more tile rasterizer to compile per functor and sample count.
 enum class DepthPath {
   Late,            ///< after the pixel functor (it can discard or write depth, or alpha test is on)
   Early,           ///< before it: any depth/stencil state, or none
@@ -535,7 +537,7 @@ void TileRasterizer<PS, N, kPath, S>::shade_stamp(const TriangleSetup& t, int px
     live = early_depth<kFunc>(corner_z, stamp, coverage);
     if ((!kTrivialPixelFunctor<PS> || !trivial_) && !simd::sign_bits(live)) return;  // kTrivial: see draw.hpp
   } else if constexpr (kPath == DepthPath::Early) {
-    if (simple_depth_ && depth_test_ && fixed_depth_) {
+    if (kTrivialPixelFunctor<PS> && simple_depth_ && depth_test_ && fixed_depth_) {
       switch (depth_func_) {  // Less and LessEqual have their own paths
         case CompareFunc::Greater: live = early_depth<CompareFunc::Greater>(corner_z, stamp, coverage); break;
         case CompareFunc::GreaterEqual: live = early_depth<CompareFunc::GreaterEqual>(corner_z, stamp, coverage); break;
@@ -632,9 +634,11 @@ void front_end_chunk(const DrawConstants& dc, const Geometry& geometry, const VS
     return;
   }
   // A small direct-mapped post-transform cache: shared vertices are shaded once most of the time.
-  // An entry a pending triangle of the batch still reads is not evicted: the batch goes first.
-  // Without FastPath::VertexCache every vertex of every triangle is shaded into the batch.
-  constexpr uint32_t kCacheSize = 64;
+  // A vertex whose slot holds another one that the pending batch still reads is shaded into
+  // the batch's own spill space instead: evicting would mean running the batch early, and a
+  // mesh whose rows are about a cache size long (a grid) would then run batches of one or two
+  // triangles. Without FastPath::VertexCache every vertex of every triangle is spilled.
+  constexpr uint32_t kCacheSize = 128;
   const bool use_cache = dc.fast_paths.on(FastPath::VertexCache);
   struct Entry {
     uint32_t index = ~0u;
@@ -670,18 +674,10 @@ void front_end_chunk(const DrawConstants& dc, const Geometry& geometry, const VS
       ++stats.bad_index;
       continue;
     }
-    bool evicts = false;
-    for (int k = 0; k < 3 && use_cache; ++k) {
-      const Entry& e = cache[idx[k] % kCacheSize];
-      evicts |= e.index != idx[k] && e.batch == batch;
-    }
-    if (evicts) run_batch();
     const glm::vec4** p = pending + 3 * pending_count;
     for (int k = 0; k < 3; ++k) {
       const uint32_t slot = idx[k] % kCacheSize;
-      bool collides = !use_cache;  // or an earlier vertex of this triangle lives in the same slot
-      for (int j = 0; j < k; ++j) collides |= (idx[j] % kCacheSize == slot) && idx[j] != idx[k];
-      if (collides) {
+      if (!use_cache || (cache[slot].index != idx[k] && cache[slot].batch == batch)) {
         vs(idx[k], spill[pending_count][k]);
         p[k] = &spill[pending_count][k].position;
         continue;
@@ -708,7 +704,7 @@ class DrawCommand final : public Command {
       : plan_(plan), state_(state), ps_(ps), chunks_(std::move(chunks)), query_slot_(query_slot) {
     plan_.state = &state_;
     const CompareFunc depth_func = state_.depth_stencil.depth_func;
-    const bool depth_only = plan_.depth_stencil && plan_.depth_test && !plan_.stencil &&
+    const bool depth_only = kTrivialPixelFunctor<PS> && plan_.depth_stencil && plan_.depth_test && !plan_.stencil &&
                             plan_.constants.fast_paths.on(FastPath::FixedDepthPaths);
     depth_path_ = PS::kCanDiscard || PS::kWritesDepth || plan_.alpha_test              ? DepthPath::Late
                    : depth_only && depth_func == CompareFunc::Less      ? DepthPath::EarlyLess
@@ -735,6 +731,10 @@ class DrawCommand final : public Command {
     const bool count = query_slot_ >= 0;
     if constexpr (PS::kCanDiscard || PS::kWritesDepth) {  // only the late path: instantiate no other
       run(TileRasterizer<PS, N, DepthPath::Late, S>(plan_, ps_, tile, count), tile, counters);
+    } else if constexpr (!kTrivialPixelFunctor<PS>) {  // no fixed paths (DepthPath)
+      if (depth_path_ == DepthPath::Late)
+        return run(TileRasterizer<PS, N, DepthPath::Late, S>(plan_, ps_, tile, count), tile, counters);
+      return run(TileRasterizer<PS, N, DepthPath::Early, S>(plan_, ps_, tile, count), tile, counters);
     } else {
       switch (depth_path_) {
         case DepthPath::Late:
