@@ -120,12 +120,17 @@ class ResolveCommand final : public detail::Command {
         }
         rb = xsimd::bitwise_cast<Int>(xsimd::bitwise_cast<simd::UInt>(rb + half) >> shift) & low_bytes;
         ga = xsimd::bitwise_cast<Int>(xsimd::bitwise_cast<simd::UInt>(ga + half) >> shift) & low_bytes;
-        alignas(64) uint32_t out[simd::kLanes];
-        (rb | (ga << 8)).store_aligned(reinterpret_cast<int32_t*>(out));
-        for (int l = 0; l < simd::kLanes; ++l) {
-          const int x = sx + simd::lane_x(l), y = sy + simd::lane_y(l);
-          if (x < width && y < height) std::memcpy(image_.pixel(x0 + x, y0 + y), &out[l], 4);
+        alignas(64) uint32_t out[simd::kLanes];  // row-major: the stamp's two rows of pixels
+        simd::to_row_major(rb | (ga << 8)).store_aligned(reinterpret_cast<int32_t*>(out));
+        constexpr int kRowBytes = 4 * simd::kStampWidth;
+        if (sx + simd::kStampWidth <= width && sy + simd::kStampHeight <= height) {
+          std::memcpy(image_.pixel(x0 + sx, y0 + sy), out, kRowBytes);
+          std::memcpy(image_.pixel(x0 + sx, y0 + sy + 1), out + simd::kStampWidth, kRowBytes);
+          continue;
         }
+        for (int y = sy; y < std::min(sy + simd::kStampHeight, height); ++y)
+          for (int x = sx; x < std::min(sx + simd::kStampWidth, width); ++x)
+            std::memcpy(image_.pixel(x0 + x, y0 + y), &out[(y - sy) * simd::kStampWidth + (x - sx)], 4);
       }
     }
   }

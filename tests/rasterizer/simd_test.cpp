@@ -61,6 +61,17 @@ TEST(Simd, Int4LaneBroadcastAndSignBits) {
   }
 }
 
+TEST(Simd, RowMajorOrderIsThePixelsRowByRow) {
+  std::mt19937 rng(5);
+  for (int round = 0; round < 10; ++round) {
+    int32_t v[kLanes], got[kLanes];
+    for (int l = 0; l < kLanes; ++l) v[l] = static_cast<int32_t>(rng());
+    simd::to_row_major(load(v)).store_unaligned(got);
+    for (int l = 0; l < kLanes; ++l)  // lane l's pixel is at row lane_y(l), column lane_x(l)
+      ASSERT_EQ(got[simd::lane_y(l) * simd::kStampWidth + simd::lane_x(l)], v[l]) << "lane " << l;
+  }
+}
+
 TEST(Simd, DoubleHalvesAreExactAndRoundBack) {
   std::mt19937 rng(4);
   constexpr int kHalf = static_cast<int>(Double::size);

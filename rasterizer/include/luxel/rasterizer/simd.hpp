@@ -83,6 +83,14 @@ template <int Corner, std::size_t... I>
 inline Float quad_broadcast(const Float& v, std::index_sequence<I...>) {
   return xsimd::swizzle(v, xsimd::batch_constant<UInt, static_cast<uint32_t>((I / 4) * 4 + Corner)...>());
 }
+/// The lane at row-major position i of a stamp (x = i % kStampWidth, y = i / kStampWidth).
+constexpr uint32_t row_major_lane(std::size_t i, std::size_t width) {
+  return static_cast<uint32_t>(4 * ((i % width) / 2) + (i % width) % 2 + 2 * (i / width));
+}
+template <std::size_t... I>
+inline Float row_major(const Float& v, std::index_sequence<I...>) {
+  return xsimd::swizzle(v, xsimd::batch_constant<UInt, row_major_lane(I, kLanes / 2)...>());
+}
 }  // namespace detail
 
 /// A batch whose lane l is fn(l).
@@ -95,6 +103,12 @@ inline Batch lanes(Fn fn) {
 template <int Corner>
 inline Float quad_corner(const Float& v) {
   return detail::quad_broadcast<Corner>(v, std::make_index_sequence<kLanes>());
+}
+
+/// v's lanes in the stamp's row-major pixel order: the top row left to right, then the bottom
+/// row (a stamp's pixels as an image stores them).
+inline Int to_row_major(const Int& v) {
+  return xsimd::bitwise_cast<Int>(detail::row_major(xsimd::bitwise_cast<Float>(v), std::make_index_sequence<kLanes>()));
 }
 
 /// Coarse derivatives (one value per quad, as DX9 hardware computes them): d/dx is the top row's
