@@ -13,7 +13,9 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cstdlib>
 #include <cstring>
+#include <fstream>
 #include <functional>
 #include <random>
 
@@ -23,15 +25,20 @@ namespace {
 /// What a scene produced: bytes to compare, and a name for messages.
 struct Output {
   std::vector<uint8_t> bytes;
+  std::vector<uint8_t> samples;  ///< the same without the stats, which depend on the stamp size (ISA)
   void add(const void* p, size_t n) {
     const auto* b = static_cast<const uint8_t*>(p);
     bytes.insert(bytes.end(), b, b + n);
+    samples.insert(samples.end(), b, b + n);
   }
   template <class T>
   void add(const std::vector<T>& v) {
     add(v.data(), v.size() * sizeof(T));
   }
-  void add_stats(const DrawStats& s) { add(&s, sizeof(s)); }
+  void add_stats(const DrawStats& s) {
+    const auto* b = reinterpret_cast<const uint8_t*>(&s);
+    bytes.insert(bytes.end(), b, b + sizeof(s));
+  }
 };
 
 using SceneFn = std::function<void(Context&, Output&)>;
@@ -330,6 +337,15 @@ void check_thread_counts(const char* name, const SceneFn& scene) {
     scene(ctx, reference);
   }
   ASSERT_FALSE(reference.bytes.empty());
+  // LUXEL_DUMP_DIR=dir writes each scene's bytes but the stats to dir/<name>.bin: builds for
+  // different ISAs (x86-64-v3, native, x86-64-v2) can then be compared byte by byte
+  // (CMakeLists.txt: within 1 LSB), which one build alone cannot check.
+  if (const char* dir = std::getenv("LUXEL_DUMP_DIR")) {
+    std::string file = std::string(dir) + "/" + name + ".bin";
+    std::replace(file.begin() + std::ptrdiff_t(std::strlen(dir)), file.end(), ' ', '_');
+    std::ofstream(file, std::ios::binary).write(reinterpret_cast<const char*>(reference.samples.data()),
+                                                 std::streamsize(reference.samples.size()));
+  }
   for (int threads : {2, 3, 8}) {
     Context ctx(threads);
     ASSERT_EQ(ctx.thread_count(), threads);
