@@ -504,18 +504,20 @@ unsigned outcode(const DrawConstants& dc, const glm::vec4& p) {
 }
 
 /// Sets up and bins the fan of an n-gon (n - 2 triangles from its first vertex, which keeps the
-/// winding); each vertex is a position followed by varyings.
+/// winding); each vertex is a position followed by varyings. The fan of a fully clipped polygon
+/// fits one set of 8 or 16 lanes; 4-lane targets (x86-64-v2) take it in two, in order.
 void setup_fan(const DrawConstants& dc, const float* const* polygon, int n, ChunkBins& bins, DrawStats& stats) {
-  static_assert(kMaxClipVertices - 2 <= simd::kLanes, "a clipped polygon's fan fits one set of lanes");
-  TriangleLanes tri;
-  const int count = n - 2;
-  for (int l = 0; l < count; ++l) {
-    tri.data[0][l] = polygon[0];
-    tri.data[1][l] = polygon[l + 1];
-    tri.data[2][l] = polygon[l + 2];
+  for (int first = 0; first < n - 2; first += simd::kLanes) {
+    TriangleLanes tri;
+    const int count = std::min(n - 2 - first, simd::kLanes);
+    for (int l = 0; l < count; ++l) {
+      tri.data[0][l] = polygon[0];
+      tri.data[1][l] = polygon[first + l + 1];
+      tri.data[2][l] = polygon[first + l + 2];
+    }
+    tri.snap(dc, count);
+    setup_and_bin(dc, tri, count, tri.snappable, bins, stats, [&](int) { ++stats.degenerate; });
   }
-  tri.snap(dc, count);
-  setup_and_bin(dc, tri, count, tri.snappable, bins, stats, [&](int) { ++stats.degenerate; });
 }
 
 /// The path of a triangle not wholly inside the view volume, or with a vertex that would not

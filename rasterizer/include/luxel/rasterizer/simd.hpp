@@ -142,8 +142,10 @@ inline LaneBits to_bits(const xsimd::batch_bool<T, Arch>& m) {
 using Int4 = xsimd::make_sized_batch_t<int32_t, 4>;
 static_assert(!std::is_void_v<Int4>, "the target has 4-lane integer vectors");
 
-/// Lane bits of the negative lanes of v.
-inline LaneBits sign_bits(const Int4& v) {
+/// Lane bits of the negative lanes of v. (A template only so that it can step aside where Int4
+/// is Int, 4-lane targets: sign_bits(const Int&) below then serves both.)
+template <class V, std::enable_if_t<std::is_same_v<V, Int4> && !std::is_same_v<Int4, Int>, int> = 0>
+inline LaneBits sign_bits(const V& v) {
 #if defined(__SSE2__)
   return static_cast<LaneBits>(_mm_movemask_ps(_mm_castsi128_ps(v)));
 #else
@@ -206,7 +208,8 @@ inline Float select(const Int& mask, const Float& a, const Float& b) {
 #elif defined(__AVX2__)
   return Float(_mm256_blendv_ps(b, a, _mm256_castsi256_ps(mask)));
 #else
-  return xsimd::select(mask != Int(0), a, b);
+  // xsimd selects floats by a float mask: the integer lanes go through as bits.
+  return xsimd::bitwise_cast<Float>(xsimd::select(mask != Int(0), xsimd::bitwise_cast<Int>(a), xsimd::bitwise_cast<Int>(b)));
 #endif
 }
 inline Int select(const Int& mask, const Int& a, const Int& b) {

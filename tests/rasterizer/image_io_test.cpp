@@ -1,0 +1,167 @@
+// write_image / read_image (image.hpp, through OpenImageIO): exact round trips of RGBA8 images
+// through PNG, TIFF and OpenEXR, the channel rules for files with fewer channels (written here
+// by hand, not by the code under test), and failures that name the file.
+
+#include "luxel/rasterizer/image.hpp"
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <random>
+#include <stdexcept>
+#include <string>
+#include <unistd.h>
+
+namespace luxel::rasterizer::test {
+namespace {
+
+namespace fs = std::filesystem;
+
+/// A fresh directory under the system's temporary directory, removed with everything in it.
+class TempDir {
+ public:
+  TempDir() {
+    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
+    path_ = fs::temp_directory_path() /
+            ("luxel-" + std::string(info->name()) + "-" + std::to_string(::getpid()));
+    fs::remove_all(path_);
+    fs::create_directories(path_);
+  }
+  ~TempDir() {
+    std::error_code ec;
+    fs::remove_all(path_, ec);
+  }
+  std::string file(const std::string& name) const { return (path_ / name).string(); }
+
+ private:
+  fs::path path_;
+};
+
+/// Every byte value in every channel, alpha included (0 and partial alpha catch a writer or
+/// reader that premultiplies), in an odd size (no row padding hides an off-by-one).
+Image test_image() {
+  Image img(37, 29);
+  std::mt19937 rng(2718);
+  for (size_t i = 0; i < img.rgba.size(); ++i) img.rgba[i] = uint8_t(i < 1024 ? i / 4 : rng());
+  // Pixels 0..255: (v, v, v, v) for every v, so a channel mixed into another shows.
+  for (int v = 0; v < 256; ++v) {
+    uint8_t* p = img.rgba.data() + 4 * v;
+    p[0] = uint8_t(v), p[1] = uint8_t(255 - v), p[2] = uint8_t(v ^ 0x5a), p[3] = uint8_t(v);
+  }
+  return img;
+}
+
+int count_differences(const Image& a, const Image& b, std::string& first) {
+  if (a.width != b.width || a.height != b.height) {
+    first = "size " + std::to_string(b.width) + "x" + std::to_string(b.height);
+    return 1;
+  }
+  int bad = 0;
+  for (size_t i = 0; i < a.rgba.size(); ++i)
+    if (a.rgba[i] != b.rgba[i] && bad++ == 0)
+      first = "pixel " + std::to_string(i / 4 % a.width) + ", " + std::to_string(i / 4 / a.width) + " channel " +
+              std::to_string(i % 4) + ": wrote " + std::to_string(a.rgba[i]) + ", read " + std::to_string(b.rgba[i]);
+  return bad;
+}
+
+void expect_round_trip(const std::string& extension) {
+  TempDir dir;
+  const Image img = test_image();
+  const std::string path = dir.file("round-trip." + extension);
+  write_image(img, path);
+  ASSERT_TRUE(fs::exists(path));
+  const Image back = read_image(path);
+  std::string first;
+  EXPECT_EQ(count_differences(img, back, first), 0) << extension << ": first difference " << first;
+}
+
+TEST(ImageIo, PngRoundTripIsExact) { expect_round_trip("png"); }
+TEST(ImageIo, TiffRoundTripIsExact) { expect_round_trip("tif"); }
+// OpenEXR stores half or float channels: 8-bit values survive when written as v / 255 and read
+// back rounded (a half has 11 significant bits: 255 * 2^-12 < 0.5).
+TEST(ImageIo, ExrRoundTripIsExact) { expect_round_trip("exr"); }
+
+// image.hpp: "missing channels: alpha 255, grey replicated". Binary PGM (grey) and PPM (RGB)
+// files, written byte by byte here.
+TEST(ImageIo, ReadingFewerChannelsFillsThemIn) {
+  TempDir dir;
+  const int w = 5, h = 3;
+  std::string grey, rgb;
+  for (int i = 0; i < w * h; ++i) {
+    grey += char(uint8_t(17 * i));
+    rgb += char(uint8_t(i)), rgb += char(uint8_t(100 + i)), rgb += char(uint8_t(200 + i));
+  }
+  const std::string pgm = dir.file("grey.pgm"), ppm = dir.file("rgb.ppm");
+  std::ofstream(pgm, std::ios::binary) << "P5\n" << w << " " << h << "\n255\n" << grey;
+  std::ofstream(ppm, std::ios::binary) << "P6\n" << w << " " << h << "\n255\n" << rgb;
+  const Image g = read_image(pgm), c = read_image(ppm);
+  ASSERT_EQ(g.width, w);
+  ASSERT_EQ(g.height, h);
+  ASSERT_EQ(c.width, w);
+  ASSERT_EQ(c.height, h);
+  for (int i = 0; i < w * h; ++i) {
+    const uint8_t* p = g.rgba.data() + 4 * i;
+    EXPECT_EQ(p[0], 17 * i);
+    EXPECT_EQ(p[1], 17 * i);
+    EXPECT_EQ(p[2], 17 * i);
+    EXPECT_EQ(p[3], 255);
+    const uint8_t* q = c.rgba.data() + 4 * i;
+    EXPECT_EQ(q[0], i);
+    EXPECT_EQ(q[1], 100 + i);
+    EXPECT_EQ(q[2], 200 + i);
+    EXPECT_EQ(q[3], 255);
+  }
+}
+
+/// Runs fn, expecting a std::runtime_error whose message names `path`.
+template <class Fn>
+void expect_error_naming(const std::string& path, Fn fn) {
+  try {
+    fn();
+    ADD_FAILURE() << path << ": no exception";
+  } catch (const std::runtime_error& e) {
+    EXPECT_NE(std::string(e.what()).find(path), std::string::npos) << "message: " << e.what();
+  }
+}
+
+TEST(ImageIo, WriteFailuresNameTheFile) {
+  TempDir dir;
+  const Image img = test_image();
+  for (const char* ext : {"png", "tif", "exr"}) {
+    const std::string missing_dir = dir.file(std::string("no/such/dir/out.") + ext);
+    expect_error_naming(missing_dir, [&] { write_image(img, missing_dir); });
+    EXPECT_FALSE(fs::exists(missing_dir));
+  }
+  const std::string unknown = dir.file("out.not-an-image-format");
+  expect_error_naming(unknown, [&] { write_image(img, unknown); });
+  const std::string empty = dir.file("empty.png");
+  expect_error_naming(empty, [&] { write_image(Image{}, empty); });
+  // A directory where the file should be.
+  const std::string is_dir = dir.file("dir.png");
+  fs::create_directories(is_dir);
+  expect_error_naming(is_dir, [&] { write_image(img, is_dir); });
+}
+
+TEST(ImageIo, ReadFailuresNameTheFile) {
+  TempDir dir;
+  const std::string missing = dir.file("missing.png");
+  expect_error_naming(missing, [&] { read_image(missing); });
+  // Not an image at all, under each extension.
+  for (const char* ext : {"png", "tif", "exr"}) {
+    const std::string garbage = dir.file(std::string("garbage.") + ext);
+    std::ofstream(garbage, std::ios::binary) << "this is not an image file, just text of some length\n";
+    expect_error_naming(garbage, [&] { read_image(garbage); });
+  }
+  // A real file cut short: the header parses, the pixels are missing.
+  for (const char* ext : {"png", "tif", "exr"}) {
+    const std::string whole = dir.file(std::string("whole.") + ext), cut = dir.file(std::string("cut.") + ext);
+    write_image(test_image(), whole);
+    fs::copy_file(whole, cut);
+    fs::resize_file(cut, fs::file_size(whole) / 2);
+    expect_error_naming(cut, [&] { read_image(cut); });
+  }
+}
+
+}  // namespace
+}  // namespace luxel::rasterizer::test
