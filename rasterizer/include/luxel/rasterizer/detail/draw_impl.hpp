@@ -90,7 +90,9 @@ class TileRasterizer {
       sample_X_[s] = lanes_.x_sub + Int(sample_x_[s]);
       sample_Y_[s] = lanes_.y_sub + Int(sample_y_[s]);
       sample_XY_[s] = sample_X_[s] | (sample_Y_[s] << 16);
-      sample_dx_[s] = simd::lanes([&](int l) { return simd::lane_x(l) + sample_x_[s] / 256.0f; });
+      for (int phase = 0; phase < kDepthPhases; ++phase)
+        sample_dx_[phase][s] =
+            simd::lanes([&](int l) { return phase * simd::kStampWidth + simd::lane_x(l) + sample_x_[s] / 256.0f; });
       sample_dy_[s] = simd::lanes([&](int l) { return simd::lane_y(l) + sample_y_[s] / 256.0f; });
     }
     simple_depth_ = depth_ && !plan.stencil;
@@ -144,19 +146,31 @@ class TileRasterizer {
     return simd::mask_of(x >= Int(clip_x0_)) & simd::mask_of(x < Int(clip_x1_)) & simd::mask_of(y >= Int(clip_y0_)) &
            simd::mask_of(y < Int(clip_y1_));
   }
-  /// The triangle's depth at sample s of the stamp whose corner is `corner_z` away in depth from
-  /// the triangle's reference vertex (see corner_depth), clamped to the viewport's depth range.
+  /// Depth is the plane at the corner of the stamp's depth block (kDepthBlockWidth x 2 pixels)
+  /// plus each sample's offset from that corner: the same two terms, rounded the same way, for
+  /// any stamp width, so that depth does not depend on the lane count (ISA) a build has.
+  static constexpr int kDepthBlockWidth = 8;
+  static constexpr int kDepthPhases = kDepthBlockWidth / simd::kStampWidth;  ///< stamps per block
+  static_assert(kDepthPhases >= 1 && kDepthBlockWidth % simd::kStampWidth == 0);
+  struct StampDepth {
+    float corner;  ///< the plane at the block's corner, relative to the reference vertex
+    int phase;     ///< which stamp of its block
+  };
+  /// The triangle's depth at sample s of a stamp (see StampDepth, stamp_depth), clamped to the
+  /// viewport's depth range.
   /// Early and late depth tests take it from here alike, so that a pass with depth func Equal
   /// over the same triangles passes whichever test its shader allows.
-  LUXEL_INLINE Float sample_depth(int s, float corner_z, const Float& min_depth, const Float& max_depth) const {
-    return clamp_depth(sample_z_[s] + Float(corner_z), min_depth, max_depth);
+  LUXEL_INLINE Float sample_depth(int s, StampDepth d, const Float& min_depth, const Float& max_depth) const {
+    return clamp_depth(sample_z_[d.phase][s] + Float(d.corner), min_depth, max_depth);
   }
   /// A depth clamped to the viewport's depth range, as every depth test sees it.
   static Float clamp_depth(const Float& z, const Float& min_depth, const Float& max_depth) {
     return xsimd::min(xsimd::max(z, min_depth), max_depth);
   }
-  static float corner_depth(const TriangleSetup& t, int px, int py) {
-    return std::fma(t.z.dqdx, float(px) - t.ref_x, t.z.dqdy * (float(py) - t.ref_y));
+  static StampDepth stamp_depth(const TriangleSetup& t, int px, int py) {
+    const int block_x = px & ~(kDepthBlockWidth - 1);
+    return {std::fma(t.z.dqdx, float(block_x) - t.ref_x, t.z.dqdy * (float(py) - t.ref_y)),
+            (px - block_x) / simd::kStampWidth};
   }
   /// The pixel functor's interpolants at the pixel centers (cx, cy relative to vertex 0),
   /// perspective-correct.
@@ -169,12 +183,12 @@ class TileRasterizer {
   /// Shades and writes the stamp at (px, py), index `stamp`. Coverage is carried as one mask per
   /// sample: all-ones lanes are covered.
   LUXEL_INLINE void shade_stamp(const TriangleSetup& t, int px, int py, int stamp, Int* coverage);
-  Int depth_stencil_test(const TriangleSetup& t, float corner_z, int stamp, int s, const Int& coverage,
+  Int depth_stencil_test(const TriangleSetup& t, StampDepth stamp_z, int stamp, int s, const Int& coverage,
                          const Float* shader_depth);
   /// Blending and write masks (plain writes are shade_stamp's).
   void write_color(int stamp, int s, const Int& coverage, const simd::Float4& color, const Int& packed);
   template <CompareFunc kFunc>
-  LUXEL_INLINE Int early_depth(float corner_z, int stamp, Int* coverage);
+  LUXEL_INLINE Int early_depth(StampDepth stamp_z, int stamp, Int* coverage);
 
   const DrawPlan& plan_;
   const PS& ps_;
@@ -204,8 +218,11 @@ class TileRasterizer {
   int sample_x_[S], sample_y_[S];
   Int sample_X_[S], sample_Y_[S];      ///< subpixels from the stamp's corner to each lane's sample
   Int sample_XY_[S];                   ///< the same, X in the low 16 bits and Y in the high (dot_halves)
-  Float sample_dx_[S], sample_dy_[S];  ///< the same in pixels
-  Float sample_z_[S];  ///< the current triangle's depth at each sample of a stamp with its corner on vertex 0
+  Float sample_dx_[kDepthPhases][S];  ///< the same in pixels, from the corner of the stamp's depth block
+  Float sample_dy_[S];
+  /// The current triangle's depth at each sample of each stamp of a depth block whose corner is
+  /// on the reference vertex.
+  Float sample_z_[kDepthPhases][S];
 };
 
 template <class PS, int N, DepthPath kPath, int S>
@@ -216,7 +233,9 @@ void TileRasterizer<PS, N, kPath, S>::triangle(const TriangleSetup& t) {
   if (x0 >= x1 || y0 >= y1) return;
   if (depth_test_) {
     const Float z0(t.z.q0), dzdx(t.z.dqdx), dzdy(t.z.dqdy);
-    for (int s = 0; s < S; ++s) sample_z_[s] = xsimd::fma(dzdx, sample_dx_[s], xsimd::fma(dzdy, sample_dy_[s], z0));
+    for (int phase = 0; phase < kDepthPhases; ++phase)
+      for (int s = 0; s < S; ++s)
+        sample_z_[phase][s] = xsimd::fma(dzdx, sample_dx_[phase][s], xsimd::fma(dzdy, sample_dy_[s], z0));
   }
   const int sx0 = x0 & ~(simd::kStampWidth - 1), sy0 = y0 & ~(simd::kStampHeight - 1);
   if (t.small()) {
@@ -426,7 +445,7 @@ bool TileRasterizer<PS, N, kPath, S>::wide_coverage(const TriangleSetup& t, int 
 }
 
 template <class PS, int N, DepthPath kPath, int S>
-Int TileRasterizer<PS, N, kPath, S>::depth_stencil_test(const TriangleSetup& t, float corner_z, int stamp, int s,
+Int TileRasterizer<PS, N, kPath, S>::depth_stencil_test(const TriangleSetup& t, StampDepth stamp_z, int stamp, int s,
                                                          const Int& coverage, const Float* shader_depth) {
   float* depth = depth_ + s * kTilePixels + stamp * simd::kLanes;
   const Float dst_depth = Float::load_aligned(depth);
@@ -434,7 +453,7 @@ Int TileRasterizer<PS, N, kPath, S>::depth_stencil_test(const TriangleSetup& t, 
   Float z;
   if (depth_test_) {
     const Float min_depth(min_depth_), max_depth(max_depth_);
-    z = shader_depth ? clamp_depth(*shader_depth, min_depth, max_depth) : sample_depth(s, corner_z, min_depth, max_depth);
+    z = shader_depth ? clamp_depth(*shader_depth, min_depth, max_depth) : sample_depth(s, stamp_z, min_depth, max_depth);
     depth_pass &= simd::mask_of(compare(depth_func_, z, dst_depth));
   }
   Int pass = depth_pass;
@@ -462,7 +481,7 @@ Int TileRasterizer<PS, N, kPath, S>::depth_stencil_test(const TriangleSetup& t, 
 
 template <class PS, int N, DepthPath kPath, int S>
 template <CompareFunc kFunc>
-Int TileRasterizer<PS, N, kPath, S>::early_depth(float corner_z, int stamp, Int* coverage) {
+Int TileRasterizer<PS, N, kPath, S>::early_depth(StampDepth stamp_z, int stamp, Int* coverage) {
   // The common case, kept tight: depth test without stencil, compare function fixed.
   // Members copied before the first store: a float store could alias them, so the compiler
   // would otherwise load them again for every sample.
@@ -472,7 +491,7 @@ Int TileRasterizer<PS, N, kPath, S>::early_depth(float corner_z, int stamp, Int*
   Int live(0);
   for (int s = 0; s < S; ++s, depth += kTilePixels) {
     const Float d = Float::load_aligned(depth);
-    const Float z = sample_depth(s, corner_z, min_depth, max_depth);
+    const Float z = sample_depth(s, stamp_z, min_depth, max_depth);
     const Int pass = coverage[s] & simd::mask_of(compare(kFunc, z, d));
     if (depth_write) simd::select(pass, z, d).store_aligned(depth);
     coverage[s] = pass;
@@ -530,27 +549,27 @@ void TileRasterizer<PS, N, kPath, S>::shade_stamp(const TriangleSetup& t, int px
                                                    Int* coverage) {
   // The fixed paths test depth by construction: no flag to read.
   constexpr bool kFixedDepthPath = kPath == DepthPath::EarlyLess || kPath == DepthPath::EarlyLessEqual;
-  const float corner_z = kFixedDepthPath || depth_test_ ? corner_depth(t, px, py) : 0.0f;
+  const StampDepth stamp_z = kFixedDepthPath || depth_test_ ? stamp_depth(t, px, py) : StampDepth{0.0f, 0};
   Int live(0);
   if constexpr (kFixedDepthPath) {
     constexpr CompareFunc kFunc = kPath == DepthPath::EarlyLess ? CompareFunc::Less : CompareFunc::LessEqual;
-    live = early_depth<kFunc>(corner_z, stamp, coverage);
+    live = early_depth<kFunc>(stamp_z, stamp, coverage);
     if ((!kTrivialPixelFunctor<PS> || !trivial_) && !simd::sign_bits(live)) return;  // kTrivial: see draw.hpp
   } else if constexpr (kPath == DepthPath::Early) {
     if (kTrivialPixelFunctor<PS> && simple_depth_ && depth_test_ && fixed_depth_) {
       switch (depth_func_) {  // Less and LessEqual have their own paths
-        case CompareFunc::Greater: live = early_depth<CompareFunc::Greater>(corner_z, stamp, coverage); break;
-        case CompareFunc::GreaterEqual: live = early_depth<CompareFunc::GreaterEqual>(corner_z, stamp, coverage); break;
+        case CompareFunc::Greater: live = early_depth<CompareFunc::Greater>(stamp_z, stamp, coverage); break;
+        case CompareFunc::GreaterEqual: live = early_depth<CompareFunc::GreaterEqual>(stamp_z, stamp, coverage); break;
         default:
           for (int s = 0; s < S; ++s) {
-            coverage[s] = depth_stencil_test(t, corner_z, stamp, s, coverage[s], nullptr);
+            coverage[s] = depth_stencil_test(t, stamp_z, stamp, s, coverage[s], nullptr);
             live |= coverage[s];
           }
       }
       if ((!kTrivialPixelFunctor<PS> || !trivial_) && !simd::sign_bits(live)) return;  // kTrivial: see draw.hpp
     } else if (depth_) {
       for (int s = 0; s < S; ++s) {
-        coverage[s] = depth_stencil_test(t, corner_z, stamp, s, coverage[s], nullptr);
+        coverage[s] = depth_stencil_test(t, stamp_z, stamp, s, coverage[s], nullptr);
         live |= coverage[s];
       }
       if (!simd::sign_bits(live)) return;
@@ -586,7 +605,7 @@ void TileRasterizer<PS, N, kPath, S>::shade_stamp(const TriangleSetup& t, int px
     for (int s = 0; s < S; ++s) {
       coverage[s] &= keep;
       if (depth_ && simd::sign_bits(coverage[s]))
-        coverage[s] = depth_stencil_test(t, corner_z, stamp, s, coverage[s], PS::kWritesDepth ? &out.depth : nullptr);
+        coverage[s] = depth_stencil_test(t, stamp_z, stamp, s, coverage[s], PS::kWritesDepth ? &out.depth : nullptr);
       live |= coverage[s];
     }
     if (!simd::sign_bits(live)) return;
