@@ -135,8 +135,9 @@ struct DrawStats {
 
 /// Draws into `fb` with `state`: runs the vertex functor and bins the triangles now, and records
 /// the rest for the context's next flush (see Context). Throws std::invalid_argument when the
-/// framebuffer's targets disagree in size or sample count. The samples that pass count into the
-/// context's active occlusion query, if any; the counters go to Context::stats().
+/// framebuffer's targets disagree in size or sample count, or the viewport is invalid (see
+/// Viewport). The samples that pass count into the context's active occlusion query, if any; the
+/// counters go to Context::stats().
 template <VertexFunctor VS, PixelFunctor<VS::kVaryings> PS>
 void draw(Context& ctx, const Framebuffer& fb, const PipelineState& state, const Geometry& geometry,
                const VS& vertex_shader, const PS& pixel_shader);
