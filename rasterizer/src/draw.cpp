@@ -15,6 +15,7 @@ DrawStats& DrawStats::operator+=(const DrawStats& o) {
   non_finite += o.non_finite;
   outside += o.outside;
   clipped += o.clipped;
+  clip_overflow += o.clip_overflow;
   culled += o.culled;
   degenerate += o.degenerate;
   rasterized += o.rasterized;

@@ -120,6 +120,7 @@ struct DrawStats {
   uint64_t non_finite = 0;         ///< dropped: NaN/Inf position
   uint64_t outside = 0;            ///< trivially rejected against the view volume
   uint64_t clipped = 0;            ///< went through the clipper
+  uint64_t clip_overflow = 0;      ///< of those, dropped: rounding made more pieces than the clipper holds
   uint64_t culled = 0;             ///< back-face (cull mode) culled
   uint64_t degenerate = 0;         ///< zero area after snapping, or nothing inside the scissor
   uint64_t rasterized = 0;         ///< set up and binned (clipped pieces count one each)
