@@ -308,6 +308,106 @@ TEST(Clipper, AdversarialTrianglesAtTheGuardBandCorners) {
   RecordProperty("clip_overflow", std::to_string(s.clip_overflow));
 }
 
+// context.hpp, "The deferred frame": destroying a target or query that a pending frame refers to
+// flushes that frame first. The doomed objects live on the heap, so that ASan reports any command
+// that still reads or writes them after they are gone.
+TEST(DeferredFrame, DestroyingATargetFlushesItsPendingFrameFirst) {
+  Context ctx(2);
+  PipelineState st;
+  st.rasterizer.cull = CullMode::None;
+  ColorTarget kept(64, 48, 4);
+  auto depth = std::make_unique<DepthStencilTarget>(64, 48, 4);
+  clear_color(ctx, kept, glm::vec4(1, 0, 0, 1));
+  clear_depth_stencil(ctx, *depth, 1.0f, 0);
+  ctx.reset_stats();
+  draw(ctx, Framebuffer{&kept, depth.get()}, st, Geometry::non_indexed(3), PositionVS{kFull},
+       ConstantPS{glm::vec4(0, 1, 0, 1)});
+  depth.reset();
+  // The draw ran before the depth target went: its effect on the color target is there (read
+  // without a flush) and its counters are complete.
+  EXPECT_EQ(ctx.stats().rasterized, 1u);
+  int green = 0;
+  for (int y = 0; y < 48; ++y)
+    for (int x = 0; x < 64; ++x)
+      for (int s = 0; s < 4; ++s) green += kept.sample(x, y, s) == rgba8(0, 255, 0, 255);
+  EXPECT_EQ(green, 64 * 48 * 4);
+
+  // A color target with a pending clear and draw, destroyed; then the context goes on.
+  auto doomed = std::make_unique<ColorTarget>(64, 48, 4);
+  clear_color(ctx, *doomed, glm::vec4(0, 0, 1, 1));
+  draw(ctx, Framebuffer{doomed.get(), nullptr}, st, Geometry::non_indexed(3), PositionVS{kFull}, ConstantPS{});
+  clear_color(ctx, kept, glm::vec4(0, 0, 1, 1));  // pending too: flushed with the doomed target's frame
+  doomed.reset();
+  EXPECT_EQ(kept.sample(63, 47, 3), rgba8(0, 0, 255, 255));
+  draw(ctx, Framebuffer{&kept, nullptr}, st, Geometry::non_indexed(3), PositionVS{kFull}, ConstantPS{});
+  EXPECT_EQ(resolve(ctx, kept).pixel(10, 10)[0], 255);
+
+  // Moving a target with pending work runs it first: the moved-to target holds the result.
+  ColorTarget source(64, 48, 4);
+  clear_color(ctx, source, glm::vec4(0, 1, 1, 1));
+  ColorTarget moved = std::move(source);
+  EXPECT_EQ(moved.sample(5, 5, 0), rgba8(0, 255, 255, 255));
+  clear_color(ctx, moved, glm::vec4(1, 1, 0, 1));
+  moved = ColorTarget(64, 48, 4);  // assigning over a pending target runs its frame, then replaces it
+  EXPECT_EQ(resolve(ctx, moved).pixel(5, 5)[0], 0);
+}
+
+TEST(DeferredFrame, DestroyingAQueryFlushesAndEndsIt) {
+  Context ctx(2);
+  PipelineState st;
+  st.rasterizer.cull = CullMode::None;
+  ColorTarget target(32, 32, 2);
+  clear_color(ctx, target, glm::vec4(0.0f));
+  // Pending, ended.
+  auto query = std::make_unique<OcclusionQuery>();
+  ctx.begin_query(*query);
+  draw(ctx, Framebuffer{&target, nullptr}, st, Geometry::non_indexed(3), PositionVS{kFull}, ConstantPS{});
+  ctx.end_query();
+  query.reset();
+  EXPECT_EQ(target.sample(31, 31, 1), rgba8(255, 255, 255, 255));
+  // Pending and still active: destroying it ends it, later draws count into nothing.
+  query = std::make_unique<OcclusionQuery>();
+  ctx.begin_query(*query);
+  draw(ctx, Framebuffer{&target, nullptr}, st, Geometry::non_indexed(3), PositionVS{kFull}, ConstantPS{});
+  query.reset();
+  EXPECT_EQ(ctx.active_query(), nullptr);
+  draw(ctx, Framebuffer{&target, nullptr}, st, Geometry::non_indexed(3), PositionVS{kFull}, ConstantPS{});
+  ctx.flush();
+  // Active but nothing pending: the context's destructor must not touch it afterwards.
+  OcclusionQuery survivor;
+  {
+    Context other(1);
+    other.begin_query(survivor);
+  }
+  OcclusionQuery copy = survivor;
+  (void)copy;
+  // A query counting in one context and begun in another ends in the first.
+  OcclusionQuery shared;
+  ctx.begin_query(shared);
+  draw(ctx, Framebuffer{&target, nullptr}, st, Geometry::non_indexed(3), PositionVS{kFull}, ConstantPS{});
+  Context other(1);
+  other.begin_query(shared);
+  EXPECT_EQ(ctx.active_query(), nullptr);
+  EXPECT_EQ(other.active_query(), &shared);
+  other.end_query();
+  EXPECT_EQ(other.query_result(shared), 0u);
+}
+
+// Recording a target in a second context runs the first context's pending frame on it first, so
+// the frames apply in the order they were recorded.
+TEST(DeferredFrame, ATargetIsPendingInOneContextAtATime) {
+  Context first(1), second(2);
+  PipelineState st;
+  st.rasterizer.cull = CullMode::None;
+  ColorTarget target(64, 64, 1);
+  clear_color(first, target, glm::vec4(1, 0, 0, 1));
+  draw(second, Framebuffer{&target, nullptr}, st, Geometry::non_indexed(3), PositionVS{kFull},
+       ConstantPS{glm::vec4(0, 1, 0, 1)});
+  first.flush();  // nothing left: the clear ran before the draw was recorded
+  EXPECT_EQ(resolve(second, target).pixel(7, 7)[1], 255);
+  EXPECT_EQ(resolve(first, target).pixel(7, 7)[0], 0);
+}
+
 // A frame that alternates between targets of different tilings flushes by itself in between.
 TEST(Robustness, InterleavedTargetsOfDifferentLayouts) {
   Context ctx(2);
