@@ -72,6 +72,7 @@ Runner add_render_command(CLI::App& app) {
     if (options->stats) {
       const rasterizer::DrawStats& s = scene->stats();
       std::cout << "triangles=" << s.triangles << " rasterized=" << s.rasterized << " clipped=" << s.clipped
+                << " clip_overflow=" << s.clip_overflow
                 << " culled=" << s.culled << " outside=" << s.outside << " degenerate=" << s.degenerate
                 << " small_walks=" << s.small_walks << " blocks_full=" << s.blocks_full
                 << " non_finite=" << s.non_finite << " bad_index=" << s.bad_index << " stamps_full=" << s.stamps_full

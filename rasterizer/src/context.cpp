@@ -2,6 +2,7 @@
 
 #include "luxel/rasterizer/detail/command_queue.hpp"
 #include "luxel/rasterizer/draw.hpp"
+#include "luxel/rasterizer/framebuffer.hpp"
 #include "luxel/rasterizer/simd.hpp"
 
 #include <xmmintrin.h>
@@ -29,7 +30,17 @@ Context::Context(const ContextOptions& options)
   for (int t = 1; t < threads; ++t) workers_.emplace_back([this, t] { worker_main(t); });
 }
 
+namespace detail {
+void PendingUse::flush() const {
+  if (context_) context_->flush();
+}
+void PendingUse::release() const {
+  if (context_) context_->release(*this);
+}
+}  // namespace detail
+
 Context::~Context() {
+  active_query_ = nullptr;  // so that flush() leaves nothing referring to this context
   flush();
   {
     std::lock_guard lock(mutex_);
@@ -39,9 +50,25 @@ Context::~Context() {
   for (auto& w : workers_) w.join();
 }
 
+void Context::refer(const detail::PendingUse& use) {
+  if (use.context_ == this) return;
+  if (use.context_) use.context_->release(use);
+  use.context_ = this;
+  pending_uses_.push_back(&use);
+}
+
+void Context::refer(const ColorTarget& target) { refer(target.pending_); }
+void Context::refer(const DepthStencilTarget& target) { refer(target.pending_); }
+
+void Context::release(const detail::PendingUse& use) {
+  if (active_query_ && &active_query_->use_ == &use) active_query_ = nullptr;
+  flush();
+}
+
 void Context::begin_query(OcclusionQuery& query) {
   const auto& pending = queue_->queries();
   if (std::find(pending.begin(), pending.end(), &query) != pending.end()) flush();
+  refer(query.use_);
   query.samples_ = 0;
   active_query_ = &query;
 }
@@ -56,6 +83,14 @@ uint64_t Context::query_result(const OcclusionQuery& query) {
 void Context::reset_stats() { *stats_ = {}; }
 
 void Context::flush() {
+  run_frame();
+  // Nothing pending refers to anything now; the active query stays referred to.
+  for (const detail::PendingUse* use : pending_uses_) use->context_ = nullptr;
+  pending_uses_.clear();
+  if (active_query_) refer(active_query_->use_);
+}
+
+void Context::run_frame() {
   detail::CommandQueue& q = *queue_;
   if (q.empty()) return;
   ++flush_count_;

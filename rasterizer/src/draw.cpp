@@ -15,6 +15,7 @@ DrawStats& DrawStats::operator+=(const DrawStats& o) {
   non_finite += o.non_finite;
   outside += o.outside;
   clipped += o.clipped;
+  clip_overflow += o.clip_overflow;
   culled += o.culled;
   degenerate += o.degenerate;
   rasterized += o.rasterized;
@@ -61,10 +62,15 @@ DrawPlan plan_draw(const Framebuffer& fb, const PipelineState& state, int varyin
 
   DrawConstants& dc = plan.constants;
   const Viewport& vp = state.viewport;
+  // Only an exact 0 stands for the target's size (state.hpp): a negative or NaN size is a bug in
+  // the caller, not a request for the whole target.
+  if (!(vp.width >= 0 && vp.width <= kMaxTargetSize) || !(vp.height >= 0 && vp.height <= kMaxTargetSize))
+    throw std::invalid_argument("draw: viewport width and height must be 0 (the target's) or in (0, " +
+                                std::to_string(kMaxTargetSize) + "]");
   const float vp_w = vp.width > 0 ? vp.width : static_cast<float>(plan.layout.width);
   const float vp_h = vp.height > 0 ? vp.height : static_cast<float>(plan.layout.height);
-  if (!std::isfinite(vp.x) || !std::isfinite(vp.y) || !(vp_w <= kMaxTargetSize) || !(vp_h <= kMaxTargetSize) ||
-      std::abs(vp.x) > kMaxTargetSize || std::abs(vp.y) > kMaxTargetSize)
+  if (!std::isfinite(vp.x) || !std::isfinite(vp.y) || std::abs(vp.x) > kMaxTargetSize ||
+      std::abs(vp.y) > kMaxTargetSize)
     throw std::invalid_argument("draw: viewport out of range");
   if (!(vp.min_depth >= 0 && vp.max_depth <= 1 && vp.min_depth <= vp.max_depth))
     throw std::invalid_argument("draw: viewport depth range must satisfy 0 <= min_depth <= max_depth <= 1");

@@ -143,13 +143,17 @@ class ResolveCommand final : public detail::Command {
 }  // namespace
 
 void clear_color(Context& ctx, ColorTarget& target, glm::vec4 color) {
-  queue_for(ctx, target.layout()).push(std::make_unique<ClearColorCommand>(target, pack_rgba8(color)));
+  detail::CommandQueue& queue = queue_for(ctx, target.layout());
+  ctx.refer(target);  // after queue_for, whose flush would forget it
+  queue.push(std::make_unique<ClearColorCommand>(target, pack_rgba8(color)));
 }
 
 namespace {
 void record_depth_clear(Context& ctx, DepthStencilTarget& target, float depth, std::optional<uint8_t> stencil) {
   const float d = std::clamp(std::isnan(depth) ? 0.0f : depth, 0.0f, 1.0f);
-  queue_for(ctx, target.layout()).push(std::make_unique<ClearDepthStencilCommand>(target, d, stencil));
+  detail::CommandQueue& queue = queue_for(ctx, target.layout());
+  ctx.refer(target);
+  queue.push(std::make_unique<ClearDepthStencilCommand>(target, d, stencil));
 }
 }  // namespace
 
@@ -163,7 +167,9 @@ void clear_depth(Context& ctx, DepthStencilTarget& target, float depth) {
 
 void resolve_into(Context& ctx, const ColorTarget& target, Image& image) {
   if (image.width != target.width() || image.height != target.height()) image = Image(target.width(), target.height());
-  queue_for(ctx, target.layout()).push(std::make_unique<ResolveCommand>(target, image));
+  detail::CommandQueue& queue = queue_for(ctx, target.layout());
+  ctx.refer(target);  // runs another context's pending frame on it first
+  queue.push(std::make_unique<ResolveCommand>(target, image));
   ctx.flush();
 }
 

@@ -562,8 +562,11 @@ Float4 sample_level_impl(const Texture& texture, const Sampler& s, const TexCoor
       raw = filter_level<Format, Kind>(ctx, level, magnified, p);
       const FloatMask blend = t > zero;
       if (xsimd::any(blend)) {
-        // t > 0 implies level < last, so level + 1 exists.
-        const Float4 coarser = filter_level<Format, Kind>(ctx, level + Int(1), magnified, p);
+        // The coarser level is fetched for every lane, blended or not: a lane on the last level
+        // (t = 0) reads the last level again, not the one after it, which does not exist (for a
+        // full chain of kMaxMipLevels not even as an entry of the level table).
+        const Int coarser_level = xsimd::min(level + Int(1), Int(texture.mip_levels() - 1));
+        const Float4 coarser = filter_level<Format, Kind>(ctx, coarser_level, magnified, p);
         raw = select(blend, lerp(raw, coarser, t), raw);
       }
       break;

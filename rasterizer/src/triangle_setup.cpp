@@ -46,14 +46,6 @@ namespace {
 static_assert(std::has_single_bit(unsigned(kTileSize)));
 constexpr int kTileShift = std::countr_zero(unsigned(kTileSize));
 
-constexpr int kMaxClipVertices = 3 + 6;  // each of the 6 clip planes adds at most one vertex
-constexpr int kFloatsPerVertex = 4 * (1 + kMaxVaryings);
-
-/// A vertex being clipped: position then varyings, all float4.
-struct ClipVertex {
-  float v[kFloatsPerVertex];
-};
-
 /// Clip planes: a vertex is inside when dot(plane, position) >= 0.
 struct ClipPlanes {
   glm::vec4 plane[6];
@@ -74,7 +66,8 @@ float plane_distance(const glm::vec4& plane, const float* p) {
   return plane.x * p[0] + plane.y * p[1] + plane.z * p[2] + plane.w * p[3];
 }
 
-/// Sutherland-Hodgman against one plane; returns the new vertex count.
+}  // namespace
+
 int clip_polygon(const glm::vec4& plane, const ClipVertex* in, int n, ClipVertex* out, int floats) {
   int m = 0;
   for (int i = 0; i < n; ++i) {
@@ -82,6 +75,8 @@ int clip_polygon(const glm::vec4& plane, const ClipVertex* in, int n, ClipVertex
     const ClipVertex& b = in[(i + 1) % n];
     const float da = plane_distance(plane, a.v);
     const float db = plane_distance(plane, b.v);
+    // Each input vertex emits itself if inside and a crossing if its edge changes side.
+    if (m + (da >= 0) + ((da >= 0) != (db >= 0)) > kMaxClipVertices) return -1;
     if (da >= 0) out[m++] = a;
     if ((da >= 0) != (db >= 0)) {
       // Interpolate from the inside vertex so that a shared edge clips to the same point from
@@ -97,6 +92,8 @@ int clip_polygon(const glm::vec4& plane, const ClipVertex* in, int n, ClipVertex
   }
   return m;
 }
+
+namespace {
 
 bool finite_position(const glm::vec4& p) {
   return std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z) && std::isfinite(p.w);
@@ -556,6 +553,10 @@ void clip_and_bin(const DrawConstants& dc, const glm::vec4* const vertices[3], C
     if (std::all_of(polygon, polygon + n, [&](const ClipVertex& c) { return plane_distance(planes.plane[i], c.v) >= 0; }))
       continue;
     n = clip_polygon(planes.plane[i], buffer[current], n, buffer[1 - current], floats);
+    if (n < 0) {
+      ++stats.clip_overflow;
+      return;
+    }
     current = 1 - current;
   }
   if (n < 3) return;

@@ -32,7 +32,8 @@ Frame render(std::string_view name, const FrameSettings& settings, int threads, 
 
 bool same_stats(const rasterizer::DrawStats& a, const rasterizer::DrawStats& b) {
   return a.triangles == b.triangles && a.bad_index == b.bad_index && a.non_finite == b.non_finite &&
-         a.outside == b.outside && a.clipped == b.clipped && a.culled == b.culled && a.degenerate == b.degenerate &&
+         a.outside == b.outside && a.clipped == b.clipped && a.clip_overflow == b.clip_overflow &&
+         a.culled == b.culled && a.degenerate == b.degenerate &&
          a.rasterized == b.rasterized && a.stamps_full == b.stamps_full && a.stamps_partial == b.stamps_partial &&
          a.stamps_wide_edges == b.stamps_wide_edges && a.stamps_shaded == b.stamps_shaded;
 }

@@ -4,6 +4,7 @@
 #include "coverage_support.hpp"
 #include "raster_support.hpp"
 
+#include "luxel/rasterizer/detail/triangle_setup.hpp"  // clip_polygon
 #include "luxel/rasterizer/limits.hpp"
 
 #include <gtest/gtest.h>
@@ -214,6 +215,196 @@ TEST(Robustness, GarbagePositionsNeverEscapeTheScissor) {
     EXPECT_EQ(escaped, 0) << "round " << round;
     EXPECT_EQ(ctx.stats().triangles, pos.size() / 3);
   }
+}
+
+// The clipper's bound (triangle_setup.hpp, kMaxClipVertices): a plane adds at most one vertex to
+// a convex polygon, but a polygon that rounding left non-convex can cross a plane many times. No
+// triangle found (by a random and a hill-climbing search over near-degenerate triangles at the
+// guard band's corners with w near 0) reaches more than kMaxClipVertices, so the bound is tested
+// on clip_polygon directly with the polygons such rounding would make: zigzags across the plane.
+TEST(Clipper, PolygonsBeyondTheBoundAreRefused) {
+  const glm::vec4 plane(1, 0, 0, 0);  // x >= 0
+  const int floats = 4 * (1 + kMaxVaryings);
+  auto zigzag = [](int n) {  // vertices alternately inside (x = 1) and outside (x = -1)
+    std::vector<detail::ClipVertex> p(n);
+    for (int i = 0; i < n; ++i) {
+      std::fill(std::begin(p[i].v), std::end(p[i].v), float(i));
+      p[i].v[0] = i % 2 ? -1.0f : 1.0f;
+      p[i].v[3] = 1.0f;
+    }
+    return p;
+  };
+  // On the heap with no slack: ASan sees a write past the last vertex.
+  std::vector<detail::ClipVertex> out(detail::kMaxClipVertices);
+  // n inside vertices and crossings: 6 -> 3 + 6 = 9 fits, 7 -> 4 + 6 = 10 and 8 -> 4 + 8 do not.
+  EXPECT_EQ(detail::clip_polygon(plane, zigzag(6).data(), 6, out.data(), floats), 9);
+  EXPECT_EQ(out[1].v[0], 0.0f);  // the first crossing, half way
+  EXPECT_EQ(out[1].v[4], 0.5f);
+  EXPECT_EQ(detail::clip_polygon(plane, zigzag(7).data(), 7, out.data(), floats), -1);
+  EXPECT_EQ(detail::clip_polygon(plane, zigzag(8).data(), 8, out.data(), floats), -1);
+  EXPECT_EQ(detail::clip_polygon(plane, zigzag(9).data(), 9, out.data(), floats), -1);
+  // A convex polygon of kMaxClipVertices - 1 vertices cut off at one corner: exactly the bound.
+  std::vector<detail::ClipVertex> convex(detail::kMaxClipVertices - 1);
+  for (int i = 0; i < int(convex.size()); ++i) {
+    const double a = 2 * 3.14159265358979 * i / convex.size();
+    convex[i].v[0] = float(std::cos(a)) + 0.9f;  // vertex 4 (x = -0.1) alone outside
+    convex[i].v[1] = float(std::sin(a));
+    convex[i].v[3] = 1.0f;
+  }
+  EXPECT_EQ(detail::clip_polygon(plane, convex.data(), int(convex.size()), out.data(), 4), detail::kMaxClipVertices);
+}
+
+// Triangles built to stress the clipper's rounding: nearly degenerate, straddling the near plane
+// with w close to 0 at a corner of the guard band, where every plane meets the polygon. None may
+// crash or write past the clipper's buffers (run under ASan), each is drawn, dropped as outside,
+// degenerate or non-finite, or counted in clip_overflow; the first is one that clips to exactly
+// kMaxClipVertices vertices (found by search).
+TEST(Clipper, AdversarialTrianglesAtTheGuardBandCorners) {
+  Context ctx(2);
+  const int W = 64, H = 64;
+  ColorTarget target(W, H, 4);
+  DepthStencilTarget depth(W, H, 4);
+  PipelineState st;
+  st.rasterizer.cull = CullMode::None;
+  std::vector<glm::vec4> pos = {
+      {0x1.bbep-26f, 0x1.bdp-26f, 0.0f, 0.0f},
+      {0x1.f58bb2p-15f, 0x1.26dc9p-11f, 0x1.c28d78p-10f, 0x1.e9b14p-10f},
+      {0x1.25e8e4p-13f, 0x1.fb8d38p-12f, 0x1.c1a07p-10f, 0x1.c1a07p-10f},
+  };
+  // The guard band's corners in NDC, as plan_draw computes them for this viewport.
+  const float g = float(kGuardBand - 1), half = W * 0.5f;
+  const float gmin = -g / half - 1.0f, gmax = g / half - 1.0f;
+  std::mt19937 rng(2024);
+  std::uniform_real_distribution<float> unit(-1.0f, 1.0f);
+  std::uniform_int_distribution<int> exponent(-40, 10);
+  for (int i = 0; i < budget(60000, 6000); ++i) {
+    // Vertex 0 at a corner of the guard band with w near 0 (on the near plane or just off it),
+    // vertex 1 inside the view volume (so that the triangle is not trivially rejected), vertex 2
+    // nearly on the line between them or near vertex 0.
+    const float w = std::ldexp(unit(rng), exponent(rng));
+    const glm::vec4 corner((i & 1 ? gmax : gmin) * w, (i & 2 ? gmax : gmin) * w, i & 4 ? w : 0.0f, w);
+    const float scale = std::ldexp(1.0f, exponent(rng)), thin = std::ldexp(1.0f, exponent(rng) / 2 - 10);
+    const glm::vec4 inside = glm::vec4(unit(rng), unit(rng), 0.5f + 0.5f * unit(rng), 1.0f) * scale;
+    glm::vec4 jitter;
+    for (int k = 0; k < 4; ++k) jitter[k] = unit(rng) * std::max(std::fabs(w), scale) * thin;
+    const float t = i & 8 ? 0.5f + 0.5f * unit(rng) : std::ldexp(1.0f, exponent(rng) / 2 - 4);
+    pos.push_back(corner + jitter);
+    pos.push_back(inside);
+    pos.push_back(corner + t * (inside - corner) - jitter * unit(rng));
+  }
+  std::vector<std::array<glm::vec4, 1>> varyings(pos.size());
+  for (size_t i = 0; i < pos.size(); ++i) varyings[i][0] = glm::vec4(float(i % 7), 1.0f, -2.0f, 0.5f);
+  clear_color(ctx, target, glm::vec4(0.0f));
+  clear_depth_stencil(ctx, depth, 1.0f, 0);
+  ctx.reset_stats();
+  draw(ctx, Framebuffer{&target, &depth}, st, Geometry::non_indexed(uint32_t(pos.size())),
+       ArrayVS<1>{pos.data(), varyings.data()}, VaryingPS{});
+  ctx.flush();
+  const DrawStats& s = ctx.stats();
+  EXPECT_EQ(s.triangles, pos.size() / 3);
+  EXPECT_GT(s.clipped, s.triangles / 4);  // the others: wholly outside (w < 0 half the time)
+  EXPECT_LE(s.clip_overflow, s.clipped);
+  RecordProperty("clip_overflow", std::to_string(s.clip_overflow));
+}
+
+// context.hpp, "The deferred frame": destroying a target or query that a pending frame refers to
+// flushes that frame first. The doomed objects live on the heap, so that ASan reports any command
+// that still reads or writes them after they are gone.
+TEST(DeferredFrame, DestroyingATargetFlushesItsPendingFrameFirst) {
+  Context ctx(2);
+  PipelineState st;
+  st.rasterizer.cull = CullMode::None;
+  ColorTarget kept(64, 48, 4);
+  auto depth = std::make_unique<DepthStencilTarget>(64, 48, 4);
+  clear_color(ctx, kept, glm::vec4(1, 0, 0, 1));
+  clear_depth_stencil(ctx, *depth, 1.0f, 0);
+  ctx.reset_stats();
+  draw(ctx, Framebuffer{&kept, depth.get()}, st, Geometry::non_indexed(3), PositionVS{kFull},
+       ConstantPS{glm::vec4(0, 1, 0, 1)});
+  depth.reset();
+  // The draw ran before the depth target went: its effect on the color target is there (read
+  // without a flush) and its counters are complete.
+  EXPECT_EQ(ctx.stats().rasterized, 1u);
+  int green = 0;
+  for (int y = 0; y < 48; ++y)
+    for (int x = 0; x < 64; ++x)
+      for (int s = 0; s < 4; ++s) green += kept.sample(x, y, s) == rgba8(0, 255, 0, 255);
+  EXPECT_EQ(green, 64 * 48 * 4);
+
+  // A color target with a pending clear and draw, destroyed; then the context goes on.
+  auto doomed = std::make_unique<ColorTarget>(64, 48, 4);
+  clear_color(ctx, *doomed, glm::vec4(0, 0, 1, 1));
+  draw(ctx, Framebuffer{doomed.get(), nullptr}, st, Geometry::non_indexed(3), PositionVS{kFull}, ConstantPS{});
+  clear_color(ctx, kept, glm::vec4(0, 0, 1, 1));  // pending too: flushed with the doomed target's frame
+  doomed.reset();
+  EXPECT_EQ(kept.sample(63, 47, 3), rgba8(0, 0, 255, 255));
+  draw(ctx, Framebuffer{&kept, nullptr}, st, Geometry::non_indexed(3), PositionVS{kFull}, ConstantPS{});
+  EXPECT_EQ(resolve(ctx, kept).pixel(10, 10)[0], 255);
+
+  // Moving a target with pending work runs it first: the moved-to target holds the result.
+  ColorTarget source(64, 48, 4);
+  clear_color(ctx, source, glm::vec4(0, 1, 1, 1));
+  ColorTarget moved = std::move(source);
+  EXPECT_EQ(moved.sample(5, 5, 0), rgba8(0, 255, 255, 255));
+  clear_color(ctx, moved, glm::vec4(1, 1, 0, 1));
+  moved = ColorTarget(64, 48, 4);  // assigning over a pending target runs its frame, then replaces it
+  EXPECT_EQ(resolve(ctx, moved).pixel(5, 5)[0], 0);
+}
+
+TEST(DeferredFrame, DestroyingAQueryFlushesAndEndsIt) {
+  Context ctx(2);
+  PipelineState st;
+  st.rasterizer.cull = CullMode::None;
+  ColorTarget target(32, 32, 2);
+  clear_color(ctx, target, glm::vec4(0.0f));
+  // Pending, ended.
+  auto query = std::make_unique<OcclusionQuery>();
+  ctx.begin_query(*query);
+  draw(ctx, Framebuffer{&target, nullptr}, st, Geometry::non_indexed(3), PositionVS{kFull}, ConstantPS{});
+  ctx.end_query();
+  query.reset();
+  EXPECT_EQ(target.sample(31, 31, 1), rgba8(255, 255, 255, 255));
+  // Pending and still active: destroying it ends it, later draws count into nothing.
+  query = std::make_unique<OcclusionQuery>();
+  ctx.begin_query(*query);
+  draw(ctx, Framebuffer{&target, nullptr}, st, Geometry::non_indexed(3), PositionVS{kFull}, ConstantPS{});
+  query.reset();
+  EXPECT_EQ(ctx.active_query(), nullptr);
+  draw(ctx, Framebuffer{&target, nullptr}, st, Geometry::non_indexed(3), PositionVS{kFull}, ConstantPS{});
+  ctx.flush();
+  // Active but nothing pending: the context's destructor must not touch it afterwards.
+  OcclusionQuery survivor;
+  {
+    Context other(1);
+    other.begin_query(survivor);
+  }
+  OcclusionQuery copy = survivor;
+  (void)copy;
+  // A query counting in one context and begun in another ends in the first.
+  OcclusionQuery shared;
+  ctx.begin_query(shared);
+  draw(ctx, Framebuffer{&target, nullptr}, st, Geometry::non_indexed(3), PositionVS{kFull}, ConstantPS{});
+  Context other(1);
+  other.begin_query(shared);
+  EXPECT_EQ(ctx.active_query(), nullptr);
+  EXPECT_EQ(other.active_query(), &shared);
+  other.end_query();
+  EXPECT_EQ(other.query_result(shared), 0u);
+}
+
+// Recording a target in a second context runs the first context's pending frame on it first, so
+// the frames apply in the order they were recorded.
+TEST(DeferredFrame, ATargetIsPendingInOneContextAtATime) {
+  Context first(1), second(2);
+  PipelineState st;
+  st.rasterizer.cull = CullMode::None;
+  ColorTarget target(64, 64, 1);
+  clear_color(first, target, glm::vec4(1, 0, 0, 1));
+  draw(second, Framebuffer{&target, nullptr}, st, Geometry::non_indexed(3), PositionVS{kFull},
+       ConstantPS{glm::vec4(0, 1, 0, 1)});
+  first.flush();  // nothing left: the clear ran before the draw was recorded
+  EXPECT_EQ(resolve(second, target).pixel(7, 7)[1], 255);
+  EXPECT_EQ(resolve(first, target).pixel(7, 7)[0], 0);
 }
 
 // A frame that alternates between targets of different tilings flushes by itself in between.

@@ -1107,6 +1107,55 @@ TEST(TextureSimd, ImplicitLodMatchesExplicitAndReference) {
   std::printf("[          ] worst |compute_lod - lod_reference| = %g\n", worst_lod);
 }
 
+TEST(TextureSimd, LastLevelOfTheLongestChain) {
+  // An 8192-texel side has kMaxMipLevels levels, so the level after the last does not exist even
+  // as padding in the level table. A stamp whose lanes blend two levels while others sit on the
+  // last one must not fetch a level past it for those (checked by ASan as in GarbageInIsSafe).
+  // 8192x2 has the same chain as 8192x8192 at 1/4096 of the memory. LODs sweep from below 0 to
+  // past the last level, the eight lanes of a stamp spread over 1.75 levels.
+  std::mt19937 rng(9);
+  std::uniform_real_distribution<float> unit(-0.5f, 1.5f);
+  for (const TextureFormat format : {TextureFormat::RGBA8, TextureFormat::RGBA16F}) {
+    Texture t = Texture::create_2d(kMaxTextureSize, 2, format);
+    ASSERT_EQ(t.mip_levels(), kMaxMipLevels);
+    fill_random(t, rng);
+    for (const Address address : {Address::Wrap, Address::Clamp}) {
+      for (const Filter mag : {Filter::Point, Filter::Linear}) {
+        for (const Filter min : {Filter::Point, Filter::Linear}) {
+          for (const MipFilter mip : {MipFilter::None, MipFilter::Point, MipFilter::Linear}) {
+            Sampler s;
+            s.mag = mag;
+            s.min = min;
+            s.mip = mip;
+            s.u = s.v = address;
+            int failures = 0;
+            for (float base = -2.0f; base <= kMaxMipLevels + 1.0f; base += 0.125f) {
+              std::array<glm::vec3, kLanes> coord;
+              LaneValues x, y, z{}, lod;
+              for (int l = 0; l < kLanes; ++l) {
+                coord[l] = {unit(rng), unit(rng), 0.0f};
+                x[l] = coord[l].x;
+                y[l] = coord[l].y;
+                lod[l] = base + 0.25f * l;
+              }
+              const auto got = unpack(sample_level(t, s, {lanes_of(x), lanes_of(y), lanes_of(z)}, lanes_of(lod)));
+              for (int l = 0; l < kLanes; ++l) {
+                const glm::vec4 want = sample_reference(t, s, coord[l], lod[l]);
+                for (int ch = 0; ch < 4; ++ch) {
+                  if (!(std::fabs(got[l][ch] - want[ch]) <= kSimdTolerance) && failures++ < 3) {
+                    ADD_FAILURE() << name(format) << ", " << describe(s) << ": lod " << lod[l] << " channel "
+                                  << ch << ": SIMD " << got[l][ch] << ", reference " << want[ch];
+                  }
+                }
+              }
+            }
+          }
+        }
+      }
+    }
+  }
+}
+
 TEST(TextureSimd, GarbageInIsSafe) {
   // Lanes outside a triangle carry whatever the interpolators produced: any float must read
   // inside the texture (checked by ASan, which sees every texel read as the SIMD path uses scalar

@@ -6,6 +6,8 @@
 
 #include <gtest/gtest.h>
 
+#include <array>
+#include <limits>
 #include <random>
 
 namespace luxel::rasterizer::test {
@@ -105,6 +107,51 @@ TEST(Viewport, FullScreenTriangleFillsExactlyTheViewportAndScissor) {
     EXPECT_EQ(bad, 0) << "viewport " << vx << ", " << vy << ", " << st.viewport.width << "x" << st.viewport.height
                       << " scissor " << st.scissor.enable << " " << st.scissor.x0 << "," << st.scissor.y0 << " - "
                       << st.scissor.x1 << "," << st.scissor.y1;
+  }
+}
+
+// state.hpp: a width or height of 0 is the target's, per axis (the default viewport is the whole
+// target); a negative, NaN or infinite one is an error, not the whole target.
+TEST(Viewport, SizeIsZeroForTheTargetOrPositive) {
+  const glm::vec4 full[3] = {{-1, 1, 0.5f, 1}, {3, 1, 0.5f, 1}, {-1, -3, 0.5f, 1}};
+  const int W = 70, H = 50;
+  Context ctx(1);
+  ColorTarget target(W, H, 1);
+  auto covered = [&](const Viewport& vp) {
+    PipelineState st;
+    st.rasterizer.cull = CullMode::None;
+    st.viewport = vp;
+    clear_color(ctx, target, glm::vec4(0.0f));
+    draw(ctx, Framebuffer{&target, nullptr}, st, Geometry::non_indexed(3), PositionVS{full}, ConstantPS{});
+    ctx.flush();
+    PixelRect r{W, H, 0, 0};  // the bounding box of the written pixels
+    int count = 0;
+    for (int y = 0; y < H; ++y)
+      for (int x = 0; x < W; ++x)
+        if (target.sample(x, y, 0) != 0) {
+          ++count;
+          r = {std::min(r.x0, x), std::min(r.y0, y), std::max(r.x1, x + 1), std::max(r.y1, y + 1)};
+        }
+    EXPECT_EQ(count, (r.x1 - r.x0) * (r.y1 - r.y0)) << "not a rectangle";
+    return std::array<int, 4>{r.x0, r.y0, r.x1, r.y1};
+  };
+  using Rect = std::array<int, 4>;
+  EXPECT_EQ(covered(Viewport{}), (Rect{0, 0, W, H}));
+  EXPECT_EQ(covered(Viewport{0, 0, 0, 20}), (Rect{0, 0, W, 20}));
+  EXPECT_EQ(covered(Viewport{0, 0, 30, 0}), (Rect{0, 0, 30, H}));
+  EXPECT_EQ(covered(Viewport{10, 5, 0, 0}), (Rect{10, 5, W, H}));  // the target's size from the origin
+  EXPECT_EQ(covered(Viewport{0, 0, -0.0f, -0.0f}), (Rect{0, 0, W, H}));
+
+  const float nan = std::numeric_limits<float>::quiet_NaN(), inf = std::numeric_limits<float>::infinity();
+  for (const float bad : {nan, -nan, -1.0f, -1e-30f, -inf, inf}) {
+    for (const bool on_width : {true, false}) {
+      PipelineState st;
+      (on_width ? st.viewport.width : st.viewport.height) = bad;
+      EXPECT_THROW(draw(ctx, Framebuffer{&target, nullptr}, st, Geometry::non_indexed(3), PositionVS{full},
+                        ConstantPS{}),
+                   std::invalid_argument)
+          << (on_width ? "width " : "height ") << bad;
+    }
   }
 }
 

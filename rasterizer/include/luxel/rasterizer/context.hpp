@@ -20,18 +20,55 @@ namespace luxel::rasterizer {
 
 struct DrawStats;
 class ColorTarget;
+class DepthStencilTarget;
+class Context;
 struct Image;
 
 namespace detail {
 class CommandQueue;
-}
+
+/// Which Context's pending frame refers to the object holding this (see "The deferred frame"
+/// below), if any. The holder declares it first among its members, so that copying or moving the
+/// holder (or assigning to it) runs that frame before the holder's other members change, and calls
+/// release() from its destructor, before any member is destroyed.
+class PendingUse {
+ public:
+  PendingUse() = default;
+  /// A copy is referred to by no frame; the original's pending frame runs first.
+  PendingUse(const PendingUse& other) { other.flush(); }
+  PendingUse& operator=(const PendingUse& other) {
+    flush();
+    other.flush();
+    return *this;
+  }
+  ~PendingUse() = default;
+
+  /// Runs the pending frame that refers to the holder (Context::flush), if any.
+  void flush() const;
+  /// The same, and the context forgets the holder (an occlusion query it counts into ends).
+  void release() const;
+
+ private:
+  friend class luxel::rasterizer::Context;
+  mutable Context* context_ = nullptr;
+};
+}  // namespace detail
 
 /// Counts the samples that pass every test (coverage, discard, alpha, stencil, depth) in the
 /// draws made between Context::begin_query and Context::end_query. Exact, like D3D9's
 /// D3DQUERYTYPE_OCCLUSION, and in samples (not pixels). Read it with Context::query_result.
+/// Destroying a query flushes the context that counts into it, if any, and ends it there (see
+/// "The deferred frame"); copying one flushes first.
 class OcclusionQuery {
+ public:
+  OcclusionQuery() = default;
+  OcclusionQuery(const OcclusionQuery&) = default;
+  OcclusionQuery& operator=(const OcclusionQuery&) = default;
+  ~OcclusionQuery() { use_.release(); }
+
  private:
   friend class Context;
+  detail::PendingUse use_;  // first: see PendingUse
   uint64_t samples_ = 0;
 };
 
@@ -71,6 +108,16 @@ class Context {
   // Draws, clears and resolves are recorded and run tile by tile at the next flush. Reading a
   // target's samples directly (ColorTarget::sample...) needs a flush() first; resolve() and
   // query_result() flush by themselves. Data a pixel functor points to must stay alive until then.
+  //
+  // Render targets and occlusion queries know which context's pending frame refers to them (one
+  // pointer, set when a draw, clear or begin_query records them: nothing per triangle or sample).
+  // Destroying, moving, copying or assigning to one that a pending frame refers to flushes that
+  // context first, in every build: the frame's effects on it and on every other target are then
+  // complete, and nothing refers to freed memory. A destroyed query also ends if it was active.
+  // A target or query is referred to by one context at a time: recording it in a second context
+  // flushes the first (so the frames run in the order they were recorded). resolve() flushes at
+  // once, so no frame keeps referring to an Image. Flushing from a destructor is flushing: it must
+  // happen on the thread that drives the context.
 
   /// Runs everything recorded so far.
   void flush();
@@ -92,8 +139,13 @@ class Context {
 
   /// The frame being recorded (used by draw() and the clear/resolve commands).
   detail::CommandQueue& queue() { return *queue_; }
+  /// Notes that the frame being recorded refers to `target` (used by the same), flushing the
+  /// context whose frame referred to it until now, if another.
+  void refer(const ColorTarget& target);
+  void refer(const DepthStencilTarget& target);
 
  private:
+  friend class detail::PendingUse;
   static ContextOptions with_threads(int threads) {
     ContextOptions options;
     options.threads = threads;
@@ -101,6 +153,10 @@ class Context {
   }
   void worker_main(int thread);
   void run_items(int thread);
+  void run_frame();
+  void refer(const detail::PendingUse& use);
+  /// PendingUse::release: flushes, and the holder is no longer the active query.
+  void release(const detail::PendingUse& use);
 
   ContextOptions options_;
   std::vector<std::thread> workers_;
@@ -117,6 +173,7 @@ class Context {
   OcclusionQuery* active_query_ = nullptr;
   uint64_t flush_count_ = 0;
   std::unique_ptr<detail::CommandQueue> queue_;
+  std::vector<const detail::PendingUse*> pending_uses_;  ///< the objects this context refers to
   std::unique_ptr<DrawStats> stats_;
 };
 

@@ -122,6 +122,7 @@ struct DrawStats {
   uint64_t non_finite = 0;         ///< dropped: NaN/Inf position
   uint64_t outside = 0;            ///< trivially rejected against the view volume
   uint64_t clipped = 0;            ///< went through the clipper
+  uint64_t clip_overflow = 0;      ///< of those, dropped: rounding made more pieces than the clipper holds
   uint64_t culled = 0;             ///< back-face (cull mode) culled
   uint64_t degenerate = 0;         ///< zero area after snapping, or nothing inside the scissor
   uint64_t rasterized = 0;         ///< set up and binned (clipped pieces count one each)
@@ -137,8 +138,9 @@ struct DrawStats {
 
 /// Draws into `fb` with `state`: runs the vertex functor and bins the triangles now, and records
 /// the rest for the context's next flush (see Context). Throws std::invalid_argument when the
-/// framebuffer's targets disagree in size or sample count. The samples that pass count into the
-/// context's active occlusion query, if any; the counters go to Context::stats().
+/// framebuffer's targets disagree in size or sample count, or the viewport is invalid (see
+/// Viewport). The samples that pass count into the context's active occlusion query, if any; the
+/// counters go to Context::stats().
 template <VertexFunctor VS, PixelFunctor<VS::kVaryings> PS>
 void draw(Context& ctx, const Framebuffer& fb, const PipelineState& state, const Geometry& geometry,
                const VS& vertex_shader, const PS& pixel_shader);

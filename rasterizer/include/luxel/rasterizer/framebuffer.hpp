@@ -9,6 +9,7 @@
 //
 // Color is packed as one uint32 per sample: r | g << 8 | b << 16 | a << 24.
 
+#include "luxel/rasterizer/context.hpp"
 #include "luxel/rasterizer/image.hpp"
 #include "luxel/rasterizer/limits.hpp"
 #include "luxel/rasterizer/simd.hpp"
@@ -20,8 +21,6 @@
 #include <memory>
 
 namespace luxel::rasterizer {
-
-class Context;
 
 /// Where pixel (x, y), relative to its tile's origin, sits inside one sample plane of the tile.
 constexpr int pixel_offset_in_tile(int x, int y) {
@@ -78,10 +77,14 @@ class SurfaceBuffer {
   size_t count_ = 0;
 };
 
-/// An RGBA8 color target.
+/// An RGBA8 color target. Movable; destroying or moving one that a context's pending frame
+/// refers to flushes that context first (see Context, "The deferred frame").
 class ColorTarget {
  public:
   ColorTarget(int width, int height, int samples = 1);
+  ColorTarget(ColorTarget&&) = default;
+  ColorTarget& operator=(ColorTarget&&) = default;
+  ~ColorTarget() { pending_.release(); }
 
   const SurfaceLayout& layout() const { return layout_; }
   int width() const { return layout_.width; }
@@ -93,14 +96,20 @@ class ColorTarget {
   void set_sample(int x, int y, int s, uint32_t rgba) { texels_[layout_.index(x, y, s)] = rgba; }
 
  private:
+  friend class Context;
+  detail::PendingUse pending_;  // first: see PendingUse
   SurfaceLayout layout_;
   SurfaceBuffer<uint32_t> texels_;
 };
 
-/// Float depth in [0, 1] and an 8-bit stencil value per sample.
+/// Float depth in [0, 1] and an 8-bit stencil value per sample. Movable, with the same rule as
+/// ColorTarget for pending frames.
 class DepthStencilTarget {
  public:
   DepthStencilTarget(int width, int height, int samples = 1);
+  DepthStencilTarget(DepthStencilTarget&&) = default;
+  DepthStencilTarget& operator=(DepthStencilTarget&&) = default;
+  ~DepthStencilTarget() { pending_.release(); }
 
   const SurfaceLayout& layout() const { return layout_; }
   int width() const { return layout_.width; }
@@ -112,6 +121,8 @@ class DepthStencilTarget {
   uint8_t stencil(int x, int y, int s) const { return stencil_[layout_.index(x, y, s)]; }
 
  private:
+  friend class Context;
+  detail::PendingUse pending_;  // first: see PendingUse
   SurfaceLayout layout_;
   SurfaceBuffer<float> depth_;
   SurfaceBuffer<uint8_t> stencil_;

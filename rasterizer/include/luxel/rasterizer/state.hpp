@@ -42,7 +42,9 @@ enum ColorWrite : uint8_t { kWriteRed = 1, kWriteGreen = 2, kWriteBlue = 4, kWri
 
 struct Viewport {
   float x = 0, y = 0;           ///< top-left corner, pixels
-  float width = 0, height = 0;  ///< 0 = the whole target
+  /// Pixels, at most kMaxTargetSize. 0 (the default) = the target's width or height, per axis,
+  /// counted from x or y; negative, NaN and infinite sizes are rejected (std::invalid_argument).
+  float width = 0, height = 0;
   float min_depth = 0, max_depth = 1;
 };
 

@@ -828,6 +828,8 @@ void draw(Context& ctx, const Framebuffer& fb, const PipelineState& state, const
     for (const DrawStats& s : chunk_stats) queue.front_end_stats() += s;
     for (const ChunkBins* c : chunks) queue.add_pending_record_bytes(c->bytes());
     const int slot = queue.query_slot(ctx.active_query());
+    if (plan.color) ctx.refer(*plan.color);  // see Context, "The deferred frame"
+    if (plan.depth_stencil) ctx.refer(*plan.depth_stencil);
     queue.push(std::make_unique<DrawCommand<PS, N>>(plan, state, pixel_shader, std::move(chunks), slot));
     part_first += part;
   }

@@ -193,4 +193,20 @@ inline constexpr int kFrontEndBatch = 16;
 void process_triangles(const DrawConstants& dc, const glm::vec4* const* vertices, int count, ChunkBins& bins,
                        DrawStats& stats);
 
+/// Most vertices of a clipped polygon: a triangle plus one per clip plane (near, far, the four of
+/// the guard band), as a plane adds at most one vertex to a convex polygon. Rounding in the
+/// intersections can leave a near-degenerate polygon slightly non-convex, and one plane can then
+/// add more; the clipper drops such a triangle (DrawStats::clip_overflow) instead.
+inline constexpr int kMaxClipVertices = 3 + 6;
+
+/// A vertex being clipped: position then varyings, all float4.
+struct ClipVertex {
+  float v[4 * (1 + kMaxVaryings)];
+};
+
+/// Sutherland-Hodgman: the polygon in[0, n) cut to dot(plane, position) >= 0 into `out` (room for
+/// kMaxClipVertices), interpolating the first `floats` floats of each vertex. Returns the new
+/// vertex count, or -1 when that would exceed kMaxClipVertices (out is then partly written).
+int clip_polygon(const glm::vec4& plane, const ClipVertex* in, int n, ClipVertex* out, int floats);
+
 }  // namespace luxel::rasterizer::detail
