@@ -16,6 +16,8 @@
 #include "texture_internal.hpp"
 
 #include <array>
+#include <cstdio>
+#include <cstdlib>
 #include <cstring>
 #include <limits>
 
@@ -193,6 +195,14 @@ struct Level {
 };
 
 LUXEL_INLINE Level level_geometry(const Texture& t, const Int& level) {
+#if defined(__SANITIZE_ADDRESS__)
+  // The level table is an array inside the Texture: AddressSanitizer cannot see a read past its
+  // end (it lands on the next member or padding), so sanitizer builds check the levels here.
+  if (!xsimd::all((level >= Int(0)) & (level < Int(t.mip_levels())))) {
+    std::fputs("luxel: texture sampling read a mip level outside the texture\n", stderr);
+    std::abort();
+  }
+#endif
   alignas(64) int32_t l[kLanes];
   level.store_aligned(l);
   Level g;

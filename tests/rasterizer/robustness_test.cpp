@@ -402,9 +402,11 @@ TEST(DeferredFrame, ATargetIsPendingInOneContextAtATime) {
   clear_color(first, target, glm::vec4(1, 0, 0, 1));
   draw(second, Framebuffer{&target, nullptr}, st, Geometry::non_indexed(3), PositionVS{kFull},
        ConstantPS{glm::vec4(0, 1, 0, 1)});
-  first.flush();  // nothing left: the clear ran before the draw was recorded
-  EXPECT_EQ(resolve(second, target).pixel(7, 7)[1], 255);
-  EXPECT_EQ(resolve(first, target).pixel(7, 7)[0], 0);
+  second.flush();
+  first.flush();  // nothing left: the clear ran when the draw was recorded, not now over it
+  const Image image = resolve(first, target);
+  EXPECT_EQ(image.pixel(7, 7)[0], 0);
+  EXPECT_EQ(image.pixel(7, 7)[1], 255);
 }
 
 // A frame that alternates between targets of different tilings flushes by itself in between.
