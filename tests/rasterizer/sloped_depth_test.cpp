@@ -539,7 +539,7 @@ void run_path(Path path, uint32_t seed0) {
   EXPECT_GT(failed, tested / 20) << "depth failures";
   EXPECT_LT(unsettled, tested / 100) << unsettled << " of " << tested << " depth tests undecidable";
   EXPECT_GT(counted, 0u);
-  if (path == Path::Early || path == Path::Late) {
+  if ((path == Path::Early || path == Path::Late) && !kReducedRun) {  // 12 scenes may have none
     EXPECT_GT(equal_redraws, 0u) << "Equal redraws of earlier triangles";
   }
   // Which path ran, as far as a functor can tell: the late path shades every covered stamp with
