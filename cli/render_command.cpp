@@ -74,7 +74,8 @@ Runner add_render_command(CLI::App& app) {
       std::cout << "triangles=" << s.triangles << " rasterized=" << s.rasterized << " clipped=" << s.clipped
                 << " clip_overflow=" << s.clip_overflow
                 << " culled=" << s.culled << " outside=" << s.outside << " degenerate=" << s.degenerate
-                << " small_walks=" << s.small_walks << " blocks_full=" << s.blocks_full
+                << " small_walks=" << s.small_walks << " constant_depth=" << s.constant_depth
+                << " blocks_full=" << s.blocks_full
                 << " non_finite=" << s.non_finite << " bad_index=" << s.bad_index << " stamps_full=" << s.stamps_full
                 << " stamps_partial=" << s.stamps_partial << " stamps_wide_edges=" << s.stamps_wide_edges
                 << " stamps_shaded=" << s.stamps_shaded

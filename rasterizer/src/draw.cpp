@@ -20,6 +20,7 @@ DrawStats& DrawStats::operator+=(const DrawStats& o) {
   degenerate += o.degenerate;
   rasterized += o.rasterized;
   small_walks += o.small_walks;
+  constant_depth += o.constant_depth;
   blocks_full += o.blocks_full;
   stamps_full += o.stamps_full;
   stamps_partial += o.stamps_partial;

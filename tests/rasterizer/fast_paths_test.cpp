@@ -108,8 +108,11 @@ void trivial_depth_scene(Context& ctx, Output& out) {
     const float cx = u(rng) * 2.2f - 1.1f, cy = u(rng) * 2.2f - 1.1f;
     const float size = i % 50 == 0 ? 0.8f : 0.04f;  // a few larger ones
     colors.push_back({u(rng), u(rng), u(rng), 1.0f});
+    // Every third triangle has constant depth (FastPath::ConstantDepth), some of them at 0, the
+    // depth that path leaves to the general one.
+    const float constant_z = i % 7 == 0 ? 0.0f : u(rng);
     for (int k = 0; k < 3; ++k)
-      pos.push_back({cx + size * (u(rng) - 0.5f), cy + size * (u(rng) - 0.5f), u(rng), 1.0f});
+      pos.push_back({cx + size * (u(rng) - 0.5f), cy + size * (u(rng) - 0.5f), i % 3 == 0 ? constant_z : u(rng), 1.0f});
   }
   ColorTarget target(W, H, S);
   DepthStencilTarget ds(W, H, S);
@@ -210,6 +213,8 @@ TEST(FastPaths, EachSwitchTurnsItsPathOff) {
   // branches around dead stamps).
   EXPECT_EQ(stats(trivial_depth_scene, FastPaths::all_but(FastPath::FixedDepthPaths)).stamps_shaded,
             trivial_off.stamps_shaded);
+  EXPECT_GT(trivial_on.constant_depth, 0u);
+  EXPECT_EQ(stats(trivial_depth_scene, FastPaths::all_but(FastPath::ConstantDepth)).constant_depth, 0u);
 }
 
 TEST(FastPaths, SwitchListsParse) {

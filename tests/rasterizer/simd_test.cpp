@@ -5,10 +5,13 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
 #include <cstdint>
 #include <cstring>
 #include <limits>
 #include <random>
+#include <vector>
 
 namespace luxel::rasterizer {
 namespace {
@@ -133,6 +136,56 @@ TEST(Simd, TransposeToRowsPutsLaneLInRowL) {
   simd::transpose_to_rows(fields, rows);
   for (int l = 0; l < kLanes; ++l)
     for (int f = 0; f < 8; ++f) EXPECT_EQ(rows[l][f], 100 * l + f) << "lane " << l << ", field " << f;
+}
+
+/// D3D10's float to UNORM8 as the library does it: NaN to 0, clamped to [0, 1], times 255 in
+/// float (so 2.5 / 255 becomes 2.5, and rounds to 2, where the exact product would give 3),
+/// nearest even.
+uint32_t unorm8(float x) {
+  if (std::isnan(x)) return 0;
+  const float v = std::clamp(x, 0.0f, 1.0f) * 255.0f;
+  return static_cast<uint32_t>(std::nearbyint(v));
+}
+
+TEST(Simd, PackUnorm8RoundsClampsAndPlacesEachChannel) {
+  // The hard cases first: NaN, infinities, huge and negative values, exact halves of a step
+  // (which round to the even step), the ends of the range; then random values around [0, 1].
+  const float nan = std::numeric_limits<float>::quiet_NaN(), inf = std::numeric_limits<float>::infinity();
+  std::vector<float> values = {nan,   -nan,  inf,    -inf,     1e30f,   -1e30f, 3e9f, -3e9f, 0.0f, -0.0f, 1.0f,
+                               1.5f, -0.5f, 0.5f / 255, 1.5f / 255, 2.5f / 255, 254.5f / 255, 0.499f / 255,
+                               std::numeric_limits<float>::denorm_min(), 1.0f - 1e-7f};
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<float> around(-0.25f, 1.25f);
+  while (values.size() < 4096) values.push_back(around(rng));
+  for (size_t i = 0; i + 4 * kLanes <= values.size(); i += kLanes) {
+    float ch[4][kLanes];
+    for (int c = 0; c < 4; ++c)
+      for (int l = 0; l < kLanes; ++l) ch[c][l] = values[(i + l + c * 7) % values.size()];
+    const simd::Float4 color{Float::load_unaligned(ch[0]), Float::load_unaligned(ch[1]), Float::load_unaligned(ch[2]),
+                             Float::load_unaligned(ch[3])};
+    int32_t got[kLanes];
+    simd::pack_unorm8(color).store_unaligned(got);
+    for (int l = 0; l < kLanes; ++l) {
+      const uint32_t want = unorm8(ch[0][l]) | unorm8(ch[1][l]) << 8 | unorm8(ch[2][l]) << 16 | unorm8(ch[3][l]) << 24;
+      ASSERT_EQ(uint32_t(got[l]), want) << "lane " << l << ": " << ch[0][l] << " " << ch[1][l] << " " << ch[2][l] << " "
+                                        << ch[3][l];
+    }
+  }
+}
+
+TEST(Simd, IntSelectTakesWholeLanes) {
+  // Masks are all ones or zero per lane; the values have every byte different, so that a blend
+  // by bytes of a wrong mask would show.
+  int32_t mask[kLanes], a[kLanes], b[kLanes], got[kLanes];
+  for (int round = 0; round < 64; ++round) {
+    for (int l = 0; l < kLanes; ++l) {
+      mask[l] = ((round >> (l % 6)) & 1) ? -1 : 0;
+      a[l] = int32_t(0x01020304u * uint32_t(l + 1) + uint32_t(round));
+      b[l] = int32_t(0x80a0c0e0u ^ uint32_t(a[l]));
+    }
+    simd::select(load(mask), load(a), load(b)).store_unaligned(got);
+    for (int l = 0; l < kLanes; ++l) ASSERT_EQ(got[l], mask[l] ? a[l] : b[l]) << "lane " << l;
+  }
 }
 
 }  // namespace

@@ -127,6 +127,7 @@ struct DrawStats {
   uint64_t degenerate = 0;         ///< zero area after snapping, or nothing inside the scissor
   uint64_t rasterized = 0;         ///< set up and binned (clipped pieces count one each)
   uint64_t small_walks = 0;        ///< (triangle, tile) pairs walked by the small-triangle path
+  uint64_t constant_depth = 0;     ///< (triangle, tile) pairs rasterized with one depth (FastPath::ConstantDepth)
   uint64_t blocks_full = 0;        ///< 16x16 blocks found fully covered (their stamps count as full)
   uint64_t stamps_full = 0;        ///< stamps found fully covered without per-sample tests
   uint64_t stamps_partial = 0;     ///< stamps that needed per-sample edge tests

@@ -40,12 +40,16 @@ enum class FastPath : uint32_t {
   /// Indexed draws shade a vertex once for the triangles that share it while it is in a small
   /// post-transform cache; off, every index is shaded anew.
   VertexCache = 1u << 7,
+  /// Triangles whose depth is the same at every sample (no slope: screen-aligned quads, full-
+  /// screen passes) test and write one depth, clamped once per triangle, instead of evaluating
+  /// and clamping the plane per sample.
+  ConstantDepth = 1u << 8,
 };
 
 /// A set of fast paths (all of them by default).
 class FastPaths {
  public:
-  static constexpr uint32_t kAll = (1u << 8) - 1;
+  static constexpr uint32_t kAll = (1u << 9) - 1;
   constexpr FastPaths() = default;
   static constexpr FastPaths none() { return FastPaths(0); }
   static constexpr FastPaths all_but(FastPath p) { return FastPaths(kAll & ~uint32_t(p)); }
@@ -70,6 +74,7 @@ inline constexpr FastPathName kFastPathNames[] = {
     {FastPath::FullCoverage, "full_coverage"},   {FastPath::FixedDepthPaths, "fixed_depth"},
     {FastPath::TrivialShaders, "trivial"},       {FastPath::FlatRecords, "flat"},
     {FastPath::AffineRecords, "affine"},         {FastPath::VertexCache, "vertex_cache"},
+    {FastPath::ConstantDepth, "constant_depth"},
 };
 
 /// The fast paths left on when those named in `list` are turned off: comma-separated switch

@@ -340,6 +340,35 @@ inline Int dot_halves(const Int& a, const Int& b) {
 /// Float to int32 with round-to-nearest-even (the conversion D3D10 prescribes for UNORM writes).
 inline Int round_to_int(const Float& x) { return xsimd::nearbyint_as_int(x); }
 
+/// Four channels to 8-bit UNORM, r | g << 8 | b << 16 | a << 24 in each lane: clamped to [0, 1]
+/// (NaN to 0), times 255 in float, rounded to nearest even (D3D10's UNORM conversion).
+inline Int pack_unorm8(const Float4& c) {
+#if defined(__AVX512BW__) || (defined(__AVX2__) && !defined(__AVX512F__))
+  // min(1, x) keeps a NaN x (the second operand is returned), which converts to INT_MIN as any
+  // value too large for int32 does; the packs saturate, signed to unsigned, so that every
+  // negative lane becomes 0 and none exceeds 255: the clamp of the generic branch, without its
+  // max and shifts. Per 128 bits the packs leave the bytes of four pixels channel by channel,
+  // r0 r1 r2 r3 g0 ...: the shuffle transposes them to r0 g0 b0 a0 r1 ...
+#if defined(__AVX512BW__)
+  const __m512 one = _mm512_set1_ps(1.0f), scale = _mm512_set1_ps(255.0f);
+  auto q = [&](const Float& x) { return _mm512_cvtps_epi32(_mm512_mul_ps(_mm512_min_ps(one, x), scale)); };
+  const __m512i bytes = _mm512_packus_epi16(_mm512_packus_epi32(q(c.x), q(c.y)), _mm512_packus_epi32(q(c.z), q(c.w)));
+  const __m512i transpose = _mm512_broadcast_i32x4(_mm_setr_epi8(0, 4, 8, 12, 1, 5, 9, 13, 2, 6, 10, 14, 3, 7, 11, 15));
+  return Int(_mm512_shuffle_epi8(bytes, transpose));
+#else
+  const __m256 one = _mm256_set1_ps(1.0f), scale = _mm256_set1_ps(255.0f);
+  auto q = [&](const Float& x) { return _mm256_cvtps_epi32(_mm256_mul_ps(_mm256_min_ps(one, x), scale)); };
+  const __m256i bytes = _mm256_packus_epi16(_mm256_packus_epi32(q(c.x), q(c.y)), _mm256_packus_epi32(q(c.z), q(c.w)));
+  const __m256i transpose =
+      _mm256_broadcastsi128_si256(_mm_setr_epi8(0, 4, 8, 12, 1, 5, 9, 13, 2, 6, 10, 14, 3, 7, 11, 15));
+  return Int(_mm256_shuffle_epi8(bytes, transpose));
+#endif
+#else
+  auto q = [](const Float& x) { return round_to_int(xsimd::min(xsimd::max(x, Float(0.0f)), Float(1.0f)) * Float(255.0f)); };
+  return q(c.x) | (q(c.y) << 8) | (q(c.z) << 16) | (q(c.w) << 24);
+#endif
+}
+
 /// Sets flush-to-zero and denormals-are-zero on this thread (D3D10 flushes float32 denormals) and
 /// restores the previous mode on destruction. Every worker runs shaders in this mode.
 class ScopedFlushDenormals {

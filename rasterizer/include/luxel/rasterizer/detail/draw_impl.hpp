@@ -106,6 +106,7 @@ class TileRasterizer {
     const FastPaths fast = plan.constants.fast_paths;
     full_coverage_ = fast.on(FastPath::FullCoverage);
     fixed_depth_ = fast.on(FastPath::FixedDepthPaths);
+    constant_depth_path_ = fast.on(FastPath::ConstantDepth);
     trivial_ = kTrivialPixelFunctor<PS> && fast.on(FastPath::TrivialShaders);
     depth_test_ = plan.depth_test;
     depth_write_ = plan.depth_write;
@@ -157,17 +158,21 @@ class TileRasterizer {
     int phase;     ///< which stamp of its block
   };
   /// The triangle's depth at sample s of a stamp (see StampDepth, stamp_depth), clamped to the
-  /// viewport's depth range.
+  /// viewport's depth range; constant_z_ if the triangle has constant depth (the same value).
   /// Early and late depth tests take it from here alike, so that a pass with depth func Equal
-  /// over the same triangles passes whichever test its shader allows.
-  LUXEL_INLINE Float sample_depth(int s, StampDepth d, const Float& min_depth, const Float& max_depth) const {
+  /// over the same triangles passes whichever test its shader allows. The hot callers pass
+  /// copies of the members: a depth store could alias them.
+  LUXEL_INLINE Float sample_depth(int s, StampDepth d, const Float& min_depth, const Float& max_depth,
+                                  bool constant_depth, const Float& constant_z) const {
+    if (constant_depth) return constant_z;
     return clamp_depth(sample_z_[d.phase][s] + Float(d.corner), min_depth, max_depth);
   }
   /// A depth clamped to the viewport's depth range, as every depth test sees it.
   static Float clamp_depth(const Float& z, const Float& min_depth, const Float& max_depth) {
     return xsimd::min(xsimd::max(z, min_depth), max_depth);
   }
-  static StampDepth stamp_depth(const TriangleSetup& t, int px, int py) {
+  StampDepth stamp_depth(const TriangleSetup& t, int px, int py) const {
+    if (constant_depth_) return {0.0f, 0};
     const int block_x = px & ~(kDepthBlockWidth - 1);
     return {std::fma(t.z.dqdx, float(block_x) - t.ref_x, t.z.dqdy * (float(py) - t.ref_y)),
             (px - block_x) / simd::kStampWidth};
@@ -199,6 +204,7 @@ class TileRasterizer {
   bool simple_depth_;   ///< depth buffer without stencil
   bool full_coverage_;  ///< FastPath::FullCoverage
   bool fixed_depth_;    ///< FastPath::FixedDepthPaths
+  bool constant_depth_path_;  ///< FastPath::ConstantDepth
   bool trivial_;        ///< a kTrivial functor, FastPath::TrivialShaders on
   bool depth_test_, depth_write_;
   CompareFunc depth_func_;
@@ -223,6 +229,10 @@ class TileRasterizer {
   /// The current triangle's depth at each sample of each stamp of a depth block whose corner is
   /// on the reference vertex.
   Float sample_z_[kDepthPhases][S];
+  /// The current triangle has the same depth at every sample (FastPath::ConstantDepth):
+  /// constant_z_, clamped, and sample_z_ is not set.
+  bool constant_depth_ = false;
+  Float constant_z_;
 };
 
 template <class PS, int N, DepthPath kPath, int S>
@@ -231,7 +241,13 @@ void TileRasterizer<PS, N, kPath, S>::triangle(const TriangleSetup& t) {
   const int x0 = std::max<int>(t.x0, clip_x0_), y0 = std::max<int>(t.y0, clip_y0_);
   const int x1 = std::min<int>(t.x1, clip_x1_), y1 = std::min<int>(t.y1, clip_y1_);
   if (x0 >= x1 || y0 >= y1) return;
-  if (depth_test_) {
+  // No slope: the per-sample path would add only zeros to q0 (exactly, but for the sign of a zero
+  // q0, which is why it is left out) and clamp the same value at every sample.
+  constant_depth_ = constant_depth_path_ && t.z.dqdx == 0.0f && t.z.dqdy == 0.0f && t.z.q0 != 0.0f;
+  if (constant_depth_) {
+    ++stats.constant_depth;
+    constant_z_ = clamp_depth(Float(t.z.q0), Float(min_depth_), Float(max_depth_));
+  } else if (depth_test_) {
     const Float z0(t.z.q0), dzdx(t.z.dqdx), dzdy(t.z.dqdy);
     for (int phase = 0; phase < kDepthPhases; ++phase)
       for (int s = 0; s < S; ++s)
@@ -453,7 +469,8 @@ Int TileRasterizer<PS, N, kPath, S>::depth_stencil_test(const TriangleSetup& t, 
   Float z;
   if (depth_test_) {
     const Float min_depth(min_depth_), max_depth(max_depth_);
-    z = shader_depth ? clamp_depth(*shader_depth, min_depth, max_depth) : sample_depth(s, stamp_z, min_depth, max_depth);
+    z = shader_depth ? clamp_depth(*shader_depth, min_depth, max_depth)
+                     : sample_depth(s, stamp_z, min_depth, max_depth, constant_depth_, constant_z_);
     depth_pass &= simd::mask_of(compare(depth_func_, z, dst_depth));
   }
   Int pass = depth_pass;
@@ -487,11 +504,12 @@ Int TileRasterizer<PS, N, kPath, S>::early_depth(StampDepth stamp_z, int stamp, 
   // would otherwise load them again for every sample.
   float* depth = depth_ + stamp * simd::kLanes;
   const Float min_depth(min_depth_), max_depth(max_depth_);
-  const bool depth_write = depth_write_;
+  const bool depth_write = depth_write_, constant_depth = constant_depth_;
+  const Float constant_z = constant_z_;
   Int live(0);
   for (int s = 0; s < S; ++s, depth += kTilePixels) {
     const Float d = Float::load_aligned(depth);
-    const Float z = sample_depth(s, stamp_z, min_depth, max_depth);
+    const Float z = sample_depth(s, stamp_z, min_depth, max_depth, constant_depth, constant_z);
     const Int pass = coverage[s] & simd::mask_of(compare(kFunc, z, d));
     if (depth_write) simd::select(pass, z, d).store_aligned(depth);
     coverage[s] = pass;

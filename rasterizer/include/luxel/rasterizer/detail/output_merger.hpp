@@ -54,12 +54,7 @@ struct SrgbTables {
 const SrgbTables& srgb_tables();
 
 /// Four channels in [0, 1] (NaN -> 0) packed to RGBA8 with round-to-nearest-even.
-inline Int pack_unorm8(const simd::Float4& c) {
-  auto q = [](const Float& x) {
-    return simd::round_to_int(xsimd::min(xsimd::max(x, Float(0.0f)), Float(1.0f)) * Float(255.0f));
-  };
-  return q(c.x) | (q(c.y) << 8) | (q(c.z) << 16) | (q(c.w) << 24);
-}
+using simd::pack_unorm8;
 
 inline Int encode_srgb_channel(const Float& x) {
   const Int index = simd::round_to_int(xsimd::min(xsimd::max(x, Float(0.0f)), Float(1.0f)) * Float(65535.0f));
