@@ -39,7 +39,7 @@ LUXEL_INLINE Float to_float(const Int& i) { return xsimd::to_float(i); }
 LUXEL_INLINE FloatMask float_mask(const IntMask& m) { return xsimd::bool_cast(m); }
 LUXEL_INLINE IntMask int_mask(const FloatMask& m) { return xsimd::bool_cast(m); }
 LUXEL_INLINE Float lerp(const Float& a, const Float& b, const Float& t) {
-  return xsimd::fma(t, b - a, a);
+  return simd::fma(t, b - a, a);
 }
 LUXEL_INLINE Float4 lerp(const Float4& a, const Float4& b, const Float& t) {
   return {lerp(a.x, b.x, t), lerp(a.y, b.y, t), lerp(a.z, b.z, t), lerp(a.w, b.w, t)};
@@ -59,7 +59,7 @@ template <int kDivisor>
 LUXEL_INLINE Float divide_by(const Float& x) {
   const Float d(static_cast<float>(kDivisor)), r(1.0f / static_cast<float>(kDivisor));
   const Float q = x * r;
-  return xsimd::fma(xsimd::fnma(q, d, x), r, q);
+  return simd::fma(simd::fnma(q, d, x), r, q);
 }
 
 /// 32-bit words at base[index[l]].
@@ -100,14 +100,14 @@ LUXEL_INLINE Float lod_log2(const Float& x) {
   const Float t = m - Float(1.0f);
   // log2(1 + t) = t q(t)
   Float q(-0.14275973432660397f);
-  q = xsimd::fma(q, t, Float(0.232652578806726f));
-  q = xsimd::fma(q, t, Float(-0.2492718220796073f));
-  q = xsimd::fma(q, t, Float(0.2872888823759086f));
-  q = xsimd::fma(q, t, Float(-0.3602251824607909f));
-  q = xsimd::fma(q, t, Float(0.4809167080001651f));
-  q = xsimd::fma(q, t, Float(-0.7213529313629768f));
-  q = xsimd::fma(q, t, Float(1.4426949948930465f));
-  Float r = xsimd::fma(q, t, e);
+  q = simd::fma(q, t, Float(0.232652578806726f));
+  q = simd::fma(q, t, Float(-0.2492718220796073f));
+  q = simd::fma(q, t, Float(0.2872888823759086f));
+  q = simd::fma(q, t, Float(-0.3602251824607909f));
+  q = simd::fma(q, t, Float(0.4809167080001651f));
+  q = simd::fma(q, t, Float(-0.7213529313629768f));
+  q = simd::fma(q, t, Float(1.4426949948930465f));
+  Float r = simd::fma(q, t, e);
   const Float infinity(std::numeric_limits<float>::infinity());
   r = xsimd::select(x == Float(0.0f), -infinity, r);
   return xsimd::select(x < infinity, r, x);  // +inf and NaN pass through

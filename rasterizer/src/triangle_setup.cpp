@@ -144,8 +144,8 @@ simd::LaneBits snap_vertices(const DrawConstants& dc, const float* const* rows, 
   simd::transpose_rows(rows, px, py, pz, pw);
   const Float one(1.0f), zero(0.0f);
   const Float rw = one / pw;
-  const Float sx = xsimd::fma(xsimd::fma(px, rw, one), Float(dc.half_w), Float(dc.vp_x));
-  const Float sy = xsimd::fma(xsimd::fma(-py, rw, one), Float(dc.half_h), Float(dc.vp_y));
+  const Float sx = simd::fma(simd::fma(px, rw, one), Float(dc.half_w), Float(dc.vp_x));
+  const Float sy = simd::fma(simd::fma(-py, rw, one), Float(dc.half_h), Float(dc.vp_y));
   const Float band(2.0f * kGuardBand);
   const auto snappable = (pw > zero) & (rw - rw == zero) & (xsimd::abs(sx) <= band) & (xsimd::abs(sy) <= band);
   const auto view = (xsimd::abs(px) <= pw) & (xsimd::abs(py) <= pw) & (pz >= zero) & (pz <= pw) & (pw - pw == zero);
@@ -155,7 +155,7 @@ simd::LaneBits snap_vertices(const DrawConstants& dc, const float* const* rows, 
   iy.store_aligned(out.Y);
   (xsimd::batch_cast<float>(ix) * Float(1.0f / kSubpixelsPerPixel)).store_aligned(out.x);
   (xsimd::batch_cast<float>(iy) * Float(1.0f / kSubpixelsPerPixel)).store_aligned(out.y);
-  xsimd::fma(pz * rw, Float(dc.max_depth - dc.min_depth), Float(dc.min_depth)).store_aligned(out.z);
+  simd::fma(pz * rw, Float(dc.max_depth - dc.min_depth), Float(dc.min_depth)).store_aligned(out.z);
   rw.store_aligned(out.inv_w);
   in_view = simd::to_bits(view);
   return simd::to_bits(snappable);

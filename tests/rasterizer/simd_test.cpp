@@ -188,5 +188,24 @@ TEST(Simd, IntSelectTakesWholeLanes) {
   }
 }
 
+TEST(Simd, FmaRoundsOnce) {
+  // (1 + 2^-23)^2 - (1 + 2^-22) is exactly 2^-46: a multiply rounded before the add gives 0.
+  const float a = 1.0f + 0x1p-23f, c = -(1.0f + 0x1p-22f);
+  float got[kLanes];
+  simd::fma(Float(a), Float(a), Float(c)).store_unaligned(got);
+  for (int l = 0; l < kLanes; ++l) EXPECT_EQ(got[l], 0x1p-46f) << "lane " << l;
+  simd::fnma(Float(a), Float(a), Float(-c)).store_unaligned(got);
+  for (int l = 0; l < kLanes; ++l) EXPECT_EQ(got[l], -0x1p-46f) << "lane " << l;
+  // Random lanes against std::fma.
+  std::mt19937 rng(11);
+  std::uniform_real_distribution<float> u(-4.0f, 4.0f);
+  for (int round = 0; round < kRounds; ++round) {
+    float x[kLanes], y[kLanes], z[kLanes];
+    for (int l = 0; l < kLanes; ++l) x[l] = u(rng), y[l] = u(rng), z[l] = u(rng);
+    simd::fma(Float::load_unaligned(x), Float::load_unaligned(y), Float::load_unaligned(z)).store_unaligned(got);
+    for (int l = 0; l < kLanes; ++l) ASSERT_EQ(got[l], std::fma(x[l], y[l], z[l])) << "lane " << l;
+  }
+}
+
 }  // namespace
 }  // namespace luxel::rasterizer

@@ -45,7 +45,7 @@ inline const StampLanes& stamp_lanes() {
 }
 
 inline Float eval_plane(const Plane& p, const Float& dx, const Float& dy) {
-  return xsimd::fma(Float(p.dqdx), dx, xsimd::fma(Float(p.dqdy), dy, Float(p.q0)));
+  return simd::fma(Float(p.dqdx), dx, simd::fma(Float(p.dqdy), dy, Float(p.q0)));
 }
 
 /// Where a draw tests depth and stencil, fixed per draw. The common early cases have their own
@@ -90,11 +90,13 @@ class TileRasterizer {
       sample_X_[s] = lanes_.x_sub + Int(sample_x_[s]);
       sample_Y_[s] = lanes_.y_sub + Int(sample_y_[s]);
       sample_XY_[s] = sample_X_[s] | (sample_Y_[s] << 16);
-      for (int phase = 0; phase < kDepthPhases; ++phase)
+      for (int phase = 0; phase < kPlanePhases; ++phase)
         sample_dx_[phase][s] =
             simd::lanes([&](int l) { return phase * simd::kStampWidth + simd::lane_x(l) + sample_x_[s] / 256.0f; });
       sample_dy_[s] = simd::lanes([&](int l) { return simd::lane_y(l) + sample_y_[s] / 256.0f; });
     }
+    for (int phase = 0; phase < kPlanePhases; ++phase)
+      block_center_x_[phase] = Float(float(phase * simd::kStampWidth)) + lanes_.center_x;
     simple_depth_ = depth_ && !plan.stencil;
     if (!color_ || !plan.color_write_mask) {
       color_write_ = ColorWrite::None;
@@ -147,12 +149,13 @@ class TileRasterizer {
     return simd::mask_of(x >= Int(clip_x0_)) & simd::mask_of(x < Int(clip_x1_)) & simd::mask_of(y >= Int(clip_y0_)) &
            simd::mask_of(y < Int(clip_y1_));
   }
-  /// Depth is the plane at the corner of the stamp's depth block (kDepthBlockWidth x 2 pixels)
-  /// plus each sample's offset from that corner: the same two terms, rounded the same way, for
-  /// any stamp width, so that depth does not depend on the lane count (ISA) a build has.
-  static constexpr int kDepthBlockWidth = 8;
-  static constexpr int kDepthPhases = kDepthBlockWidth / simd::kStampWidth;  ///< stamps per block
-  static_assert(kDepthPhases >= 1 && kDepthBlockWidth % simd::kStampWidth == 0);
+  /// Depth and the interpolants are planes evaluated at offsets from the corner of the stamp's
+  /// block (kPlaneBlockWidth x 2 pixels), not from the stamp's own corner: the same terms,
+  /// rounded the same way, for any stamp width, so that neither depends on the lane count (ISA)
+  /// a build has.
+  static constexpr int kPlaneBlockWidth = 8;
+  static constexpr int kPlanePhases = kPlaneBlockWidth / simd::kStampWidth;  ///< stamps per block
+  static_assert(kPlanePhases >= 1 && kPlaneBlockWidth % simd::kStampWidth == 0);
   struct StampDepth {
     float corner;  ///< the plane at the block's corner, relative to the reference vertex
     int phase;     ///< which stamp of its block
@@ -173,7 +176,7 @@ class TileRasterizer {
   }
   StampDepth stamp_depth(const TriangleSetup& t, int px, int py) const {
     if (constant_depth_) return {0.0f, 0};
-    const int block_x = px & ~(kDepthBlockWidth - 1);
+    const int block_x = px & ~(kPlaneBlockWidth - 1);
     return {std::fma(t.z.dqdx, float(block_x) - t.ref_x, t.z.dqdy * (float(py) - t.ref_y)),
             (px - block_x) / simd::kStampWidth};
   }
@@ -224,11 +227,12 @@ class TileRasterizer {
   int sample_x_[S], sample_y_[S];
   Int sample_X_[S], sample_Y_[S];      ///< subpixels from the stamp's corner to each lane's sample
   Int sample_XY_[S];                   ///< the same, X in the low 16 bits and Y in the high (dot_halves)
-  Float sample_dx_[kDepthPhases][S];  ///< the same in pixels, from the corner of the stamp's depth block
+  Float sample_dx_[kPlanePhases][S];  ///< the same in pixels, from the corner of the stamp's block
+  Float block_center_x_[kPlanePhases];  ///< pixel centers' x from the corner of the stamp's block
   Float sample_dy_[S];
   /// The current triangle's depth at each sample of each stamp of a depth block whose corner is
   /// on the reference vertex.
-  Float sample_z_[kDepthPhases][S];
+  Float sample_z_[kPlanePhases][S];
   /// The current triangle has the same depth at every sample (FastPath::ConstantDepth):
   /// constant_z_, clamped, and sample_z_ is not set.
   bool constant_depth_ = false;
@@ -249,9 +253,9 @@ void TileRasterizer<PS, N, kPath, S>::triangle(const TriangleSetup& t) {
     constant_z_ = clamp_depth(Float(t.z.q0), Float(min_depth_), Float(max_depth_));
   } else if (depth_test_) {
     const Float z0(t.z.q0), dzdx(t.z.dqdx), dzdy(t.z.dqdy);
-    for (int phase = 0; phase < kDepthPhases; ++phase)
+    for (int phase = 0; phase < kPlanePhases; ++phase)
       for (int s = 0; s < S; ++s)
-        sample_z_[phase][s] = xsimd::fma(dzdx, sample_dx_[phase][s], xsimd::fma(dzdy, sample_dy_[s], z0));
+        sample_z_[phase][s] = simd::fma(dzdx, sample_dx_[phase][s], simd::fma(dzdy, sample_dy_[s], z0));
   }
   const int sx0 = x0 & ~(simd::kStampWidth - 1), sy0 = y0 & ~(simd::kStampHeight - 1);
   if (t.small()) {
@@ -555,10 +559,10 @@ void TileRasterizer<PS, N, kPath, S>::interpolate(const TriangleSetup& t, const 
   const Float b1 = eval_plane(bary.b1_w, cx, cy) * w, b2 = eval_plane(bary.b2_w, cx, cy) * w;
   const float* a = t.varying_deltas();
   for (int i = 0; i < N; ++i, a += 12) {  // a0 (4 floats), a1 - a0, a2 - a0
-    in.varyings[i].x = xsimd::fma(b2, Float(a[8]), xsimd::fma(b1, Float(a[4]), Float(a[0])));
-    in.varyings[i].y = xsimd::fma(b2, Float(a[9]), xsimd::fma(b1, Float(a[5]), Float(a[1])));
-    in.varyings[i].z = xsimd::fma(b2, Float(a[10]), xsimd::fma(b1, Float(a[6]), Float(a[2])));
-    in.varyings[i].w = xsimd::fma(b2, Float(a[11]), xsimd::fma(b1, Float(a[7]), Float(a[3])));
+    in.varyings[i].x = simd::fma(b2, Float(a[8]), simd::fma(b1, Float(a[4]), Float(a[0])));
+    in.varyings[i].y = simd::fma(b2, Float(a[9]), simd::fma(b1, Float(a[5]), Float(a[1])));
+    in.varyings[i].z = simd::fma(b2, Float(a[10]), simd::fma(b1, Float(a[6]), Float(a[2])));
+    in.varyings[i].w = simd::fma(b2, Float(a[11]), simd::fma(b1, Float(a[7]), Float(a[3])));
   }
 }
 
@@ -603,7 +607,10 @@ void TileRasterizer<PS, N, kPath, S>::shade_stamp(const TriangleSetup& t, int px
   in.y = Float(float(py)) + lanes_.center_y;
   if constexpr (N > 0) {
     // Offsets of the pixel centers from the triangle's reference vertex.
-    const Float cx = Float(float(px) - t.ref_x) + lanes_.center_x, cy = Float(float(py) - t.ref_y) + lanes_.center_y;
+    // (kPlaneBlockWidth: the block's corner, so that the rounding is the same for any stamp width)
+    const int block_x = px & ~(kPlaneBlockWidth - 1);
+    const Float cx = Float(float(block_x) - t.ref_x) + block_center_x_[(px - block_x) / simd::kStampWidth];
+    const Float cy = Float(float(py) - t.ref_y) + lanes_.center_y;
     interpolate(t, cx, cy, in);
   }
   in.live = simd::sign_bits(live);
