@@ -113,13 +113,14 @@ TEST(SourceWater, IntegerHdrReflectionKeepsFourTimesOverbrightThroughAnSrgbTarge
   const float s = 1.5f;
   WaterMaterial m;
   m.reflect_tint = glm::vec3(1.0f);
+  m.exposure = WaterReflectionExposure::sdk_fixed;
   const WaterParams p = water_constants(m, HdrType::integer, ToneMapConstants::for_scale(s));
   EXPECT_EQ(p.reflect_tint, glm::vec4(4.0f, 4.0f, 4.0f, 1.0f));
-  EXPECT_EQ(water_reflection_scale(s, HdrType::integer), 0.25f * s);
-  EXPECT_EQ(water_reflection_scale(s, HdrType::none), s);
+  EXPECT_EQ(water_reflection_scale(s, HdrType::integer, m), 0.25f * s);
+  EXPECT_EQ(water_reflection_scale(s, HdrType::none, m), s);
   for (float radiance : {0.05f, 0.5f, 1.0f, 2.0f, 2.6f, 5.0f}) {
     rasterizer::Texture target = rasterizer::Texture::create_2d(4, 4, rasterizer::TextureFormat::RGBA8_sRGB, 1);
-    const float written = water_reflection_scale(s, HdrType::integer) * radiance;  // FinalOutput of the reflection view
+    const float written = water_reflection_scale(s, HdrType::integer, m) * radiance;  // FinalOutput of the reflection view
     target.upload(0, std::vector<glm::vec4>(16, glm::vec4(written, written, written, 1.0f)));
     WaterParams q = p;
     q.reflection.texture = &target;
@@ -139,6 +140,7 @@ TEST(SourceWater, TintsGoThroughMathlibGammaToLinear) {
   WaterMaterial m;
   m.reflect_tint = glm::vec3(0.5f, 0.96f, 0.0f);
   m.refract_tint = glm::vec3(0.5f, 2.0f, 0.95f);
+  m.exposure = WaterReflectionExposure::sdk_fixed;
   const WaterParams p = water_constants(m, HdrType::integer, ToneMapConstants{});
   EXPECT_NEAR(p.reflect_tint.x, 4.0 * std::pow(128.0 / 255.0, 2.2), 1e-6) << "table entry round(0.5 x 255) = 128";
   EXPECT_EQ(p.reflect_tint.y, 4.0f) << "0.95 and up is exactly 1";
@@ -150,6 +152,7 @@ TEST(SourceWater, TintsGoThroughMathlibGammaToLinear) {
 TEST(SourceWater, RefractTintAndOverbrightApplyOnlyOnTheBlurryPath) {
   WaterMaterial m;
   m.refract_tint = glm::vec3(0.5f);
+  m.exposure = WaterReflectionExposure::sdk_fixed;
   const WaterParams p = water_constants(m, HdrType::integer, ToneMapConstants{});
   const glm::vec4 refraction(0.5f, 0.5f, 0.5f, 0.05f);  // shallow: F = 0 -> pure refraction, no fog
   const float sharp = with_constant_targets<kBoth>(flat_inputs({1, 0, 0}), p, refraction, glm::vec3(0.1f)).x;
@@ -189,7 +192,8 @@ testing::LaneComparison compare_water(int hard_every, uint32_t seed) {
   m.fog_color = glm::vec3(0.1f, 0.2f, 0.3f);
   m.refract_amount = 0.05f;
   m.fog_end = 300.0f;
-  const WaterParams p = water_constants(m, HdrType::integer, ToneMapConstants::for_scale(0.9f));
+  WaterParams p = water_constants(m, HdrType::integer, ToneMapConstants::for_scale(0.9f));
+  p.pixel_fog = testing::lane_test_fog();
   auto shade = [&]<class L>(const auto& get) -> float4<L> {
     WaterNormalTexels<L> t;
     t.n0 = float4<L>(get(0), get(1), get(2), get(3));
@@ -200,6 +204,7 @@ testing::LaneComparison compare_water(int hard_every, uint32_t seed) {
     in.reflect_refract = float4<L>(get(15), get(16), get(17), get(18));
     in.w = get(19);
     in.proj_z = get(20);
+    in.fog = FogInputs<L>{get(21), get(20)};
     // Smooth analytic render targets of the coordinates (alpha = depth in [0, 1]).
     auto refraction = [](const float2<L>& uv) {
       return float4<L>(saturate(uv.x), saturate(uv.y), L(0.5f), saturate(uv.x * 0.5f + uv.y * 0.5f));
@@ -211,7 +216,8 @@ testing::LaneComparison compare_water(int hard_every, uint32_t seed) {
   for (int i = 12; i < 15; ++i) draws[i] = Draw{-1.0f, 1.0f, hard_every};
   draws[19] = Draw{0.5f, 2.0f, hard_every};
   draws[20] = Draw{0.0f, 400.0f, hard_every};
-  return compare_lanes<21>(shade, draws, 256, seed);
+  draws.push_back(Draw{-10.0f, 30.0f, hard_every});
+  return compare_lanes<22>(shade, draws, 256, seed);
 }
 
 TEST(SourceWater, SimdWithinOneStepOfScalarForEveryCombo) {

@@ -51,7 +51,7 @@ inline ToneMapConstants ToneMapConstants::for_scale(float s, float lightmap_scal
 }
 
 /// FinalOutput (SOURCE_FACTS §6.3 steps 1-2): rgb x the tone-map scale of type T; alpha passes.
-/// Fog (step 3) is not implemented here. Returns the linear color the output merger encodes.
+/// Returns the linear color the output merger encodes; fogged_output() (fog.hpp) adds step 3.
 template <ToneMap T, Lane L>
 inline float4<L> final_output(const float4<L>& color, const ToneMapConstants& tm) {
   if constexpr (T == ToneMap::none) {
