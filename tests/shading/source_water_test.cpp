@@ -249,3 +249,68 @@ TEST(SourceWater, EveryComboFitsTheModelsItExistsOn) {
 
 }  // namespace
 }  // namespace luxel::shading::source
+
+namespace luxel::shading::source {
+namespace {
+
+/// The reflection through a real 8-bit sRGB target: the view writes scale x radiance (grey), the
+/// water reads it back and tints it.
+float4<float> reflected(const WaterMaterial& m, float s, float radiance) {
+  rasterizer::Texture target = rasterizer::Texture::create_2d(4, 4, rasterizer::TextureFormat::RGBA8_sRGB, 1);
+  const float written = water_reflection_scale(s, HdrType::integer, m) * radiance;
+  target.upload(0, std::vector<glm::vec4>(16, glm::vec4(written, written, written, 1.0f)));
+  WaterParams p = water_constants(m, HdrType::integer, ToneMapConstants::for_scale(s));
+  p.reflection.texture = &target;
+  return water_combine<WaterCombo{true, false, false, false, false}>(
+      WaterNormalTexels<float>{}, flat_inputs({0, 0, 1}), p, [](const float2<float>&) { return float4<float>(0.0f); },
+      [&](const float2<float>& uv) { return tex2D(p.reflection, uv); });
+}
+
+TEST(SourceWater, ReflectivityExposureRendersTheViewAtScaleTimesTheTintsLargestChannel) {
+  WaterMaterial m;
+  m.reflect_tint = glm::vec3(0.5f, 0.8f, 0.3f);  // gamma; reflectivity = the green channel's
+  EXPECT_EQ(m.exposure, WaterReflectionExposure::reflectivity) << "the default";
+  const double t[3] = {std::pow(128.0 / 255.0, 2.2), std::pow(204.0 / 255.0, 2.2), std::pow(77.0 / 255.0, 2.2)};
+  const double rho = t[1];
+  const float s = 1.5f;
+  EXPECT_NEAR(water_reflectivity(m), rho, 1e-6);
+  EXPECT_NEAR(water_reflection_scale(s, HdrType::integer, m), s * rho, 1e-6);
+  EXPECT_EQ(water_reflection_scale(s, HdrType::none, m), s) << "LDR keeps the frame's exposure";
+  const WaterParams p = water_constants(m, HdrType::integer, ToneMapConstants::for_scale(s));
+  for (int c = 0; c < 3; ++c) EXPECT_NEAR(p.reflect_tint[c], t[c] / rho, 1e-6) << c;
+  EXPECT_EQ(p.fog_params.z, 1.0f) << "no x4 to undo";
+  // In range (s rho L = 0.46): the water shows t s L, to the target's 8-bit precision.
+  const float4<float> in_range = reflected(m, s, 0.5f);
+  for (int c = 0; c < 3; ++c) EXPECT_NEAR(in_range[c], t[c] * s * 0.5, t[c] * s * 0.5 * 0.01) << c;
+  // Past the display's range for green (t_g s L = 1.1): green shows exactly 1, where the
+  // display clips it anyway; red and blue stop at t / rho.
+  const float4<float> over = reflected(m, s, 1.2f);
+  EXPECT_FLOAT_EQ(over.y, 1.0f);
+  EXPECT_NEAR(over.x, t[0] / rho, 1e-6);
+  // The SDK's pair keeps the 4x headroom instead: red is still t_r s L there.
+  WaterMaterial fixed = m;
+  fixed.exposure = WaterReflectionExposure::sdk_fixed;
+  EXPECT_NEAR(water_reflection_scale(s, HdrType::integer, fixed), 0.25 * s, 1e-7);
+  EXPECT_NEAR(reflected(fixed, s, 1.2f).x, t[0] * s * 1.2, t[0] * s * 1.2 * 0.01);
+}
+
+TEST(SourceWater, IntegerSdkPathClampsTintsAboveOneLdrAndReflectivityDoNot) {
+  WaterMaterial m;
+  m.reflect_tint = glm::vec3(2.0f, 0.5f, 2.0f);  // red and blue above 1: linear as authored
+  const double g = std::pow(128.0 / 255.0, 2.2);
+  const WaterParams ldr = water_constants(m, HdrType::none, ToneMapConstants{});
+  EXPECT_EQ(ldr.reflect_tint.x, 2.0f) << "BaseVSShader passes values above 1 through";
+  WaterMaterial fixed = m;
+  fixed.exposure = WaterReflectionExposure::sdk_fixed;
+  const WaterParams integer = water_constants(fixed, HdrType::integer, ToneMapConstants{});
+  EXPECT_EQ(integer.reflect_tint.x, 4.0f) << "mathlib GammaToLinear: 1 from 0.95 up, then x4";
+  EXPECT_NEAR(integer.reflect_tint.y, 4.0 * g, 1e-6);
+  // Net gain of the red channel (tint x the view's exposure / s): LDR 2, INTEGER sdk_fixed 1.
+  EXPECT_NEAR(integer.reflect_tint.x * water_reflection_scale(1.0f, HdrType::integer, fixed), 1.0, 1e-7);
+  const WaterParams by_reflectivity = water_constants(m, HdrType::integer, ToneMapConstants{});
+  EXPECT_NEAR(by_reflectivity.reflect_tint.x * water_reflection_scale(1.0f, HdrType::integer, m), 2.0, 1e-6);
+  EXPECT_NEAR(by_reflectivity.reflect_tint.y * water_reflection_scale(1.0f, HdrType::integer, m), g, 1e-6);
+}
+
+}  // namespace
+}  // namespace luxel::shading::source
