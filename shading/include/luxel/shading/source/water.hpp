@@ -31,8 +31,10 @@
 //  - reflectivity (luxel's default, the 2006 course notes' §8.5): the view renders with s x rho,
 //    rho = the water's reflectivity, the largest channel of the linear reflect tint, and the
 //    shader's tint is the linear tint / rho (largest channel 1). The target then holds what the
-//    water will show (rho s L for the brightest channel), so it clips only where the water's own
-//    output clips, and its 8 bits are spent on the displayed range. rho <= 0 (no reflection) keeps s.
+//    water will show in its brightest channel (rho s L), so that channel clips exactly where the
+//    water's output clips anyway, and the target's 8 bits are spent on the displayed range. The
+//    other channels clip with it (a grey radiance past the range shows tint / rho, the tint's hue)
+//    where sdk_fixed keeps them up to s L = 4. rho <= 0 (no reflection) keeps s.
 //  - sdk_fixed (water.cpp, viewrender.cpp; SOURCE_FACTS §6.4: the SDK has no exposure that depends
 //    on the reflectivity): the view renders with 0.25 s and the tint is GammaToLinear(tint) x 4, so
 //    a reflected radiance L arrives as s L up to s L = 4 and clips there, whatever the tint; 2 bits
