@@ -7,6 +7,7 @@
 #include "source_support.hpp"
 
 #include "luxel/shading/source/light_folding.hpp"
+#include "luxel/shading/source/unlit_generic.hpp"
 #include "luxel/shading/source/vertexlit_vertex_shader.hpp"
 
 #include <gtest/gtest.h>
@@ -138,6 +139,24 @@ TEST(SourceVertexLitVs, PositionNormalEyeVectorAndVertexFog) {
   // Fog visibility max(1 - 0.7, (250 - z) / 200) at an intermediate z (~105).
   EXPECT_NEAR(o.fog, std::max(0.3, (250.0 - proj_z) / 200.0), 1e-6);
   EXPECT_EQ(o.uv.x, 0.25f);
+}
+
+TEST(SourceVertexLitVs, ThePixelShaderMultipliesTheAlbedoByTheVertexLighting) {
+  // vertexlit_and_unlit_generic_ps2x with DIFFUSELIGHTING: albedo x $color x i.color, tone-mapped.
+  const VertexLitVsOutputs<float> o = run<kTwoHL>(test_params());
+  constexpr UnlitCombo kLit{UnlitDetail::none, false, UnlitEnvmapMask::none, false, true};
+  UnlitGenericParams p;
+  p.modulation = glm::vec4(0.9f, 0.8f, 0.6f, 1.0f);
+  p.tonemap = ToneMapConstants::for_scale(1.25f);
+  UnlitTexels<float> t;
+  t.base = float4<float>(0.7f, 0.5f, 0.3f, 0.75f);
+  UnlitInputs<float> in;
+  in.vertex_color = float4<float>(o.lighting, 1.0f);
+  const float4<float> c = unlit_generic_combine<kLit>(t, in, p, [](const float3<float>& r) { return r; });
+  const DVec e = expected_lighting(true);
+  const double base[3] = {0.7, 0.5, 0.3}, mod[3] = {0.9, 0.8, 0.6};
+  for (int k = 0; k < 3; ++k) EXPECT_NEAR(c[k], base[k] * mod[k] * e[k] * 1.25, 1e-5) << k;
+  EXPECT_NEAR(c.w, 0.75, 1e-7);
 }
 
 TEST(SourceVertexLitVs, AgreesWithThePerPixelPathForAUnitNormal) {
