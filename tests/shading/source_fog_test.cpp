@@ -197,7 +197,7 @@ TEST(SourceFog, EveryFoggedPixelShaderBlendsItsOwnColor) {
     in.tangent = float3<float>(1, 0, 0);
     in.binormal = float3<float>(0, 1, 0);
     in.world_pos = float3<float>(0.0f, 0.0f, at.world_z);
-    in.fog = at;
+    in.proj_z = at.proj_z;
     return by_fog<VertexLitWithFog>(f, [&]<VertexLitCombo C>() { return vertexlit_combine<C>(t, in, p); });
   });
   expect_shader_fogs("Water", [](Fog f, const FogConstants& fog, const FogInputs<float>& at) {
@@ -208,7 +208,7 @@ TEST(SourceFog, EveryFoggedPixelShaderBlendsItsOwnColor) {
     in.reflect_refract = float4<float>(0.25f, 0.5f, 0.75f, 0.125f);
     in.w = 1.0f;
     in.proj_z = at.proj_z;
-    in.fog = at;
+    in.world_z = at.world_z;
     auto target = [](const float2<float>& uv) { return float4<float>(uv.x, uv.y, 0.5f, 0.6f); };
     return by_fog<WaterWithFog>(f, [&]<WaterCombo C>() {
       return water_combine<C>(WaterNormalTexels<float>{}, in, p, target, target);

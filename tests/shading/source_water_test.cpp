@@ -204,7 +204,7 @@ testing::LaneComparison compare_water(int hard_every, uint32_t seed) {
     in.reflect_refract = float4<L>(get(15), get(16), get(17), get(18));
     in.w = get(19);
     in.proj_z = get(20);
-    in.fog = FogInputs<L>{get(21), get(20)};
+    in.world_z = get(21);
     // Smooth analytic render targets of the coordinates (alpha = depth in [0, 1]).
     auto refraction = [](const float2<L>& uv) {
       return float4<L>(saturate(uv.x), saturate(uv.y), L(0.5f), saturate(uv.x * 0.5f + uv.y * 0.5f));

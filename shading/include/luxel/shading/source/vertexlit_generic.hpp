@@ -171,7 +171,7 @@ struct VertexLitInputs {
   float3<L> normal;             ///< world space, interpolated (not unit)
   float3<L> tangent, binormal;  ///< bump only
   float4<L> attenuation{1.0f};  ///< per-vertex attenuation of lights 0..3 (pixel_attenuation = false)
-  FogInputs<L> fog{};
+  L proj_z = L(0.0f);           ///< projected z, the .w beside world_pos (pixel fog combos)
 };
 
 /// The SDK's attenuation (§3.2, VertexAttenInternal) of one light at a point, over any lane:
@@ -304,7 +304,8 @@ inline float4<L> vertexlit_combine(const VertexLitTexels<L>& t, const VertexLitI
     }
     color = color + spec * tint_boost.rgb();
   }
-  return fogged_output<ToneMap::linear, C.fog>(float4<L>(color, t.base.w * modulation.w), p.tonemap, in.fog, p.fog);
+  const FogInputs<L> fog{in.world_pos.z, in.proj_z};
+  return fogged_output<ToneMap::linear, C.fog>(float4<L>(color, t.base.w * modulation.w), p.tonemap, fog, p.fog);
 }
 
 template <VertexLitCombo C, Lane L>
@@ -324,10 +325,7 @@ inline VertexLitInputs<Counted> vertexlit_counted_inputs(CountedInputs& in) {
     r.binormal = in.vector<3>();
   }
   if constexpr (!C.pixel_attenuation && C.lights > 0) r.attenuation = in.vector<4>();
-  if constexpr (C.fog == Fog::range || C.fog == Fog::height) {
-    r.fog.world_z = world_pos_proj_z.z;
-    r.fog.proj_z = world_pos_proj_z.w;
-  }
+  r.proj_z = world_pos_proj_z.w;
   return r;
 }
 

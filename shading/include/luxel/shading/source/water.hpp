@@ -180,8 +180,8 @@ struct WaterInputs {
   float3<L> tangent_eye;     ///< eye vector in tangent space, unnormalised
   float4<L> reflect_refract; ///< projective: reflection .xy, refraction .wz (times w)
   L w;                       ///< projection w
-  L proj_z;                  ///< projection z (below-water fog)
-  FogInputs<L> fog{};        ///< world z and projected z (the epilogue's pixel fog)
+  L proj_z;                  ///< projection z (below-water fog, and the epilogue's pixel fog)
+  L world_z = L(0.0f);       ///< world z (the epilogue's height fog)
 };
 
 /// The normal map read (texels only: the rest depends on it).
@@ -249,7 +249,8 @@ inline float4<L> water_combine(const WaterNormalTexels<L>& t, const WaterInputs<
   } else {
     result = refract;
   }
-  return fogged_output<ToneMap::none, C.fog>(float4<L>(result, L(1.0f)), p.tonemap, in.fog, p.pixel_fog);
+  const FogInputs<L> pixel_fog{in.world_z, in.proj_z};
+  return fogged_output<ToneMap::none, C.fog>(float4<L>(result, L(1.0f)), p.tonemap, pixel_fog, p.pixel_fog);
 }
 
 template <WaterCombo C, Lane L>
@@ -279,7 +280,7 @@ inline WaterInputs<Counted> water_counted_inputs(CountedInputs& in) {
   r.w = in.scalar();
   r.proj_z = in.scalar();
   if constexpr (C.multitexture) r.extra_bump_uv = in.vector<4>();
-  r.fog = fog_counted_inputs<C.fog>(in);
+  if constexpr (C.fog == Fog::height) r.world_z = in.scalar();
   return r;
 }
 
