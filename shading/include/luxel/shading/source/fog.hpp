@@ -27,7 +27,7 @@
 //  - the vertex path's floor c16.z is 1 - maxDensity (RangeFog's max() is on visibility, 1 = clear).
 //
 // Scenes describe fog with FogSettings (no fog by default: the SDK draws unfogged unless a fog
-// controller is active). Which combo a material gets: fog_for_model().
+// controller is active); range_fog_for_model() names the combo that draws range fog on a model.
 
 #include "luxel/shading/source/common.hpp"
 
