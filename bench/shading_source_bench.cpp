@@ -85,6 +85,8 @@ void BM_VertexLit(benchmark::State& state) {
     l.position = glm::vec4(2.0f, 1.0f, 3.0f, 1.0f);
   }
   p.phong_params.x = 40.0f;
+  const rasterizer::Texture normalization_cube = normalization_cube_map();  // the ps_2_0 combos
+  p.normalization_cube.texture = &normalization_cube;
   run<L>(state, [&]<class M>(const auto& get) {
     VertexLitTexels<M> t;
     t.base = float4<M>(get(0), get(1), get(2), get(3));
@@ -162,7 +164,8 @@ void BM_LuminanceRange(benchmark::State& state) {
   });
 }
 
-std::string models_of(const VertexLitCombo& c) {
+template <class Combo>
+std::string models_of(const Combo& c) {
   std::string r;
   for (ShaderModel m : kPixelModels)
     if (c.valid(m)) r += std::string(r.empty() ? "" : ",") + std::string(caps(m).name);
@@ -171,7 +174,7 @@ std::string models_of(const VertexLitCombo& c) {
 
 const bool registered = [] {
   for_each_lightmapped_combo([]<LightmappedCombo C>() {
-    const std::string name = "LightmappedGeneric/" + C.name() + "/ps_2_0,ps_2_b,ps_3_0";
+    const std::string name = "LightmappedGeneric/" + C.name() + "/" + models_of(C);
     benchmark::RegisterBenchmark((name + "/simd").c_str(), BM_Lightmapped<simd::Float, C>);
     benchmark::RegisterBenchmark((name + "/scalar").c_str(), BM_Lightmapped<float, C>);
   });
@@ -183,7 +186,7 @@ const bool registered = [] {
     benchmark::RegisterBenchmark((name + "/scalar").c_str(), BM_VertexLit<float, C>);
   });
   for_each_unlit_combo([]<UnlitCombo C>() {
-    const std::string name = "UnlitGeneric/" + C.name() + "/ps_2_0,ps_2_b,ps_3_0";
+    const std::string name = "UnlitGeneric/" + C.name() + "/" + models_of(C);
     benchmark::RegisterBenchmark((name + "/simd").c_str(), BM_Unlit<simd::Float, C>);
     benchmark::RegisterBenchmark((name + "/scalar").c_str(), BM_Unlit<float, C>);
   });

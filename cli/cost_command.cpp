@@ -1,6 +1,8 @@
-// luxel cost [--shader all|lightmapped|vertexlit|unlit|sky|water|luminance] [--pixels N]: every
-// Source shader variant on every pixel-shader model — counted DX9 slots, temps, constants, the
-// model's limits, whether it fits — and measured ns/pixel on the SIMD and scalar lanes (a short
+// luxel cost [--shader all|lightmapped|vertexlit|vertexlit_vs|unlit|sky|water|luminance] [--pixels N]:
+// every Source shader variant (fog variants included) on every shader model it exists on — pixel
+// shaders on ps_2_0 / ps_2_b / ps_3_0, the per-vertex VertexLitGeneric vertex shader on vs_2_0 /
+// vs_3_0 — with counted DX9 slots, temps, constants, the model's limits, whether it fits, and
+// measured ns per pixel (per vertex for vertex shaders) on the SIMD and scalar lanes (a short
 // timing loop: a report, not a benchmark; bench/shading_source_bench.cpp has the careful numbers).
 
 #include "commands.hpp"
@@ -11,6 +13,7 @@
 #include "luxel/shading/source/spherical_harmonics.hpp"
 #include "luxel/shading/source/unlit_generic.hpp"
 #include "luxel/shading/source/vertexlit_generic.hpp"
+#include "luxel/shading/source/vertexlit_vertex_shader.hpp"
 #include "luxel/shading/source/water.hpp"
 
 #include <chrono>
@@ -18,6 +21,7 @@
 #include <iostream>
 #include <memory>
 #include <random>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -94,11 +98,13 @@ void print_row(const char* shader, const std::string& variant, ShaderModel m, co
               c.texture_indirections, limits.c_str(), ok ? "yes" : "NO", simd_ns, scalar_ns);
 }
 
-/// Times one static combo on both lanes and prints a row for every shader model it exists on.
+/// Times one static combo on both lanes and prints a row for every shader model it exists on
+/// (of `models`: the pixel-shader models unless told otherwise).
 template <class Combo, class Shade, class Measure>
-void report_combo(const char* shader, const Combo& combo, Shade&& shade, int inputs, int pixels, Measure&& measure) {
+void report_combo(const char* shader, const Combo& combo, Shade&& shade, int inputs, int pixels, Measure&& measure,
+                  std::span<const ShaderModel> models = src::kPixelModels) {
   const auto [simd_ns, scalar_ns] = time_shader(shade, inputs, pixels);
-  for (ShaderModel m : src::kPixelModels) {
+  for (ShaderModel m : models) {
     if constexpr (requires { combo.valid(m); }) {
       if (!combo.valid(m)) continue;
     }
@@ -133,6 +139,8 @@ void report_vertexlit(int pixels) {
     l.color = glm::vec4(1.0f, 0.8f, 0.6f, 0.0f);
     l.position = glm::vec4(2.0f, 1.0f, 3.0f, 1.0f);
   }
+  const rasterizer::Texture normalization_cube = src::normalization_cube_map();  // the ps_2_0 combos
+  p.normalization_cube.texture = &normalization_cube;
   src::for_each_vertexlit_combo([&]<src::VertexLitCombo C>() {
     auto shade = [&]<class L>(const auto& get) {
       src::VertexLitTexels<L> t;
@@ -148,6 +156,26 @@ void report_vertexlit(int pixels) {
       return src::vertexlit_combine<C>(t, in, p);
     };
     report_combo("VertexLitGeneric", C, shade, 28, pixels, [](ShaderModel m) { return src::measure_vertexlit_generic<C>(m); });
+  });
+}
+
+void report_vertexlit_vs(int pixels) {
+  src::VertexLitVsParams p;
+  for (auto& l : p.lights) {
+    l.color = glm::vec4(1.0f, 0.8f, 0.6f, 0.0f);
+    l.position = glm::vec4(2.0f, 1.0f, 3.0f, 1.0f);
+  }
+  src::for_each_vertexlit_vs_combo([&]<src::VertexLitVsCombo C>() {
+    auto shade = [&]<class L>(const auto& get) {
+      src::VertexLitVsInputs<L> v;
+      v.position = shading::float4<L>(get(0), get(1), get(2), L(1.0f));
+      v.normal = shading::float3<L>(get(3), get(4), get(5));
+      v.uv = shading::float2<L>(get(6), get(7));
+      const src::VertexLitVsOutputs<L> o = src::vertexlit_vertex_shader<C>(v, p);
+      return shading::float4<L>(o.lighting + o.proj_pos.xyz(), o.fog);
+    };
+    report_combo("VertexLitGeneric_vs", C, shade, 8, pixels,
+                 [](ShaderModel m) { return src::measure_vertexlit_vertex_shader<C>(m); }, src::kVertexModels);
   });
 }
 
@@ -245,8 +273,8 @@ void report_ambient_cube() {
 Runner add_cost_command(CLI::App& app) {
   auto options = std::make_shared<CostOptions>();
   CLI::App* cmd = app.add_subcommand("cost", "Print DX9 slot counts, limits and ns/pixel of every Source shader variant");
-  cmd->add_option("--shader", options->shader, "all, lightmapped, vertexlit, unlit, sky, water or luminance")
-      ->check(CLI::IsMember({"all", "lightmapped", "vertexlit", "unlit", "sky", "water", "luminance"}))
+  cmd->add_option("--shader", options->shader, "all, lightmapped, vertexlit, vertexlit_vs, unlit, sky, water or luminance")
+      ->check(CLI::IsMember({"all", "lightmapped", "vertexlit", "vertexlit_vs", "unlit", "sky", "water", "luminance"}))
       ->capture_default_str();
   cmd->add_option("--pixels", options->pixels, "Pixels per timing loop")->check(CLI::Range(64, 1 << 24))->capture_default_str();
   return [cmd, options]() -> int {
@@ -254,6 +282,7 @@ Runner add_cost_command(CLI::App& app) {
     print_header();
     if (options->shader == "all" || options->shader == "lightmapped") report_lightmapped(options->pixels);
     if (options->shader == "all" || options->shader == "vertexlit") report_vertexlit(options->pixels);
+    if (options->shader == "all" || options->shader == "vertexlit_vs") report_vertexlit_vs(options->pixels);
     if (options->shader == "all" || options->shader == "unlit") report_unlit(options->pixels);
     if (options->shader == "all" || options->shader == "sky") report_sky(options->pixels);
     if (options->shader == "all" || options->shader == "water") report_water(options->pixels);

@@ -4,6 +4,10 @@
 
 #include "lanes.hpp"
 
+#include "luxel/shading/source/fog.hpp"
+#include "luxel/shading/source/light_folding.hpp"
+#include "luxel/shading/source/vertexlit_vertex_shader.hpp"
+
 #include <gtest/gtest.h>
 
 #include <array>
@@ -179,13 +183,80 @@ void check_vector_intrinsics() {
       [&](const std::array<float, 6>& a) { return phong(a); }, seed++);
 }
 
+// The Source pieces that are arithmetic only: fog (both pixel types, the blend, the vertex
+// factor and the fixed-function blend) and the per-vertex lighting vertex shader, every output.
+void check_source_pieces() {
+  uint32_t seed = 5000;
+  source::FogSettings settings;
+  settings.start = 10.0f;
+  settings.end = 300.0f;
+  settings.max_density = 0.9f;
+  settings.color = glm::vec3(0.3f, 0.5f, 0.8f);
+  settings.water_z = 1.5f;
+  const source::FogConstants fog = source::fog_constants(settings, glm::vec3(0.0f, 0.0f, 3.0f), 1.2f);
+  const glm::vec4 c16 = source::vertex_fog_constant(settings);
+  const source::ToneMapConstants tm = source::ToneMapConstants::for_scale(0.8f);
+  auto fog_body = [&](const auto& a) {
+    using L = std::remove_cvref_t<decltype(a[0])>;
+    const source::FogInputs<L> in{a[0], a[1] * 100.0f};
+    const float4<L> color(a[2], a[3], a[4], a[5]);
+    const float4<L> range = source::fogged_output<source::ToneMap::linear, source::Fog::range>(color, tm, in, fog);
+    const float4<L> height = source::fogged_output<source::ToneMap::linear, source::Fog::height>(color, tm, in, fog);
+    const L v = source::vertex_fog(in.proj_z, c16);
+    const float4<L> fixed = source::fixed_function_fog(color, v, fog);
+    return std::array<L, 10>{range.x, range.y, range.z, range.w, height.x, height.y, height.z, v, fixed.x, fixed.z};
+  };
+  expect_lanes_agree<6, 10>(
+      "fog", kBatches, [&](const std::array<simd::Float, 6>& a) { return fog_body(a); },
+      [&](const std::array<float, 6>& a) { return fog_body(a); }, seed++);
+
+  source::VertexLitVsParams vs;
+  vs.model = {glm::vec4(0.8f, -0.6f, 0.0f, 1.0f), glm::vec4(0.6f, 0.8f, 0.0f, -2.0f), glm::vec4(0.0f, 0.0f, 1.0f, 0.5f)};
+  vs.view_proj[2][2] = 1.5f;
+  vs.view_proj[3][2] = 20.0f;
+  vs.eye_position = glm::vec4(1.0f, -4.0f, 2.0f, 1.0f);
+  vs.fog = c16;
+  for (int j = 0; j < 6; ++j) vs.ambient.color[j] = glm::vec3(0.1f * j, 0.3f, 0.05f * (6 - j));
+  source::LightDesc point, spot, sun, far;
+  point.position = glm::vec3(1.0f, 2.0f, 1.0f);
+  point.color = glm::vec3(3.0f, 2.0f, 1.0f);
+  point.attenuation = glm::vec3(0.0f, 0.0f, 1.0f);
+  spot.type = source::LightDesc::Type::spot;
+  spot.position = glm::vec3(0.0f, 0.0f, 3.0f);
+  spot.cos_inner = 0.9f;
+  spot.cos_outer = 0.5f;
+  spot.color = glm::vec3(50.0f);
+  sun.type = source::LightDesc::Type::directional;
+  sun.direction = glm::vec3(0.3f, -1.0f, -0.2f);
+  far.position = glm::vec3(-5.0f, 0.0f, 0.0f);
+  vs.lights = {source::to_local_light(point), source::to_local_light(spot), source::to_local_light(sun),
+               source::to_local_light(far)};
+  auto vs_body = [&]<source::VertexLitVsCombo C>(const auto& a) {
+    using L = std::remove_cvref_t<decltype(a[0])>;
+    source::VertexLitVsInputs<L> in;
+    in.position = float4<L>(a[0], a[1], a[2], L(1.0f));
+    in.normal = float3<L>(a[3], a[4], a[5]);
+    const source::VertexLitVsOutputs<L> o = source::vertexlit_vertex_shader<C>(in, vs);
+    return std::array<L, 9>{o.proj_pos.z, o.lighting.x, o.lighting.y, o.lighting.z, o.eye_vector.x,
+                            o.world_normal.y, o.world_pos_proj_z.w, o.fog, o.proj_pos.w};
+  };
+  source::for_each_vertexlit_vs_combo([&]<source::VertexLitVsCombo C>() {
+    expect_lanes_agree<6, 9>(
+        "vertexlit vertex shader " + C.name(), kBatches,
+        [&](const std::array<simd::Float, 6>& a) { return vs_body.template operator()<C>(a); },
+        [&](const std::array<float, 6>& a) { return vs_body.template operator()<C>(a); }, seed++);
+  });
+}
+
 TEST(LanesAgree, ScalarIntrinsicsBitExact) { check_scalar_intrinsics(); }
+TEST(LanesAgree, SourceFogAndVertexLightingBitExact) { check_source_pieces(); }
 TEST(LanesAgree, VectorIntrinsicsBitExact) { check_vector_intrinsics(); }
 
 TEST(LanesAgree, BitExactWithFlushToZeroToo) {
   simd::ScopedFlushDenormals ftz;  // the mode every rasterizer worker shades in
   check_scalar_intrinsics();
   check_vector_intrinsics();
+  check_source_pieces();
 }
 
 TEST(LanesAgree, ZeroLengthAndDenormalVectors) {

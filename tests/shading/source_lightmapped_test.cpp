@@ -206,6 +206,7 @@ testing::LaneComparison compare_lightmapped(int hard_every, uint32_t seed) {
   p.envmap_contrast_saturation = glm::vec4(0.4f, 0.6f, 0.0f, 0.0f);
   p.fresnel = fresnel_constant(0.1f);
   p.tonemap = ToneMapConstants::for_scale(0.8f, 1.0f, 1.0f);
+  p.fog = testing::lane_test_fog();
   auto shade = [&]<class L>(const auto& get) -> float4<L> {
     LightmappedTexels<L> t;
     t.base = float4<L>(get(0), get(1), get(2), get(3));
@@ -217,12 +218,15 @@ testing::LaneComparison compare_lightmapped(int hard_every, uint32_t seed) {
     in.binormal = float3<L>(get(26), get(27), get(28));
     in.normal = float3<L>(get(29), get(30), get(31));
     in.eye_vector = float3<L>(get(32), get(33), get(34));
+    in.fog = FogInputs<L>{get(35), get(36)};
     return lightmapped_generic_combine<C>(t, in, p, [](const float3<L>& r) { return testing::analytic_env(r); });
   };
-  std::vector<Draw> draws(35, Draw{0.0f, 1.0f, hard_every});
+  std::vector<Draw> draws(37, Draw{0.0f, 1.0f, hard_every});
   for (int i = 11; i < 23; ++i) draws[i] = Draw{0.0f, 4.0f, hard_every};
   for (int i = 23; i < 35; ++i) draws[i] = Draw{-1.0f, 1.0f, hard_every};
-  return compare_lanes<35>(shade, draws, 256, seed);
+  draws[35] = Draw{-10.0f, 30.0f, hard_every};
+  draws[36] = Draw{0.0f, 400.0f, hard_every};
+  return compare_lanes<37>(shade, draws, 256, seed);
 }
 
 TEST(SourceLightmapped, SimdWithinOneStepOfScalarForEveryCombo) {
@@ -243,6 +247,7 @@ TEST(SourceLightmapped, SimdWithinOneStepOfScalarForEveryCombo) {
 TEST(SourceLightmapped, EveryComboFitsEveryPixelShaderModel) {
   for_each_lightmapped_combo([&]<LightmappedCombo C>() {
     for (ShaderModel m : kPixelModels) {
+      if (!C.valid(m)) continue;
       const Cost cost = measure_lightmapped_generic<C>(m);
       const Verdict v = fits(cost, caps(m));
       EXPECT_TRUE(v) << C.name() << ": " << v.reason << " (" << describe(cost) << ")";

@@ -5,6 +5,7 @@
 #include "lanes.hpp"
 #include "luxel/rasterizer/texture.hpp"
 #include "luxel/shading/source/common.hpp"
+#include "luxel/shading/source/fog.hpp"
 
 #include <gtest/gtest.h>
 
@@ -82,6 +83,19 @@ LaneComparison compare_lanes(Shade&& shade, const std::vector<Draw>& draws, int 
     }
   }
   return r;
+}
+
+/// Fog constants with every term in play (start, a max density below 1, a non-grey color, a water
+/// plane between the eye and the drawn points), for the fog combos of the lane comparisons; fog
+/// inputs drawn from [-10, 30] (world z) and [0, 400] (projected z) cover both sides of each.
+inline FogConstants lane_test_fog() {
+  FogSettings s;
+  s.start = 10.0f;
+  s.end = 300.0f;
+  s.max_density = 0.9f;
+  s.color = glm::vec3(0.3f, 0.5f, 0.8f);
+  s.water_z = 5.0f;
+  return fog_constants(s, glm::vec3(1.0f, 2.0f, 20.0f), 1.2f);
 }
 
 /// A smooth analytic stand-in for the cube map, over the lane: bright toward +Z, HDR up to 8.

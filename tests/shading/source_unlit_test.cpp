@@ -146,6 +146,7 @@ testing::LaneComparison compare_unlit(int hard_every, uint32_t seed) {
   p.detail_blend.w = 0.8f;
   p.shader_controls.w = 1.0f;
   p.tonemap = ToneMapConstants::for_scale(1.1f);
+  p.fog = testing::lane_test_fog();
   auto shade = [&]<class L>(const auto& get) -> float4<L> {
     UnlitTexels<L> t;
     t.base = float4<L>(get(0), get(1), get(2), get(3));
@@ -155,11 +156,14 @@ testing::LaneComparison compare_unlit(int hard_every, uint32_t seed) {
     in.vertex_color = float4<L>(get(11), get(12), get(13), get(14));
     in.eye_vector = float3<L>(get(15), get(16), get(17));
     in.normal = float3<L>(get(18), get(19), get(20));
+    in.fog = FogInputs<L>{get(21), get(22)};
     return unlit_generic_combine<C>(t, in, p, [](const float3<L>& r) { return testing::analytic_env(r); });
   };
-  std::vector<Draw> draws(21, Draw{0.0f, 1.0f, hard_every});
+  std::vector<Draw> draws(23, Draw{0.0f, 1.0f, hard_every});
   for (int i = 15; i < 21; ++i) draws[i] = Draw{-1.0f, 1.0f, hard_every};
-  return compare_lanes<21>(shade, draws, 256, seed);
+  draws[21] = Draw{-10.0f, 30.0f, hard_every};
+  draws[22] = Draw{0.0f, 400.0f, hard_every};
+  return compare_lanes<23>(shade, draws, 256, seed);
 }
 
 TEST(SourceUnlit, SimdWithinOneStepOfScalarForEveryCombo) {
@@ -179,6 +183,7 @@ TEST(SourceUnlit, EveryComboFitsEveryPixelShaderModel) {
   for_each_unlit_combo([&]<UnlitCombo C>() {
     EXPECT_TRUE(C.valid()) << C.name();
     for (ShaderModel m : kPixelModels) {
+      if (!C.valid(m)) continue;
       const Cost cost = measure_unlit_generic<C>(m);
       const Verdict v = fits(cost, caps(m));
       EXPECT_TRUE(v) << C.name() << ": " << v.reason << " (" << describe(cost) << ")";

@@ -189,6 +189,9 @@ testing::LaneComparison compare_vertexlit(int hard_every, uint32_t seed) {
   p.phong_params = glm::vec4(150.0f, 4.0f, 1.0f, 1.0f);
   p.fresnel_ranges = encode_fresnel_ranges(0.1f, 0.5f, 1.0f);
   p.tonemap = ToneMapConstants::for_scale(0.7f);
+  p.fog = testing::lane_test_fog();
+  const rasterizer::Texture normalization_cube = normalization_cube_map();  // the ps_2_0 combos
+  p.normalization_cube.texture = &normalization_cube;
   auto run = [&]<class L>(const auto& get) -> float4<L> {
     VertexLitTexels<L> t;
     t.base = float4<L>(get(0), get(1), get(2), get(3));
@@ -200,12 +203,14 @@ testing::LaneComparison compare_vertexlit(int hard_every, uint32_t seed) {
     in.tangent = float3<L>(get(18), get(19), get(20));
     in.binormal = float3<L>(get(21), get(22), get(23));
     in.attenuation = float4<L>(get(24), get(25), get(26), get(27));
+    in.proj_z = get(28);
     return vertexlit_combine<C>(t, in, p);
   };
-  std::vector<Draw> draws(28, Draw{0.0f, 1.0f, hard_every});
+  std::vector<Draw> draws(29, Draw{0.0f, 1.0f, hard_every});
   for (int i = 12; i < 15; ++i) draws[i] = Draw{-2.0f, 2.0f, hard_every};
   for (int i = 15; i < 24; ++i) draws[i] = Draw{-1.0f, 1.0f, hard_every};
-  return compare_lanes<28>(run, draws, 256, seed);
+  draws[28] = Draw{0.0f, 400.0f, hard_every};
+  return compare_lanes<29>(run, draws, 256, seed);
 }
 
 TEST(SourceVertexLit, SimdWithinOneStepOfScalarForEveryCombo) {

@@ -113,13 +113,14 @@ TEST(SourceWater, IntegerHdrReflectionKeepsFourTimesOverbrightThroughAnSrgbTarge
   const float s = 1.5f;
   WaterMaterial m;
   m.reflect_tint = glm::vec3(1.0f);
+  m.exposure = WaterReflectionExposure::sdk_fixed;
   const WaterParams p = water_constants(m, HdrType::integer, ToneMapConstants::for_scale(s));
   EXPECT_EQ(p.reflect_tint, glm::vec4(4.0f, 4.0f, 4.0f, 1.0f));
-  EXPECT_EQ(water_reflection_scale(s, HdrType::integer), 0.25f * s);
-  EXPECT_EQ(water_reflection_scale(s, HdrType::none), s);
+  EXPECT_EQ(water_reflection_scale(s, HdrType::integer, m), 0.25f * s);
+  EXPECT_EQ(water_reflection_scale(s, HdrType::none, m), s);
   for (float radiance : {0.05f, 0.5f, 1.0f, 2.0f, 2.6f, 5.0f}) {
     rasterizer::Texture target = rasterizer::Texture::create_2d(4, 4, rasterizer::TextureFormat::RGBA8_sRGB, 1);
-    const float written = water_reflection_scale(s, HdrType::integer) * radiance;  // FinalOutput of the reflection view
+    const float written = water_reflection_scale(s, HdrType::integer, m) * radiance;  // FinalOutput of the reflection view
     target.upload(0, std::vector<glm::vec4>(16, glm::vec4(written, written, written, 1.0f)));
     WaterParams q = p;
     q.reflection.texture = &target;
@@ -139,6 +140,7 @@ TEST(SourceWater, TintsGoThroughMathlibGammaToLinear) {
   WaterMaterial m;
   m.reflect_tint = glm::vec3(0.5f, 0.96f, 0.0f);
   m.refract_tint = glm::vec3(0.5f, 2.0f, 0.95f);
+  m.exposure = WaterReflectionExposure::sdk_fixed;
   const WaterParams p = water_constants(m, HdrType::integer, ToneMapConstants{});
   EXPECT_NEAR(p.reflect_tint.x, 4.0 * std::pow(128.0 / 255.0, 2.2), 1e-6) << "table entry round(0.5 x 255) = 128";
   EXPECT_EQ(p.reflect_tint.y, 4.0f) << "0.95 and up is exactly 1";
@@ -150,6 +152,7 @@ TEST(SourceWater, TintsGoThroughMathlibGammaToLinear) {
 TEST(SourceWater, RefractTintAndOverbrightApplyOnlyOnTheBlurryPath) {
   WaterMaterial m;
   m.refract_tint = glm::vec3(0.5f);
+  m.exposure = WaterReflectionExposure::sdk_fixed;
   const WaterParams p = water_constants(m, HdrType::integer, ToneMapConstants{});
   const glm::vec4 refraction(0.5f, 0.5f, 0.5f, 0.05f);  // shallow: F = 0 -> pure refraction, no fog
   const float sharp = with_constant_targets<kBoth>(flat_inputs({1, 0, 0}), p, refraction, glm::vec3(0.1f)).x;
@@ -189,7 +192,8 @@ testing::LaneComparison compare_water(int hard_every, uint32_t seed) {
   m.fog_color = glm::vec3(0.1f, 0.2f, 0.3f);
   m.refract_amount = 0.05f;
   m.fog_end = 300.0f;
-  const WaterParams p = water_constants(m, HdrType::integer, ToneMapConstants::for_scale(0.9f));
+  WaterParams p = water_constants(m, HdrType::integer, ToneMapConstants::for_scale(0.9f));
+  p.pixel_fog = testing::lane_test_fog();
   auto shade = [&]<class L>(const auto& get) -> float4<L> {
     WaterNormalTexels<L> t;
     t.n0 = float4<L>(get(0), get(1), get(2), get(3));
@@ -200,6 +204,7 @@ testing::LaneComparison compare_water(int hard_every, uint32_t seed) {
     in.reflect_refract = float4<L>(get(15), get(16), get(17), get(18));
     in.w = get(19);
     in.proj_z = get(20);
+    in.world_z = get(21);
     // Smooth analytic render targets of the coordinates (alpha = depth in [0, 1]).
     auto refraction = [](const float2<L>& uv) {
       return float4<L>(saturate(uv.x), saturate(uv.y), L(0.5f), saturate(uv.x * 0.5f + uv.y * 0.5f));
@@ -211,7 +216,8 @@ testing::LaneComparison compare_water(int hard_every, uint32_t seed) {
   for (int i = 12; i < 15; ++i) draws[i] = Draw{-1.0f, 1.0f, hard_every};
   draws[19] = Draw{0.5f, 2.0f, hard_every};
   draws[20] = Draw{0.0f, 400.0f, hard_every};
-  return compare_lanes<21>(shade, draws, 256, seed);
+  draws.push_back(Draw{-10.0f, 30.0f, hard_every});
+  return compare_lanes<22>(shade, draws, 256, seed);
 }
 
 TEST(SourceWater, SimdWithinOneStepOfScalarForEveryCombo) {
@@ -239,6 +245,71 @@ TEST(SourceWater, EveryComboFitsTheModelsItExistsOn) {
   });
   EXPECT_FALSE(kBlurry.valid(ShaderModel::ps_2_0)) << "BLURRY_REFRACT is a ps20b combo";
   EXPECT_GT(measured, 15);
+}
+
+}  // namespace
+}  // namespace luxel::shading::source
+
+namespace luxel::shading::source {
+namespace {
+
+/// The reflection through a real 8-bit sRGB target: the view writes scale x radiance (grey), the
+/// water reads it back and tints it.
+float4<float> reflected(const WaterMaterial& m, float s, float radiance) {
+  rasterizer::Texture target = rasterizer::Texture::create_2d(4, 4, rasterizer::TextureFormat::RGBA8_sRGB, 1);
+  const float written = water_reflection_scale(s, HdrType::integer, m) * radiance;
+  target.upload(0, std::vector<glm::vec4>(16, glm::vec4(written, written, written, 1.0f)));
+  WaterParams p = water_constants(m, HdrType::integer, ToneMapConstants::for_scale(s));
+  p.reflection.texture = &target;
+  return water_combine<WaterCombo{true, false, false, false, false}>(
+      WaterNormalTexels<float>{}, flat_inputs({0, 0, 1}), p, [](const float2<float>&) { return float4<float>(0.0f); },
+      [&](const float2<float>& uv) { return tex2D(p.reflection, uv); });
+}
+
+TEST(SourceWater, ReflectivityExposureRendersTheViewAtScaleTimesTheTintsLargestChannel) {
+  WaterMaterial m;
+  m.reflect_tint = glm::vec3(0.5f, 0.8f, 0.3f);  // gamma; reflectivity = the green channel's
+  EXPECT_EQ(m.exposure, WaterReflectionExposure::reflectivity) << "the default";
+  const double t[3] = {std::pow(128.0 / 255.0, 2.2), std::pow(204.0 / 255.0, 2.2), std::pow(77.0 / 255.0, 2.2)};
+  const double rho = t[1];
+  const float s = 1.5f;
+  EXPECT_NEAR(water_reflectivity(m), rho, 1e-6);
+  EXPECT_NEAR(water_reflection_scale(s, HdrType::integer, m), s * rho, 1e-6);
+  EXPECT_EQ(water_reflection_scale(s, HdrType::none, m), s) << "LDR keeps the frame's exposure";
+  const WaterParams p = water_constants(m, HdrType::integer, ToneMapConstants::for_scale(s));
+  for (int c = 0; c < 3; ++c) EXPECT_NEAR(p.reflect_tint[c], t[c] / rho, 1e-6) << c;
+  EXPECT_EQ(p.fog_params.z, 1.0f) << "no x4 to undo";
+  // In range (s rho L = 0.46): the water shows t s L, to the target's 8-bit precision.
+  const float4<float> in_range = reflected(m, s, 0.5f);
+  for (int c = 0; c < 3; ++c) EXPECT_NEAR(in_range[c], t[c] * s * 0.5, t[c] * s * 0.5 * 0.01) << c;
+  // Past the display's range for green (t_g s L = 1.1): green shows exactly 1, where the
+  // display clips it anyway; red and blue stop at t / rho.
+  const float4<float> over = reflected(m, s, 1.2f);
+  EXPECT_FLOAT_EQ(over.y, 1.0f);
+  EXPECT_NEAR(over.x, t[0] / rho, 1e-6);
+  // The SDK's pair keeps the 4x headroom instead: red is still t_r s L there.
+  WaterMaterial fixed = m;
+  fixed.exposure = WaterReflectionExposure::sdk_fixed;
+  EXPECT_NEAR(water_reflection_scale(s, HdrType::integer, fixed), 0.25 * s, 1e-7);
+  EXPECT_NEAR(reflected(fixed, s, 1.2f).x, t[0] * s * 1.2, t[0] * s * 1.2 * 0.01);
+}
+
+TEST(SourceWater, IntegerSdkPathClampsTintsAboveOneLdrAndReflectivityDoNot) {
+  WaterMaterial m;
+  m.reflect_tint = glm::vec3(2.0f, 0.5f, 2.0f);  // red and blue above 1: linear as authored
+  const double g = std::pow(128.0 / 255.0, 2.2);
+  const WaterParams ldr = water_constants(m, HdrType::none, ToneMapConstants{});
+  EXPECT_EQ(ldr.reflect_tint.x, 2.0f) << "BaseVSShader passes values above 1 through";
+  WaterMaterial fixed = m;
+  fixed.exposure = WaterReflectionExposure::sdk_fixed;
+  const WaterParams integer = water_constants(fixed, HdrType::integer, ToneMapConstants{});
+  EXPECT_EQ(integer.reflect_tint.x, 4.0f) << "mathlib GammaToLinear: 1 from 0.95 up, then x4";
+  EXPECT_NEAR(integer.reflect_tint.y, 4.0 * g, 1e-6);
+  // Net gain of the red channel (tint x the view's exposure / s): LDR 2, INTEGER sdk_fixed 1.
+  EXPECT_NEAR(integer.reflect_tint.x * water_reflection_scale(1.0f, HdrType::integer, fixed), 1.0, 1e-7);
+  const WaterParams by_reflectivity = water_constants(m, HdrType::integer, ToneMapConstants{});
+  EXPECT_NEAR(by_reflectivity.reflect_tint.x * water_reflection_scale(1.0f, HdrType::integer, m), 2.0, 1e-6);
+  EXPECT_NEAR(by_reflectivity.reflect_tint.y * water_reflection_scale(1.0f, HdrType::integer, m), g, 1e-6);
 }
 
 }  // namespace

@@ -19,7 +19,9 @@
 //  [tex ops] texldb (tex2Dbias) and texldp exist from ps_2_0; texldl (tex2Dlod) only in ps_3_0 and
 //            vs_3_0; texldd (tex2Dgrad) in ps_2_a and ps_3_0, "not supported by ps_2_b".
 //  [vs]      vs_2_0: 12 temps, >= 256 constants, no texture sampling, no cmp; vs_3_0: 32 temps,
-//            >= 256 constants, 4 vertex texture samplers (texldl only).
+//            >= 256 constants, 4 vertex texture samplers (texldl only). The temps: "D3DVS20CAPS"
+//            (D3DVS20_MIN_NUMTEMPS 12, what vs_2_0 guarantees; vs_2_x may offer up to 32) and
+//            "Vertex Shader Differences", vs_3_0 Features (temporary registers increased to 32).
 //
 // Limits are the guaranteed minimums (a ps_3_0 card may offer more slots; fxc targets 512).
 
@@ -77,5 +79,7 @@ static_assert(caps(ShaderModel::ps_2_0).arithmetic_slots + caps(ShaderModel::ps_
               caps(ShaderModel::ps_2_0).total_slots);
 static_assert(caps(ShaderModel::ps_3_0).constants == 224 && caps(ShaderModel::ps_2_b).constants == 32);
 static_assert(caps(ShaderModel::vs_3_0).model == ShaderModel::vs_3_0, "rows in enum order");
+static_assert(caps(ShaderModel::vs_2_0).total_slots == 256 && caps(ShaderModel::vs_2_0).temps == 12);
+static_assert(caps(ShaderModel::vs_3_0).total_slots == 512 && caps(ShaderModel::vs_3_0).temps == 32);
 
 }  // namespace luxel::shading

@@ -50,8 +50,17 @@ inline ToneMapConstants ToneMapConstants::for_scale(float s, float lightmap_scal
   return t;
 }
 
+// Per-model differences of FinalOutput (common_ps_fxc.h) and where they are:
+//  - fog: ps_2_0 has no pixel range fog (fog.hpp models both paths);
+//  - CONVERT_TO_SRGB (ps_2_b / ps_3_0, SRGBOutput through the gamma table at s15): not modelled;
+//    the table is closed and luxel encodes with the hardware sRGB write on every model (above);
+//  - WRITE_DEPTH_TO_DESTALPHA (ps_2_b / ps_3_0: alpha = projZ x c29.w; ps_2_0's DepthToDestAlpha
+//    returns 1 and the ps_2_0 builds pass false): not modelled. Its reader is the water's
+//    refraction alpha (water.hpp takes that depth as given) and soft particles; which passes write
+//    it is the frame's decision (issue #8), so the shaders' alpha stays the shader's alpha here.
+
 /// FinalOutput (SOURCE_FACTS §6.3 steps 1-2): rgb x the tone-map scale of type T; alpha passes.
-/// Fog (step 3) is not implemented here. Returns the linear color the output merger encodes.
+/// Returns the linear color the output merger encodes; fogged_output() (fog.hpp) adds step 3.
 template <ToneMap T, Lane L>
 inline float4<L> final_output(const float4<L>& color, const ToneMapConstants& tm) {
   if constexpr (T == ToneMap::none) {

@@ -114,4 +114,52 @@ inline FoldedLights fold_lights(std::span<const LightDesc> lights, int keep, con
   return r;
 }
 
+// ---- The hero ambient boost ----------------------------------------------------------------------
+//
+// $ambientboost (the QC flag STUDIOHDR_FLAGS_AMBIENT_BOOST in studio.h, "first used on Alyx in
+// Episode One" per the Valve Developer Community; the 2006 course notes §8.4.2: the directional
+// ambient is boosted as a function of the direct lights, so that a hero character is not lost in
+// darkness on the side the direct lights miss). The flag is all the SDK holds: the heuristic runs
+// in the closed studiorender (NOT IN SDK), so what follows is luxel's, stated as a rule:
+//   A = the ambient cube's mean luminance (the mean of its six sides: the cube's response averaged
+//       over all directions, each axis weight n_a² averaging 1/3), D = the summed significance
+//       (light_significance: delivered luminance at the model's reference point) of the direct
+//       lights the shader evaluates; the cube is scaled by max(1, min_ambient_fraction x D / A),
+//       i.e. raised until its luminance is at least that fraction of the direct light's. No direct
+//       light, or an ambient already bright enough: unchanged. A black cube stays black (a boost
+//       scales the cube's colors, it invents none).
+// A CPU step before the constants are written, like the folding: the shaders are unchanged.
+
+/// The material option (off by default, as the QC flag is).
+struct AmbientBoost {
+  bool enabled = false;               ///< $ambientboost
+  float min_ambient_fraction = 0.25f; ///< luxel's: the ambient's luminance floor, x the direct lights'
+};
+
+inline double ambient_cube_luminance(const AmbientCube& cube) {
+  double sum = 0.0;
+  for (const glm::vec3& c : cube.color) sum += 0.2125 * c.x + 0.7154 * c.y + 0.0721 * c.z;
+  return sum / 6.0;
+}
+
+/// The factor the boost scales the cube by, for the direct lights at `point`.
+inline double ambient_boost_factor(const AmbientCube& cube, std::span<const LightDesc> direct, const glm::vec3& point,
+                                   const AmbientBoost& boost) {
+  if (!boost.enabled) return 1.0;
+  const double ambient = ambient_cube_luminance(cube);
+  if (!(ambient > 0.0)) return 1.0;
+  double direct_luminance = 0.0;
+  for (const LightDesc& d : direct) direct_luminance += light_significance(d, point);
+  return std::max(1.0, boost.min_ambient_fraction * direct_luminance / ambient);
+}
+
+/// The cube with the boost applied (after folding: `direct` are the lights kept as real lights).
+inline AmbientCube boost_ambient_cube(const AmbientCube& cube, std::span<const LightDesc> direct, const glm::vec3& point,
+                                      const AmbientBoost& boost) {
+  const double k = ambient_boost_factor(cube, direct, point, boost);
+  AmbientCube r = cube;
+  for (glm::vec3& c : r.color) c = glm::vec3(glm::dvec3(c) * k);
+  return r;
+}
+
 }  // namespace luxel::shading::source

@@ -2,7 +2,8 @@
 // LightmappedGeneric (world surfaces), DX9 pixel shader: base texture x radiosity-normal-mapped
 // diffuse from three directional lightmaps (or the flat lightmap without a bump map), plus optional
 // cube-map specular with mask, tint, contrast, saturation and Fresnel, ending in FinalOutput.
-// SOURCE_FACTS §1.3 (combine), §1.5 (lightmap scale), §5.1 (envmap), §6.3 (epilogue).
+// SOURCE_FACTS §1.3 (combine), §1.5 (lightmap scale), §5.1 (envmap), §6.3 (epilogue), §10.3 (fog,
+// fog.hpp: the SDK's PIXELFOGTYPE on every model).
 //
 // Written once over the lane L; the static combos are the template parameter LightmappedCombo,
 // the dynamic state (constants, textures) is LightmappedGenericParams. The shader is split in
@@ -24,9 +25,10 @@
 // three parameters is not its default).
 //
 // Not implemented: ssbump (BUMPMAP == 2), detail textures, $basetexture2 blends, self-illum,
-// vertex color, lightwarp, bicubic lightmaps, fog.
+// vertex color, lightwarp, bicubic lightmaps.
 
 #include "luxel/shading/source/common.hpp"
+#include "luxel/shading/source/fog.hpp"
 
 #include <cmath>
 #include <cstdint>
@@ -57,19 +59,22 @@ struct LightmappedCombo {
   bool envmap = false;
   EnvmapMask mask = EnvmapMask::none;
   EnvmapPath path = EnvmapPath::fast;
+  Fog fog = Fog::none;
 
-  /// A combination Valve's helper can produce.
+  /// A combination Valve's helper can produce (on some model).
   constexpr bool valid() const {
     if (!envmap) return mask == EnvmapMask::none && path == EnvmapPath::fast;
     if (mask == EnvmapMask::normal_alpha && !bump) return false;
     if (mask == EnvmapMask::texture && bump) return false;
     return true;
   }
+  /// ... on model m: the fog type decides (fog.hpp).
+  constexpr bool valid(ShaderModel m) const { return valid() && fog_valid(fog, m); }
   std::string name() const {
     static const char* masks[] = {"", "+basealphamask", "+normalalphamask", "+envmapmask"};
     static const char* paths[] = {"", "+contrast1", "+full"};
     return std::string(bump ? "bump" : "flat") + (envmap ? "+envmap" : "") + masks[static_cast<int>(mask)] +
-           paths[static_cast<int>(path)];
+           paths[static_cast<int>(path)] + fog_name(fog);
   }
 };
 
@@ -87,6 +92,12 @@ inline constexpr LightmappedCombo kLightmappedCombos[] = {
     {true, true, EnvmapMask::base_alpha_inverted, EnvmapPath::fast_contrast},
     {true, true, EnvmapMask::normal_alpha, EnvmapPath::full},
     {true, true, EnvmapMask::base_alpha_inverted, EnvmapPath::full},
+    {false, false, EnvmapMask::none, EnvmapPath::fast, Fog::range},
+    {false, false, EnvmapMask::none, EnvmapPath::fast, Fog::vertex_range},
+    {true, false, EnvmapMask::none, EnvmapPath::fast, Fog::height},
+    {true, true, EnvmapMask::normal_alpha, EnvmapPath::full, Fog::range},
+    {true, true, EnvmapMask::normal_alpha, EnvmapPath::full, Fog::vertex_range},
+    {true, true, EnvmapMask::normal_alpha, EnvmapPath::full, Fog::height},
 };
 
 /// Calls f.template operator()<C>() for every combo of kLightmappedCombos, in order.
@@ -113,6 +124,7 @@ struct LightmappedGenericParams {
   /// c4 = (0, 0, 1 - R0, R0), R0 = $fresnelreflection.
   glm::vec4 fresnel{0.0f, 0.0f, 0.0f, 1.0f};
   ToneMapConstants tonemap{};
+  FogConstants fog{};
 };
 
 /// The interpolants (SDK: lightmappedgeneric_vs20 outputs).
@@ -124,6 +136,7 @@ struct LightmappedInputs {
   float2<L> lightmap_uv3;  ///< bump lightmap 3
   float3<L> tangent, binormal, normal;  ///< tangentSpaceTranspose rows: the world-space frame
   float3<L> eye_vector;    ///< worldVertToEyeVector, unnormalised
+  FogInputs<L> fog{};      ///< world z and projected z (pixel fog combos)
 };
 
 /// The independent texture reads.
@@ -213,7 +226,7 @@ inline float4<L> lightmapped_generic_combine(const LightmappedTexels<L>& t, cons
     }
     color = color + spec;
   }
-  return final_output<ToneMap::linear>(float4<L>(color, alpha), p.tonemap);
+  return fogged_output<ToneMap::linear, C.fog>(float4<L>(color, alpha), p.tonemap, in.fog, p.fog);
 }
 
 /// The pixel shader: fetch, combine with the cube map read at R.
@@ -242,6 +255,7 @@ inline LightmappedInputs<Counted> lightmapped_counted_inputs(CountedInputs& in) 
     r.normal = in.vector<3>();
     r.eye_vector = in.vector<3>();
   }
+  r.fog = fog_counted_inputs<C.fog>(in);
   return r;
 }
 

@@ -1,13 +1,17 @@
 #pragma once
 // UnlitGeneric, DX9 pixel shader: base texture x $color (x vertex color), an optional detail
 // texture, an optional cube-map specular with mask, tint, contrast and saturation, ending in
-// FinalOutput with LINEAR tone mapping. The SDK builds it from vertexlit_and_unlit_generic_ps2x.fxc
-// with DIFFUSELIGHTING = 0 (ps20, ps20b and ps30 builds), so the arithmetic is VertexLitGeneric's
-// non-bumped path without lighting: SOURCE_FACTS §5.2 (envmap on models), §10.1 (gamma of
-// constants and detail), §10.4 (detail modes), §6.3 (epilogue).
+// FinalOutput with LINEAR tone mapping and the fog of the combo (fog.hpp). The SDK builds it from
+// vertexlit_and_unlit_generic_ps2x.fxc with DIFFUSELIGHTING = 0 (ps20, ps20b and ps30 builds),
+// and VertexLitGeneric without a bump map from the same file with DIFFUSELIGHTING = 1: the
+// lighting then comes per vertex from vertexlit_vertex_shader.hpp (two lights and the ambient
+// cube, SOURCE_FACTS §3.4) through the same i.color interpolant a vertex color uses, and only
+// multiplies the albedo here. SOURCE_FACTS §5.2 (envmap on models), §10.1 (gamma of constants and
+// detail), §10.4 (detail modes), §6.3 (epilogue), §10.3 (fog).
 //
 //   albedo   = detail_combine(base) x c1.rgb ($color, gamma -> linear on the CPU)
-//   diffuse  = albedo x vertex.rgb (VERTEXCOLOR) or albedo
+//   diffuse  = albedo x i.color.rgb (VERTEXCOLOR: the vertex color; DIFFUSELIGHTING: the vertex
+//              shader's lighting) or albedo
 //   spec     = c30.z x cube(R) x mask x c0.rgb ($envmaptint, gamma -> linear), R = 2(N·E)N - (N·N)E
 //   spec     = lerp(spec, spec², contrast); spec = lerp(grey(spec), spec, saturation)
 //   alpha    = c1.a x base.a (not with $basealphaenvmapmask), lerp(alpha, alpha x vertex.a, c12.w)
@@ -20,9 +24,12 @@
 // $detailtint (c10) first.
 //
 // Not implemented: detail modes 2-9, self-illum, $blendtintbybasealpha, seamless mapping,
-// distance alpha, sphere-map envmaps, flashlight, fog, depth to dest alpha.
+// distance alpha, sphere-map envmaps, flashlight, depth to dest alpha; VERTEXCOLOR together with
+// DIFFUSELIGHTING (the SDK's vertex shader then skips the lighting and the pixel shader multiplies
+// by the vertex color twice), which valid() refuses.
 
 #include "luxel/shading/source/common.hpp"
+#include "luxel/shading/source/fog.hpp"
 
 #include <iterator>
 #include <string>
@@ -38,14 +45,19 @@ struct UnlitCombo {
   bool envmap = false;
   UnlitEnvmapMask mask = UnlitEnvmapMask::none;
   bool vertex_color = false;
+  bool diffuse_lighting = false;  ///< DIFFUSELIGHTING: VertexLitGeneric lit per vertex
+  Fog fog = Fog::none;
 
-  constexpr bool valid() const { return envmap || mask == UnlitEnvmapMask::none; }
+  /// A combination the SDK can produce (on some model).
+  constexpr bool valid() const { return (envmap || mask == UnlitEnvmapMask::none) && !(vertex_color && diffuse_lighting); }
+  /// ... on model m: the fog type decides (fog.hpp).
+  constexpr bool valid(ShaderModel m) const { return valid() && fog_valid(fog, m); }
   std::string name() const {
     static const char* details[] = {"", "+detail_mod2x", "+detail_additive"};
     static const char* masks[] = {"", "+basealphamask", "+envmapmask"};
-    std::string n = std::string("base") + details[static_cast<int>(detail)] + (envmap ? "+envmap" : "") +
-                    masks[static_cast<int>(mask)];
-    return vertex_color ? n + "+vertexcolor" : n;
+    std::string n = std::string(diffuse_lighting ? "vertexlit" : "base") + details[static_cast<int>(detail)] +
+                    (envmap ? "+envmap" : "") + masks[static_cast<int>(mask)];
+    return (vertex_color ? n + "+vertexcolor" : n) + fog_name(fog);
   }
 };
 
@@ -58,6 +70,14 @@ inline constexpr UnlitCombo kUnlitCombos[] = {
     {UnlitDetail::none, true, UnlitEnvmapMask::base_alpha_inverted, false},
     {UnlitDetail::none, true, UnlitEnvmapMask::texture, true},
     {UnlitDetail::mod2x, true, UnlitEnvmapMask::texture, true},
+    {UnlitDetail::none, false, UnlitEnvmapMask::none, false, false, Fog::range},
+    {UnlitDetail::none, false, UnlitEnvmapMask::none, false, false, Fog::vertex_range},
+    {UnlitDetail::none, false, UnlitEnvmapMask::none, false, true},
+    {UnlitDetail::none, false, UnlitEnvmapMask::none, false, true, Fog::range},
+    {UnlitDetail::none, false, UnlitEnvmapMask::none, false, true, Fog::vertex_range},
+    {UnlitDetail::none, false, UnlitEnvmapMask::none, false, true, Fog::height},
+    {UnlitDetail::mod2x, true, UnlitEnvmapMask::texture, false, true, Fog::range},
+    {UnlitDetail::mod2x, true, UnlitEnvmapMask::texture, false, true, Fog::height},
 };
 
 template <class F>
@@ -81,15 +101,17 @@ struct UnlitGenericParams {
   glm::vec4 detail_tint{1.0f};                        ///< c10.rgb: $detailtint
   glm::vec4 shader_controls{0.0f};                    ///< c12.w: 1 with $vertexalpha
   ToneMapConstants tonemap{};
+  FogConstants fog{};
 };
 
 template <Lane L>
 struct UnlitInputs {
   float2<L> base_uv;
   float2<L> detail_uv;
-  float4<L> vertex_color{1.0f};
+  float4<L> vertex_color{1.0f};  ///< i.color: vertex color, or the vertex shader's lighting
   float3<L> eye_vector;  ///< world vertex -> eye, unnormalised
   float3<L> normal;      ///< world normal, interpolated
+  FogInputs<L> fog{};
 };
 
 template <Lane L>
@@ -128,6 +150,7 @@ inline float4<L> unlit_generic_combine(const UnlitTexels<L>& t, const UnlitInput
   float3<L> color = base * modulation.rgb();
   L alpha = modulation.w;
   if constexpr (C.mask != UnlitEnvmapMask::base_alpha_inverted) alpha = alpha * t.base.w;
+  if constexpr (C.diffuse_lighting) color = color * in.vertex_color.rgb();
   if constexpr (C.vertex_color) {
     color = color * in.vertex_color.rgb();
     alpha = lerp(alpha, alpha * in.vertex_color.w, constant<L>(p.shader_controls).w);
@@ -145,7 +168,7 @@ inline float4<L> unlit_generic_combine(const UnlitTexels<L>& t, const UnlitInput
     spec = lerp(float3<L>(grey), spec, constant<L>(p.envmap_saturation).xyz());
     color = color + spec;
   }
-  return final_output<ToneMap::linear>(float4<L>(color, alpha), p.tonemap);
+  return fogged_output<ToneMap::linear, C.fog>(float4<L>(color, alpha), p.tonemap, in.fog, p.fog);
 }
 
 template <UnlitCombo C, Lane L>
@@ -159,11 +182,12 @@ inline UnlitInputs<Counted> unlit_counted_inputs(CountedInputs& in) {
   UnlitInputs<Counted> r;
   r.base_uv = in.vector<2>();
   if constexpr (C.detail != UnlitDetail::none) r.detail_uv = in.vector<2>();
-  if constexpr (C.vertex_color) r.vertex_color = in.vector<4>();
+  if constexpr (C.vertex_color || C.diffuse_lighting) r.vertex_color = in.vector<4>();
   if constexpr (C.envmap) {
     r.eye_vector = in.vector<3>();
     r.normal = in.vector<3>();
   }
+  r.fog = fog_counted_inputs<C.fog>(in);
   return r;
 }
 

@@ -20,14 +20,25 @@
 // A directional light's position register holds the unit vector toward the light with w = 0, so
 // one mad gives L for every type: L = pos.xyz - worldPos * pos.w.
 //
-// Normalisation: ALU normalize on every model (ps_2_0 in the SDK uses a normalisation cube map:
-// one texture slot instead of nrm's three arithmetic slots; our ps_2_0 counts are therefore a
-// little higher in arithmetic and lower in texture slots than Valve's).
+// Normalisation (§3.4, §11): ps_2_b and ps_3_0 normalize the interpolated normal and the light
+// vectors with nrm; ps_2_0 reads them from the signed normalization cube map
+// (NormalizeWithCubemap: one texture slot for nrm's three arithmetic slots, and a dependent
+// read), as the SDK's bump shader does, so ps_2_0 lighting carries the cube map's filtering and
+// 8-bit error (normalization_cube.hpp). The combo's normalization_cube flag is that choice, and
+// valid() holds it to the model: on ps_2_0 and only there.
+//
+// Fog: every combo's fog type (fog.hpp), the SDK's PIXELFOGTYPE.
+//
+// The SDK's VertexLitGeneric without a bump map is lit per vertex: vertexlit_vertex_shader.hpp
+// and the DIFFUSELIGHTING combos of unlit_generic.hpp. The per-pixel combos here without a bump
+// map are luxel's (per-pixel attenuation and lighting of smooth models).
 //
 // Not implemented: envmap on models (§5.2), lightwarp, phong warp, self-illum, detail, albedo
-// tint ($phongalbedotint), $blendtintbybasealpha, fog.
+// tint ($phongalbedotint), $blendtintbybasealpha.
 
 #include "luxel/shading/source/common.hpp"
+#include "luxel/shading/source/fog.hpp"
+#include "luxel/shading/source/normalization_cube.hpp"
 #include "luxel/shading/source/spherical_harmonics.hpp"
 
 #include <array>
@@ -47,9 +58,13 @@ struct VertexLitCombo {
   bool half_lambert = true;       ///< squared Half-Lambert (the skin shader always uses it)
   bool pixel_attenuation = true;  ///< attenuation per pixel (luxel) or per vertex, interpolated (SDK)
   bool sh9_ambient = false;       ///< ambient from 9 SH coefficients instead of the cube (ps_3_0 only)
+  Fog fog = Fog::none;
+  bool normalization_cube = false;  ///< normalize through the normalization cube map (ps_2_0's way)
 
   constexpr bool valid(ShaderModel m) const {
     if (lights < 0 || lights > 4) return false;
+    if (!fog_valid(fog, m)) return false;
+    if (normalization_cube != (m == ShaderModel::ps_2_0)) return false;
     if (m == ShaderModel::ps_2_0 && (lights > 2 || phong)) return false;
     if ((rim || exponent_texture) && !phong) return false;
     if (phong && !half_lambert) return false;
@@ -73,7 +88,8 @@ struct VertexLitCombo {
     if (!half_lambert) n += "+lambert";
     if (lights > 0 && !pixel_attenuation) n += "+vertexatten";
     if (sh9_ambient) n += "+sh9";
-    return n;
+    if (normalization_cube) n += "+normcube";
+    return n + fog_name(fog);
   }
 };
 
@@ -94,6 +110,17 @@ inline constexpr VertexLitCombo kVertexLitCombos[] = {
     {0, false, false, false, false, true, true, true},
     {2, true, true, true, true, true, true, true},
     {4, true, true, true, true, true, false, true},
+    // ps_2_0: the same shaders normalizing through the cube map.
+    {0, false, false, false, false, true, true, false, Fog::none, true},
+    {2, false, false, false, false, true, false, false, Fog::none, true},
+    {2, true, false, false, false, true, false, false, Fog::none, true},
+    // Fog, per model.
+    {2, true, false, false, false, true, false, false, Fog::vertex_range, true},
+    {2, true, false, false, false, true, false, false, Fog::height, true},
+    {2, true, false, false, false, true, false, false, Fog::range},
+    {2, true, false, false, false, true, false, false, Fog::height},
+    {4, true, true, true, true, true, false, false, Fog::range},
+    {4, true, true, true, true, true, false, true, Fog::height},
 };
 
 template <class F>
@@ -127,6 +154,9 @@ struct VertexLitParams {
   /// $phongfresnelranges re-encoded (2(mid-min), mid, 2(max-mid)); (1, 0.5, 1) = plain (1-N·V)²
   glm::vec4 fresnel_ranges{1.0f, 0.5f, 1.0f, 0.0f};
   ToneMapConstants tonemap{};
+  FogConstants fog{};
+  /// s5: the signed normalization cube map (normalization_cube.hpp), read by the ps_2_0 combos.
+  SamplerCube normalization_cube{5, nullptr, normalization_cube_sampler()};
 };
 
 /// The CPU re-encoding of $phongfresnelranges (§4.4).
@@ -141,6 +171,7 @@ struct VertexLitInputs {
   float3<L> normal;             ///< world space, interpolated (not unit)
   float3<L> tangent, binormal;  ///< bump only
   float4<L> attenuation{1.0f};  ///< per-vertex attenuation of lights 0..3 (pixel_attenuation = false)
+  L proj_z = L(0.0f);           ///< projected z, the .w beside world_pos (pixel fog combos)
 };
 
 /// The SDK's attenuation (§3.2, VertexAttenInternal) of one light at a point, over any lane:
@@ -198,14 +229,24 @@ inline float3<L> vertexlit_ambient(const float3<L>& n, const VertexLitParams& p)
   }
 }
 
+/// A unit vector along v: nrm, or on the normalization_cube combos the cube map's texel.
+template <VertexLitCombo C, Lane L>
+inline float3<L> vertexlit_normalize(const float3<L>& v, const VertexLitParams& p) {
+  if constexpr (C.normalization_cube) {
+    return texCUBE(p.normalization_cube, v).xyz();
+  } else {
+    return normalize(v);
+  }
+}
+
 template <VertexLitCombo C, Lane L>
 inline float4<L> vertexlit_combine(const VertexLitTexels<L>& t, const VertexLitInputs<L>& in, const VertexLitParams& p) {
   float3<L> n;
   if constexpr (C.bump) {
     const float3<L> tn = t.bump.xyz() * 2.0f - 1.0f;
-    n = normalize(tn.x * in.tangent + tn.y * in.binormal + tn.z * in.normal);
+    n = vertexlit_normalize<C>(tn.x * in.tangent + tn.y * in.binormal + tn.z * in.normal, p);
   } else {
-    n = normalize(in.normal);
+    n = vertexlit_normalize<C>(in.normal, p);
   }
   float3<L> diffuse = vertexlit_ambient<C>(n, p);
   float3<L> spec(0.0f), rim(0.0f);
@@ -223,7 +264,7 @@ inline float4<L> vertexlit_combine(const VertexLitTexels<L>& t, const VertexLitI
       atten = light_attenuation(in.world_pos, light, to_light);
     } else {
       const float4<L> pos = constant<L>(light.position);
-      to_light = normalize(pos.xyz() - in.world_pos * pos.w);
+      to_light = vertexlit_normalize<C>(pos.xyz() - in.world_pos * pos.w, p);
       atten = in.attenuation[i];
     }
     const float3<L> color = constant<L>(light.color).rgb() * atten;
@@ -263,7 +304,8 @@ inline float4<L> vertexlit_combine(const VertexLitTexels<L>& t, const VertexLitI
     }
     color = color + spec * tint_boost.rgb();
   }
-  return final_output<ToneMap::linear>(float4<L>(color, t.base.w * modulation.w), p.tonemap);
+  const FogInputs<L> fog{in.world_pos.z, in.proj_z};
+  return fogged_output<ToneMap::linear, C.fog>(float4<L>(color, t.base.w * modulation.w), p.tonemap, fog, p.fog);
 }
 
 template <VertexLitCombo C, Lane L>
@@ -275,13 +317,15 @@ template <VertexLitCombo C>
 inline VertexLitInputs<Counted> vertexlit_counted_inputs(CountedInputs& in) {
   VertexLitInputs<Counted> r;
   r.uv = in.vector<2>();
-  r.world_pos = in.vector<3>();
+  const float4<Counted> world_pos_proj_z = in.vector<4>();  // one register, as the SDK packs it
+  r.world_pos = world_pos_proj_z.xyz();
   r.normal = in.vector<3>();
   if constexpr (C.bump) {
     r.tangent = in.vector<3>();
     r.binormal = in.vector<3>();
   }
   if constexpr (!C.pixel_attenuation && C.lights > 0) r.attenuation = in.vector<4>();
+  r.proj_z = world_pos_proj_z.w;
   return r;
 }
 

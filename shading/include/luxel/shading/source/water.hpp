@@ -2,7 +2,8 @@
 // Water (the expensive DX9 water, water_ps2x.fxc / water_ps2x_helper.h / water.cpp): a normal map
 // bends the screen-space coordinates of the reflection and refraction render targets; the two
 // are blended with a Fresnel term; the refraction fades toward the fog color with depth.
-// SOURCE_FACTS §5.3 (Fresnel, fog), §6.3 (epilogue: TONEMAP NONE), §6.4 (reflection exposure).
+// SOURCE_FACTS §5.3 (Fresnel, fog), §6.3 (epilogue: TONEMAP NONE, then the pixel fog of the
+// combo, fog.hpp, as water_ps2x.fxc's FinalOutput does), §6.4 (reflection exposure).
 //
 // Order of operations (per pixel):
 //   n      = 2 tex(normal).xyz - 1, n.a kept (MULTITEXTURE: 0.33 x the sum of three reads first)
@@ -18,28 +19,43 @@
 //   refract = lerp(refract, fog x c30.x, ABOVEWATER ? sat(depth - 0.05)
 //                                                   : sat((projZ - fogStart) / (fogEnd - fogStart)))
 //   result = lerp(refract, reflect, F) (REFLECT and REFRACT), reflect alone, or refract alone;
-//   alpha 1; FinalOutput with TONEMAP NONE: both render targets were already tone-mapped.
+//   alpha 1; FinalOutput with TONEMAP NONE (both render targets were already tone-mapped) and fog.
 //
 // Quirks kept from the SDK: without BLURRY the refract tint ($refracttint, c1) is never applied
 // (water_ps2x_helper.h multiplies only the blurry result by it); with ABOVEWATER the depth comes
 // from the refraction texture even in a REFLECT-only combo, so that texture must be bound.
 //
-// Reflection exposure (§6.4, INTEGER HDR): the reflection view is rendered with 0.25 x the linear
-// tone-map scale so its 8-bit sRGB target keeps up to 4x overbright, and water.cpp multiplies
-// the linear reflect tint by 4 to undo it (water_reflection_scale(), water_constants()). So a
-// reflected surface of linear radiance L arrives as s L (s = tone-map scale) as long as
-// s L <= 4, and clips at 4 instead of 1. The "reflectivity-scaled exposure" is this fixed
-// 0.25 / x4 pair: the SDK has no exposure that depends on the water's reflectivity (§6.4). The
-// blurry variant multiplies by the overbright constant c7.z = 4 *and* by the x4 tint, i.e. 16x
-// in INTEGER mode: an SDK bug we reproduce (water_constants(..., faithful) can turn it off).
+// Reflection exposure in INTEGER HDR (WaterMaterial::exposure; water_reflection_scale() is the
+// tone-map scale the reflection view renders with, water_constants() the matching tint). The
+// reflection view renders into an 8-bit sRGB target, so whatever it stores above 1 is lost:
+//  - reflectivity (luxel's default, the 2006 course notes' §8.5): the view renders with s x rho,
+//    rho = the water's reflectivity, the largest channel of the linear reflect tint, and the
+//    shader's tint is the linear tint / rho (largest channel 1). The target then holds what the
+//    water will show in its brightest channel (rho s L), so that channel clips exactly where the
+//    water's output clips anyway, and the target's 8 bits are spent on the displayed range. The
+//    other channels clip with it (a grey radiance past the range shows tint / rho, the tint's hue)
+//    where sdk_fixed keeps them up to s L = 4. rho <= 0 (no reflection) keeps s.
+//  - sdk_fixed (water.cpp, viewrender.cpp; SOURCE_FACTS §6.4: the SDK has no exposure that depends
+//    on the reflectivity): the view renders with 0.25 s and the tint is GammaToLinear(tint) x 4, so
+//    a reflected radiance L arrives as s L up to s L = 4 and clips there, whatever the tint; 2 bits
+//    of the target's precision go to that headroom. The blurry variant multiplies by the
+//    overbright constant c7.z = 4 *and* by the x4 tint, 16x in all: an SDK bug kept by default
+//    (water_constants(..., faithful_blurry_overbright = false) turns it off).
+// The tint clamp differs by HDR mode in the SDK: INTEGER converts $reflecttint with mathlib's
+// GammaToLinear directly, which returns 1 for every value >= 0.95, so a tint above 1 is clamped to
+// 1 (then x4); LDR and FLOAT go through the material conversion, which passes values above 1
+// through as linear (material_color.hpp), so [2 2 2] reflects twice as bright there. The
+// reflectivity mode converts like LDR (no clamp): rho = 2 exposes the view at 2 s.
 //
 // Not implemented: BASETEXTURE (lightmapped base on water), cheap water (WaterCheap, envmap
-// only), flow maps, pixel fog on the result, depth to dest alpha, NORMAL_DECODE_MODE != 0.
+// only), flow maps, depth to dest alpha, NORMAL_DECODE_MODE != 0.
 
 #include "luxel/shading/source/common.hpp"
+#include "luxel/shading/source/fog.hpp"
 #include "luxel/shading/source/hdr_type.hpp"
 #include "luxel/shading/source/material_color.hpp"
 
+#include <algorithm>
 #include <iterator>
 #include <string>
 #include <utility>
@@ -52,18 +68,19 @@ struct WaterCombo {
   bool above_water = true;
   bool multitexture = false;  ///< three normal-map reads ($scroll1 set)
   bool blurry_refract = false;  ///< $blurrefract: ps_2_b and up
+  Fog fog = Fog::none;
 
   constexpr bool valid(ShaderModel m) const {
     if (!reflect && !refract) return false;  // the SDK returns black; never drawn
     if (blurry_refract && (m == ShaderModel::ps_2_0 || !refract)) return false;
-    return true;
+    return fog_valid(fog, m);
   }
   std::string name() const {
     std::string n = reflect && refract ? "reflect+refract" : reflect ? "reflect" : "refract";
     n += above_water ? "+above" : "+below";
     if (multitexture) n += "+multitexture";
     if (blurry_refract) n += "+blurry";
-    return n;
+    return n + fog_name(fog);
   }
 };
 
@@ -71,6 +88,10 @@ inline constexpr WaterCombo kWaterCombos[] = {
     {true, true, true, false, false},  {true, true, false, false, false}, {true, false, true, false, false},
     {false, true, true, false, false}, {true, true, true, true, false},   {true, true, true, false, true},
     {true, true, false, true, true},
+    {true, true, true, false, false, Fog::range},
+    {true, true, true, false, false, Fog::vertex_range},
+    {true, true, true, true, true, Fog::range},
+    {true, true, false, false, false, Fog::height},
 };
 
 template <class F>
@@ -91,6 +112,13 @@ struct WaterParams {
   glm::vec4 fog_color{0.0f};        ///< c6: $fogcolor, linear
   glm::vec4 fog_params{0.0f, 1.0f, 1.0f, 0.0f};  ///< c7: fog start, end - start, reflect overbright
   ToneMapConstants tonemap{};
+  FogConstants pixel_fog{};  ///< c8 (g_PixelFogParams), fog color, c9 eye position: the epilogue's fog
+};
+
+/// How the reflection view is exposed in INTEGER HDR (see the file comment).
+enum class WaterReflectionExposure {
+  reflectivity,  ///< s x rho, tint / rho (luxel's default, the 2006 notes)
+  sdk_fixed,     ///< 0.25 s, tint x 4 (water.cpp)
 };
 
 /// The material parameters (gamma-space colors, as in the .vmt).
@@ -101,21 +129,37 @@ struct WaterMaterial {
   float reflect_amount = 0.8f;
   float refract_amount = 0.0f;
   float fog_start = 0.0f, fog_end = 1.0f;
+  WaterReflectionExposure exposure = WaterReflectionExposure::reflectivity;
 };
 
-/// The tone-map scale to render the reflection view with (§6.4): 0.25 s in INTEGER HDR, else s.
-inline float water_reflection_scale(float tonemap_scale, HdrType hdr) {
-  return hdr == HdrType::integer ? 0.25f * tonemap_scale : tonemap_scale;
+/// rho: the largest channel of the linear reflect tint (values above 1 pass, as in LDR); 1 when
+/// the water reflects nothing, so that the view keeps the frame's exposure.
+inline float water_reflectivity(const WaterMaterial& m) {
+  const glm::vec3 linear = material_gamma_to_linear(m.reflect_tint);
+  const float rho = std::max({linear.x, linear.y, linear.z});
+  return rho > 0.0f ? rho : 1.0f;
 }
 
-/// water.cpp's constants for a material. `faithful_blurry_overbright = false` leaves c7.z at 1,
-/// so the blurry variant does not apply the INTEGER x4 twice.
+/// The tone-map scale to render the reflection view with: in INTEGER HDR s x rho (reflectivity)
+/// or 0.25 s (sdk_fixed); s in the other modes.
+inline float water_reflection_scale(float tonemap_scale, HdrType hdr, const WaterMaterial& m) {
+  if (hdr != HdrType::integer) return tonemap_scale;
+  return m.exposure == WaterReflectionExposure::reflectivity ? tonemap_scale * water_reflectivity(m)
+                                                             : 0.25f * tonemap_scale;
+}
+
+/// water.cpp's constants for a material, matching water_reflection_scale().
+/// `faithful_blurry_overbright = false` leaves c7.z at 1, so the blurry variant of sdk_fixed does
+/// not apply the x4 twice.
 inline WaterParams water_constants(const WaterMaterial& m, HdrType hdr, const ToneMapConstants& tonemap,
                                    bool faithful_blurry_overbright = true) {
   WaterParams p;
+  const bool fixed_quarter = hdr == HdrType::integer && m.exposure == WaterReflectionExposure::sdk_fixed;
   glm::vec3 reflect;
-  if (hdr == HdrType::integer) {
+  if (fixed_quarter) {
     for (int i = 0; i < 3; ++i) reflect[i] = mathlib_gamma_to_linear(m.reflect_tint[i]) * 4.0f;
+  } else if (hdr == HdrType::integer) {
+    reflect = material_gamma_to_linear(m.reflect_tint) / water_reflectivity(m);
   } else {
     reflect = material_gamma_to_linear(m.reflect_tint);
   }
@@ -123,7 +167,7 @@ inline WaterParams water_constants(const WaterMaterial& m, HdrType hdr, const To
   p.refract_tint = glm::vec4(material_gamma_to_linear(m.refract_tint), 1.0f);
   p.fog_color = glm::vec4(material_gamma_to_linear(m.fog_color), 1.0f);
   p.reflect_refract_scale = glm::vec4(m.reflect_amount, m.reflect_amount, m.refract_amount, m.refract_amount);
-  const float overbright = hdr == HdrType::integer && faithful_blurry_overbright ? 4.0f : 1.0f;
+  const float overbright = fixed_quarter && faithful_blurry_overbright ? 4.0f : 1.0f;
   p.fog_params = glm::vec4(m.fog_start, m.fog_end - m.fog_start, overbright, 0.0f);
   p.tonemap = tonemap;
   return p;
@@ -136,7 +180,8 @@ struct WaterInputs {
   float3<L> tangent_eye;     ///< eye vector in tangent space, unnormalised
   float4<L> reflect_refract; ///< projective: reflection .xy, refraction .wz (times w)
   L w;                       ///< projection w
-  L proj_z;                  ///< projection z (below-water fog)
+  L proj_z;                  ///< projection z (below-water fog, and the epilogue's pixel fog)
+  L world_z = L(0.0f);       ///< world z (the epilogue's height fog)
 };
 
 /// The normal map read (texels only: the rest depends on it).
@@ -204,7 +249,8 @@ inline float4<L> water_combine(const WaterNormalTexels<L>& t, const WaterInputs<
   } else {
     result = refract;
   }
-  return final_output<ToneMap::none>(float4<L>(result, L(1.0f)), p.tonemap);
+  const FogInputs<L> pixel_fog{in.world_z, in.proj_z};
+  return fogged_output<ToneMap::none, C.fog>(float4<L>(result, L(1.0f)), p.tonemap, pixel_fog, p.pixel_fog);
 }
 
 template <WaterCombo C, Lane L>
@@ -234,6 +280,7 @@ inline WaterInputs<Counted> water_counted_inputs(CountedInputs& in) {
   r.w = in.scalar();
   r.proj_z = in.scalar();
   if constexpr (C.multitexture) r.extra_bump_uv = in.vector<4>();
+  if constexpr (C.fog == Fog::height) r.world_z = in.scalar();
   return r;
 }
 
