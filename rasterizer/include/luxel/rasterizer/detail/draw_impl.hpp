@@ -174,11 +174,17 @@ class TileRasterizer {
   static Float clamp_depth(const Float& z, const Float& min_depth, const Float& max_depth) {
     return xsimd::min(xsimd::max(z, min_depth), max_depth);
   }
-  StampDepth stamp_depth(const TriangleSetup& t, int px, int py) const {
+  /// The block of the stamp whose corner is (px, py): its corner's x and the stamp's phase in it.
+  struct StampBlock {
+    int x, phase;
+  };
+  static StampBlock stamp_block(int px) {
+    const int x = px & ~(kPlaneBlockWidth - 1);
+    return {x, (px - x) / simd::kStampWidth};
+  }
+  StampDepth stamp_depth(const TriangleSetup& t, StampBlock block, int py) const {
     if (constant_depth_) return {0.0f, 0};
-    const int block_x = px & ~(kPlaneBlockWidth - 1);
-    return {std::fma(t.z.dqdx, float(block_x) - t.ref_x, t.z.dqdy * (float(py) - t.ref_y)),
-            (px - block_x) / simd::kStampWidth};
+    return {std::fma(t.z.dqdx, float(block.x) - t.ref_x, t.z.dqdy * (float(py) - t.ref_y)), block.phase};
   }
   /// The pixel functor's interpolants at the pixel centers (cx, cy relative to vertex 0),
   /// perspective-correct.
@@ -571,7 +577,8 @@ void TileRasterizer<PS, N, kPath, S>::shade_stamp(const TriangleSetup& t, int px
                                                    Int* coverage) {
   // The fixed paths test depth by construction: no flag to read.
   constexpr bool kFixedDepthPath = kPath == DepthPath::EarlyLess || kPath == DepthPath::EarlyLessEqual;
-  const StampDepth stamp_z = kFixedDepthPath || depth_test_ ? stamp_depth(t, px, py) : StampDepth{0.0f, 0};
+  const StampBlock block = stamp_block(px);
+  const StampDepth stamp_z = kFixedDepthPath || depth_test_ ? stamp_depth(t, block, py) : StampDepth{0.0f, 0};
   Int live(0);
   if constexpr (kFixedDepthPath) {
     constexpr CompareFunc kFunc = kPath == DepthPath::EarlyLess ? CompareFunc::Less : CompareFunc::LessEqual;
@@ -606,10 +613,9 @@ void TileRasterizer<PS, N, kPath, S>::shade_stamp(const TriangleSetup& t, int px
   in.x = Float(float(px)) + lanes_.center_x;
   in.y = Float(float(py)) + lanes_.center_y;
   if constexpr (N > 0) {
-    // Offsets of the pixel centers from the triangle's reference vertex.
-    // (kPlaneBlockWidth: the block's corner, so that the rounding is the same for any stamp width)
-    const int block_x = px & ~(kPlaneBlockWidth - 1);
-    const Float cx = Float(float(block_x) - t.ref_x) + block_center_x_[(px - block_x) / simd::kStampWidth];
+    // Offsets of the pixel centers from the triangle's reference vertex, from the block's corner
+    // (kPlaneBlockWidth: the same rounding for any stamp width).
+    const Float cx = Float(float(block.x) - t.ref_x) + block_center_x_[block.phase];
     const Float cy = Float(float(py) - t.ref_y) + lanes_.center_y;
     interpolate(t, cx, cy, in);
   }
