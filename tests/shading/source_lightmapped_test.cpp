@@ -5,8 +5,11 @@
 
 #include "luxel/shading/source/lightmapped_generic.hpp"
 
+#include <glm/geometric.hpp>
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
 #include <cstdio>
 
 namespace luxel::shading::source {
@@ -91,6 +94,54 @@ TEST(SourceLightmapped, NormalAlongABasisVectorSeesOnlyItsLightmap) {
   }
 }
 
+// The RNM combine of §1.3 in double, from the formula: n = 2 tex - 1, d_i = sat(n · b_i)², diffuse
+// = Σ d_i LM_i / Σ d_i × c12 × albedo. The basis is the exact one (√(2/3), 1/√6, 1/√2, 1/√3), not
+// the shader's float literals.
+glm::dvec3 rnm_reference(const glm::vec4& bump_texel, const glm::dvec3 (&lightmaps)[3], const glm::dvec3& c12,
+                         const glm::dvec3& albedo) {
+  const double basis[3][3] = {{std::sqrt(2.0 / 3.0), 0.0, 1.0 / std::sqrt(3.0)},
+                              {-1.0 / std::sqrt(6.0), 1.0 / std::sqrt(2.0), 1.0 / std::sqrt(3.0)},
+                              {-1.0 / std::sqrt(6.0), -1.0 / std::sqrt(2.0), 1.0 / std::sqrt(3.0)}};
+  const glm::dvec3 n = glm::dvec3(bump_texel) * 2.0 - 1.0;
+  glm::dvec3 sum(0.0);
+  double weights = 0.0;
+  for (int i = 0; i < 3; ++i) {
+    const double d = std::clamp(n.x * basis[i][0] + n.y * basis[i][1] + n.z * basis[i][2], 0.0, 1.0);
+    sum += d * d * lightmaps[i];
+    weights += d * d;
+  }
+  return sum / weights * c12 * albedo;
+}
+
+TEST(SourceLightmapped, OffAxisNormalsWeighTheLightmapsBySquaredClampedCosines) {
+  // Normals where squared and plain weights, or clamped and unclamped ones, give different
+  // colors: between two basis vectors at unequal distances, inside the basis cone, past one basis
+  // vector (one weight clamped to 0), and a texel so long that a dot exceeds 1 (clamped to 1).
+  const glm::dvec3 b0(std::sqrt(2.0 / 3.0), 0.0, 1.0 / std::sqrt(3.0));
+  const glm::dvec3 b1(-1.0 / std::sqrt(6.0), 1.0 / std::sqrt(2.0), 1.0 / std::sqrt(3.0));
+  const glm::dvec3 between = glm::normalize(0.8 * b0 + 0.3 * b1);
+  const glm::dvec3 normals[] = {between, glm::normalize(glm::dvec3(0.3, 0.2, 0.9)),
+                                glm::normalize(glm::dvec3(0.7, -0.1, 0.3)), glm::normalize(glm::dvec3(-0.6, 0.5, 0.4)),
+                                glm::dvec3(1.0, 1.0, 1.0)};
+  const glm::dvec3 lightmaps[3] = {{0.9, 0.2, 0.1}, {0.1, 1.7, 0.3}, {0.4, 0.3, 2.5}};
+  const glm::dvec3 c12(1.3, 0.9, 1.1), albedo(0.6, 0.8, 0.5);
+  LightmappedGenericParams p;
+  p.tint_lightmap_scale = glm::vec4(glm::vec3(c12), 1.0f);
+  for (const glm::dvec3& n : normals) {
+    LightmappedTexels<float> t;
+    const glm::vec4 texel(glm::vec3(n * 0.5 + 0.5), 1.0f);
+    t.bump = float4<float>(texel.x, texel.y, texel.z, texel.w);
+    t.base = float4<float>(float(albedo.x), float(albedo.y), float(albedo.z), 1.0f);
+    for (int k = 0; k < 3; ++k)
+      t.lightmap[k + 1] = float3<float>(float(lightmaps[k].x), float(lightmaps[k].y), float(lightmaps[k].z));
+    const glm::dvec3 want = rnm_reference(texel, lightmaps, c12, albedo);
+    const float4<float> got = combine<kBump>(t, p);
+    for (int c = 0; c < 3; ++c)
+      EXPECT_NEAR(got[c], want[c], 2e-6 * std::max(1.0, want[c])) << "normal (" << n.x << ", " << n.y << ", " << n.z
+                                                                 << ") channel " << c;
+  }
+}
+
 TEST(SourceLightmapped, FlatPathIsLightmapTimesC12TimesBase) {
   LightmappedGenericParams p;
   p.tint_lightmap_scale = glm::vec4(1.0f, 0.5f, 2.0f, 0.75f);
@@ -149,6 +200,137 @@ TEST(SourceLightmapped, FresnelContrastAndSaturationOnTheFullPath) {
   in.eye_vector = float3<float>(1.0f, 0.0f, 0.0f);
   const float4<float> g = combine<kFull>(t, p, in);
   EXPECT_TRUE(std::isfinite(g.x));
+}
+
+// A cube map whose color says which way it was read: each channel a different affine function
+// of the unit direction, over the lane, and the same in double for the references.
+template <Lane L>
+float3<L> direction_env(const float3<L>& r) {
+  const float3<L> d = normalize(r);
+  return float3<L>((d.x * 0.5f + 0.6f) * 2.0f, d.y * 0.5f + 0.6f, (d.z * 0.5f + 0.6f) * 3.0f);
+}
+glm::dvec3 direction_env_reference(const glm::dvec3& r) {
+  const glm::dvec3 d = glm::normalize(r);
+  return {(d.x * 0.5 + 0.6) * 2.0, d.y * 0.5 + 0.6, (d.z * 0.5 + 0.6) * 3.0};
+}
+
+/// §5.1 in double from the formula: R = 2(N·E)N − (N·N)E, spec = ENV_MAP_SCALE · cube(R) · mask ·
+/// tint, then (full path) contrast, saturation and Fresnel (1 − N·Ê)^5 (1 − R0) + R0.
+struct EnvmapReference {
+  glm::dvec3 mask{1.0}, tint{1.0};
+  double envmap_scale = 1.0, contrast = 0.0, saturation = 1.0, r0 = 1.0;
+  bool full = false, square = false;
+  glm::dvec3 operator()(const glm::dvec3& n, const glm::dvec3& e) const {
+    const glm::dvec3 r = 2.0 * glm::dot(n, e) * n - glm::dot(n, n) * e;
+    glm::dvec3 spec = direction_env_reference(r) * envmap_scale * mask * tint;
+    if (square) spec = spec * spec;
+    if (full) {
+      spec = spec + (spec * spec - spec) * contrast;
+      const double grey = glm::dot(spec, glm::dvec3(0.299, 0.587, 0.114));
+      spec = grey + (spec - grey) * saturation;
+      spec *= std::pow(1.0 - glm::dot(n, glm::normalize(e)), 5.0) * (1.0 - r0) + r0;
+    }
+    return spec;
+  }
+};
+
+template <LightmappedCombo C>
+float4<float> combine_direction_env(const LightmappedTexels<float>& t, const LightmappedGenericParams& p,
+                                    const LightmappedInputs<float>& in) {
+  return lightmapped_generic_combine<C>(t, in, p, [](const float3<float>& r) { return direction_env(r); });
+}
+
+float3<float> f3(const glm::dvec3& v) { return float3<float>(float(v.x), float(v.y), float(v.z)); }
+glm::dvec3 d3(const float3<float>& v) { return glm::dvec3(v.x, v.y, v.z); }
+
+void expect_rgb_near(const float4<float>& got, const glm::dvec3& want, const char* what) {
+  for (int c = 0; c < 3; ++c) EXPECT_NEAR(got[c], want[c], 1e-5 * std::max(1.0, std::abs(want[c]))) << what << " channel " << c;
+}
+
+TEST(SourceLightmapped, EnvmapAtObliqueEyesReflectsAboutTheUnnormalisedNormal) {
+  // Flat surface, $envmapmask texture, fast path: N (not unit) and E oblique, so that R = N,
+  // R = E, R = 2(N·E)N − E or a renormalised N would each read another direction.
+  constexpr LightmappedCombo kMasked{false, true, EnvmapMask::texture, EnvmapPath::fast};
+  LightmappedGenericParams p;
+  p.tonemap.c30 = glm::vec4(1.25f, 1.0f, 0.7f, 1.0f);
+  p.envmap_tint = glm::vec4(0.9f, 0.5f, 0.3f, 0.0f);
+  LightmappedTexels<float> t;
+  t.base = float4<float>(0.0f, 0.0f, 0.0f, 1.0f);
+  t.mask = float3<float>(0.8f, 0.4f, 0.6f);
+  const glm::dvec3 normals[] = {{0.3, -0.2, 1.4}, {-0.5, 0.4, 0.7}, {0.9, 0.1, 0.35}};
+  const glm::dvec3 eyes[] = {{2.0, 1.0, 3.0}, {-1.5, 0.25, 0.5}, {0.1, -2.0, 1.2}};
+  EnvmapReference ref;
+  ref.mask = d3(t.mask);
+  ref.tint = glm::dvec3(glm::vec3(p.envmap_tint));
+  ref.envmap_scale = p.tonemap.c30.z;
+  for (const glm::dvec3& n : normals) {
+    for (const glm::dvec3& e : eyes) {
+      LightmappedInputs<float> in;
+      in.normal = f3(n);
+      in.eye_vector = f3(e);
+      const float4<float> got = combine_direction_env<kMasked>(t, p, in);
+      expect_rgb_near(got, ref(d3(in.normal), d3(in.eye_vector)) * double(p.tonemap.c30.x), "flat envmap");
+    }
+  }
+}
+
+TEST(SourceLightmapped, FullEnvmapPathAtObliqueEyes) {
+  // Bump map in a rotated tangent frame, mask from the normal map's alpha, contrast 0.4,
+  // saturation 0.6, R0 = 0.1, and eyes from 20° to 80° off the normal (Fresnel 1e-7 .. 0.4).
+  constexpr LightmappedCombo kFull{true, true, EnvmapMask::normal_alpha, EnvmapPath::full};
+  LightmappedGenericParams p;
+  p.envmap_tint = glm::vec4(0.9f, 1.1f, 0.6f, 0.0f);
+  p.envmap_contrast_saturation = glm::vec4(0.4f, 0.6f, 0.0f, 0.0f);
+  p.fresnel = fresnel_constant(0.1f);
+  p.tonemap.c30 = glm::vec4(1.0f, 1.0f, 0.8f, 1.0f);
+  LightmappedTexels<float> t;
+  t.base = float4<float>(0.0f, 0.0f, 0.0f, 1.0f);
+  t.bump = float4<float>(0.62f, 0.41f, 0.97f, 0.7f);  // n = (0.24, -0.18, 0.94): |n| = 0.99
+  for (int k = 1; k < 4; ++k) t.lightmap[k] = float3<float>(0.0f);
+  // A frame rotated 30° about X, so that world N is not the tangent-space n.
+  const double c = std::cos(0.5235987755982988), s = std::sin(0.5235987755982988);
+  const glm::dvec3 tangent(1.0, 0.0, 0.0), binormal(0.0, c, s), normal(0.0, -s, c);
+  LightmappedInputs<float> in;
+  in.tangent = f3(tangent);
+  in.binormal = f3(binormal);
+  in.normal = f3(normal);
+  const glm::dvec3 n = glm::dvec3(t.bump.x, t.bump.y, t.bump.z) * 2.0 - 1.0;
+  const glm::dvec3 world_n = n.x * d3(in.tangent) + n.y * d3(in.binormal) + n.z * d3(in.normal);
+  EnvmapReference ref;
+  ref.full = true;
+  ref.mask = glm::dvec3(t.bump.w);
+  ref.tint = glm::dvec3(glm::vec3(p.envmap_tint));
+  ref.envmap_scale = p.tonemap.c30.z;
+  ref.contrast = 0.4;
+  ref.saturation = 0.6;
+  ref.r0 = 0.1;
+  const glm::dvec3 side = glm::normalize(glm::cross(world_n, glm::dvec3(0.3, 1.0, 0.2)));
+  for (double degrees : {20.0, 45.0, 60.0, 80.0}) {
+    const double a = degrees * 3.14159265358979323846 / 180.0;
+    in.eye_vector = f3(3.0 * (std::cos(a) * glm::normalize(world_n) + std::sin(a) * side));
+    const float4<float> got = combine_direction_env<kFull>(t, p, in);
+    const glm::dvec3 want = ref(world_n, d3(in.eye_vector));
+    expect_rgb_near(got, want, "full envmap");
+    EXPECT_GT(want.x, 1e-4) << "the Fresnel term leaves a measurable value at " << degrees << "°";
+  }
+}
+
+TEST(SourceLightmapped, InvertedBaseAlphaMaskWithContrastOneAtAnObliqueEye) {
+  constexpr LightmappedCombo kSquared{false, true, EnvmapMask::base_alpha_inverted, EnvmapPath::fast_contrast};
+  LightmappedGenericParams p;
+  p.envmap_tint = glm::vec4(0.7f, 0.9f, 0.4f, 0.0f);
+  LightmappedTexels<float> t;
+  t.base = float4<float>(0.0f, 0.0f, 0.0f, 0.3f);
+  LightmappedInputs<float> in;
+  in.normal = float3<float>(0.2f, 0.5f, 0.8f);
+  in.eye_vector = float3<float>(-1.0f, 0.3f, 0.9f);
+  EnvmapReference ref;
+  ref.mask = glm::dvec3(1.0 - double(t.base.w));
+  ref.tint = glm::dvec3(glm::vec3(p.envmap_tint));
+  ref.square = true;
+  const float4<float> got = combine_direction_env<kSquared>(t, p, in);
+  expect_rgb_near(got, ref(d3(in.normal), d3(in.eye_vector)), "inverted base alpha, contrast 1");
+  EXPECT_EQ(got.w, 1.0f) << "the base alpha is a mask, not opacity";
 }
 
 TEST(SourceLightmapped, FastPathQuirkIsOnByDefault) {
