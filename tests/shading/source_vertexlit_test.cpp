@@ -1,16 +1,21 @@
-// VertexLitGeneric: ambient cube, local lights (point, spot, directional) with the SDK's
-// attenuation, squared Half-Lambert, Phong with Fresnel ranges and rim; light folding into the
-// ambient cube; SIMD vs scalar on random and hard inputs; every combo's DX9 budget; the ambient
-// cube's count beside Valve's published ones.
+// VertexLitGeneric: ambient cube, local lights (point, spot inside and between its cones,
+// directional) with the SDK's attenuation, squared Half-Lambert, Phong at intermediate Fresnel
+// values with the exponent texture, boost, tint and rim (masked and not) against double math;
+// light folding into the ambient cube; SIMD vs scalar on random and hard inputs; every combo's
+// DX9 budget; the ambient cube's count beside Valve's published ones.
 
 #include "source_support.hpp"
 
 #include "luxel/shading/source/light_folding.hpp"
 #include "luxel/shading/source/vertexlit_generic.hpp"
 
+#include <glm/geometric.hpp>
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
 #include <cstdio>
+#include <vector>
 
 namespace luxel::shading::source {
 namespace {
@@ -118,6 +123,187 @@ TEST(SourceVertexLit, PhongFresnelRangesAndExponentQuirks) {
   EXPECT_NEAR(shade<kPhong>(p, float3<float>(0.0f), float3<float>(0, 0, 1), t).x, 1.0f, 1e-5f);
   p.phong_params.x = 150.0f;
   EXPECT_NEAR(shade<kPhong>(p, float3<float>(0.0f), float3<float>(0, 0, 1), t).x, 0.0f, 1e-6f);
+}
+
+TEST(SourceVertexLit, SpotBetweenItsConesFollowsTheFalloffExponent) {
+  // §3.2: atten = 1 / (a0 + a1 d + a2 d²) · sat(max(1e-4, (cos θ − cos outer) / (cos inner − cos
+  // outer))^exponent), with θ between the cones so that the fringe is neither 0 nor 1 and an
+  // exponent of 1 or a missing pow would show. Lambert, normal toward the light: N·L = 1.
+  constexpr double kInner = 0.95, kOuter = 0.80;
+  for (double exponent : {2.0, 5.0, 0.5}) {
+    LightDesc s;
+    s.type = LightDesc::Type::spot;
+    s.position = glm::vec3(0.0f, 0.0f, 4.0f);
+    s.direction = glm::vec3(0.0f, 0.0f, -1.0f);
+    s.color = glm::vec3(2.0f, 1.0f, 0.5f);
+    s.attenuation = glm::vec3(0.5f, 0.1f, 0.05f);
+    s.cos_inner = float(kInner);
+    s.cos_outer = float(kOuter);
+    s.spot_exponent = float(exponent);
+    VertexLitParams p;
+    p.lights[0] = to_local_light(s);
+    for (double cos_theta : {0.83, 0.875, 0.93}) {
+      // The point is d from the light, θ off the axis; float rounding of cos θ - cos outer, raised
+      // to the exponent, allows 2e-4 relative.
+      const double d = 5.0;
+      const double sin_theta = std::sqrt(1.0 - cos_theta * cos_theta);
+      const glm::dvec3 point(d * sin_theta, 0.0, 4.0 - d * cos_theta);
+      const glm::dvec3 to_light = glm::normalize(glm::dvec3(s.position) - point);
+      const double fringe = (cos_theta - kOuter) / (kInner - kOuter);
+      const double atten = std::pow(fringe, exponent) / (0.5 + 0.1 * d + 0.05 * d * d);
+      const float4<float> c = shade<kTwoLambert>(p, float3<float>(float(point.x), float(point.y), float(point.z)),
+                                                 float3<float>(float(to_light.x), float(to_light.y), float(to_light.z)));
+      EXPECT_NEAR(c.x, 2.0 * atten, 2e-4 * 2.0 * atten) << "cos θ " << cos_theta << ", exponent " << exponent;
+      EXPECT_NEAR(c.z, 0.5 * atten, 2e-4 * 0.5 * atten) << "cos θ " << cos_theta << ", exponent " << exponent;
+    }
+  }
+}
+
+// ---- Phong against double math ---------------------------------------------------------------
+
+/// One directional light and the material of the skin shader, in double, from SOURCE_FACTS §4
+/// (written from the formulas, not from the shader code).
+struct PhongReference {
+  glm::dvec3 light_dir{0.0, 0.0, 1.0};  // unit, toward the light
+  glm::dvec3 light_color{1.0};
+  glm::dvec3 base{0.0};
+  double base_alpha = 1.0;
+  glm::dvec4 exponent_texel{1.0};       // r: exponent 1 + 149 r, a: rim mask
+  bool exponent_texture = false;
+  double exponent_constant = 5.0;
+  glm::dvec3 tint{1.0};
+  double boost = 1.0;
+  double fresnel_min = 0.0, fresnel_mid = 0.5, fresnel_max = 1.0;
+  bool rim = false;
+  double rim_exponent = 4.0, rim_boost = 1.0;
+  bool rim_mask = false;
+  glm::dvec3 rim_ambient{0.0};          // the ambient cube along V (one color: tests keep it uniform)
+
+  glm::dvec3 operator()(const glm::dvec3& normal, const glm::dvec3& view) const {
+    const glm::dvec3 n = glm::normalize(normal), v = glm::normalize(view), l = light_dir;
+    const double n_dot_l = glm::dot(n, l);
+    const double h = std::clamp(0.5 * n_dot_l + 0.5, 0.0, 1.0);
+    const glm::dvec3 diffuse = base * light_color * (h * h);
+    const glm::dvec3 r = 2.0 * glm::dot(n, v) * n - v;
+    const double r_dot_l = std::clamp(glm::dot(r, l), 0.0, 1.0);
+    const double exponent = exponent_texture ? 1.0 + 149.0 * exponent_texel.x : exponent_constant;
+    const glm::dvec3 lit = light_color * std::clamp(n_dot_l, 0.0, 1.0);
+    glm::dvec3 spec = lit * std::pow(r_dot_l, exponent);
+    // Fresnel: f = sat(1 − N·V)², then piecewise linear through (0, min), (0.5, mid), (1, max).
+    const double one_minus = std::clamp(1.0 - glm::dot(n, v), 0.0, 1.0);
+    const double f = one_minus * one_minus;
+    const double fresnel = f < 0.5 ? fresnel_min + (fresnel_mid - fresnel_min) * (f / 0.5)
+                                   : fresnel_mid + (fresnel_max - fresnel_mid) * ((f - 0.5) / 0.5);
+    spec *= base_alpha * fresnel * boost;
+    if (rim) {
+      const double m = (rim_mask ? exponent_texel.w : 1.0) * std::pow(one_minus, 4.0);
+      const glm::dvec3 rim_light = lit * std::pow(r_dot_l, rim_exponent) * m;
+      spec = glm::max(spec, rim_light);
+      spec += rim_ambient * rim_boost * std::clamp(m * n.z, 0.0, 1.0);
+    }
+    return diffuse + spec * tint;
+  }
+};
+
+/// The shader's parameters for the same material, lit by one directional light.
+VertexLitParams phong_params(const PhongReference& ref, const glm::dvec3& eye) {
+  VertexLitParams p;
+  LightDesc d;
+  d.type = LightDesc::Type::directional;
+  d.direction = -glm::vec3(ref.light_dir);
+  d.color = glm::vec3(ref.light_color);
+  p.lights[0] = to_local_light(d);
+  p.eye_position = glm::vec4(glm::vec3(eye), 1.0f);
+  p.phong_tint_boost = glm::vec4(glm::vec3(ref.tint), float(ref.boost));
+  p.phong_params = glm::vec4(float(ref.exponent_constant), float(ref.rim_exponent), float(ref.rim_boost),
+                             ref.rim_mask ? 1.0f : 0.0f);
+  p.fresnel_ranges = encode_fresnel_ranges(float(ref.fresnel_min), float(ref.fresnel_mid), float(ref.fresnel_max));
+  const glm::vec3 a(ref.rim_ambient);
+  p.ambient.color = {a, a, a, a, a, a};
+  return p;
+}
+
+template <VertexLitCombo C>
+void expect_phong(const PhongReference& ref, const glm::dvec3& normal, const glm::dvec3& eye, const char* what) {
+  VertexLitTexels<float> t;
+  t.base = float4<float>(float(ref.base.x), float(ref.base.y), float(ref.base.z), float(ref.base_alpha));
+  t.exponent = float4<float>(float(ref.exponent_texel.x), float(ref.exponent_texel.y), float(ref.exponent_texel.z),
+                             float(ref.exponent_texel.w));
+  const VertexLitParams p = phong_params(ref, eye);
+  const float4<float> got = shade<C>(p, float3<float>(0.0f), float3<float>(float(normal.x), float(normal.y), float(normal.z)), t);
+  // The uniform ambient cube also lights the diffuse: albedo × ambient.
+  const glm::dvec3 want = ref(normal, eye) + ref.base * ref.rim_ambient;
+  for (int c = 0; c < 3; ++c)
+    EXPECT_NEAR(got[c], want[c], 2e-5 * std::max(1.0, want[c])) << what << ", channel " << c << ", eye (" << eye.x
+                                                                << ", " << eye.y << ", " << eye.z << ")";
+}
+
+// Eyes at 30°..75° from a tilted normal, on both sides of the reflection, so that the Fresnel
+// value f = (1 − N·V)² takes intermediate values on both sides of 0.5 (0.018 .. 0.55).
+const glm::dvec3 kPhongNormal = glm::normalize(glm::dvec3(0.2, -0.1, 1.0));
+std::vector<glm::dvec3> phong_eyes() {
+  std::vector<glm::dvec3> eyes;
+  const glm::dvec3 side = glm::normalize(glm::cross(kPhongNormal, glm::dvec3(1.0, 0.3, 0.0)));
+  for (double degrees : {30.0, 50.0, 62.0, 75.0}) {
+    const double a = degrees * 3.14159265358979323846 / 180.0;
+    for (double sign : {1.0, -1.0}) eyes.push_back(4.0 * (std::cos(a) * kPhongNormal + sign * std::sin(a) * side));
+  }
+  return eyes;
+}
+
+PhongReference phong_material() {
+  PhongReference ref;
+  ref.light_dir = glm::normalize(glm::dvec3(0.5, 0.3, 0.8));
+  ref.light_color = glm::dvec3(1.5, 1.0, 0.7);
+  ref.base = glm::dvec3(0.3, 0.2, 0.1);
+  ref.base_alpha = 0.8;
+  ref.exponent_constant = 6.0;
+  ref.tint = glm::dvec3(1.0, 0.8, 0.5);
+  ref.boost = 2.5;
+  ref.fresnel_min = 0.2;
+  ref.fresnel_mid = 0.6;
+  ref.fresnel_max = 0.9;
+  return ref;
+}
+
+TEST(SourceVertexLit, PhongAtIntermediateFresnelWithBoostAndTint) {
+  constexpr VertexLitCombo kPhong{2, false, true, false, false, true, true};
+  const PhongReference ref = phong_material();
+  for (const glm::dvec3& eye : phong_eyes()) expect_phong<kPhong>(ref, kPhongNormal, eye, "phong");
+}
+
+TEST(SourceVertexLit, PhongExponentTextureIsOnePlus149Red) {
+  constexpr VertexLitCombo kExpTex{2, false, true, true, false, true, true};
+  PhongReference ref = phong_material();
+  ref.exponent_texture = true;
+  for (double red : {0.0, 0.02, 0.1}) {
+    ref.exponent_texel = glm::dvec4(red, 0.0, 0.0, 1.0);
+    for (const glm::dvec3& eye : phong_eyes()) expect_phong<kExpTex>(ref, kPhongNormal, eye, "exponent texture");
+  }
+}
+
+TEST(SourceVertexLit, RimLightWithAndWithoutItsMask) {
+  constexpr VertexLitCombo kRim{2, false, true, true, true, true, true};
+  PhongReference ref = phong_material();
+  ref.exponent_texture = true;
+  ref.exponent_texel = glm::dvec4(0.05, 0.0, 0.0, 0.35);  // a: the rim mask
+  ref.rim = true;
+  ref.rim_exponent = 2.0;
+  ref.rim_boost = 1.7;
+  ref.rim_ambient = glm::dvec3(0.4, 0.5, 0.6);
+  ref.boost = 0.3;  // a weak specular, so that max(specular, rim) picks the rim at grazing eyes
+  ref.light_dir = glm::normalize(glm::dvec3(-0.4, 0.2, 0.5));
+  int rim_wins = 0;
+  for (bool masked : {false, true}) {
+    ref.rim_mask = masked;
+    for (const glm::dvec3& eye : phong_eyes()) {
+      expect_phong<kRim>(ref, kPhongNormal, eye, masked ? "rim, masked" : "rim");
+      PhongReference no_rim = ref;
+      no_rim.rim = false;
+      if (ref(kPhongNormal, eye).x > no_rim(kPhongNormal, eye).x + 1e-3) ++rim_wins;
+    }
+  }
+  EXPECT_GE(rim_wins, 4) << "the cases exercise the rim, not only the specular";
 }
 
 TEST(SourceVertexLit, FoldedDirectionalLightIsExactForAxisNormals) {
