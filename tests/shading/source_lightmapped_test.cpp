@@ -9,8 +9,13 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdio>
+#include <initializer_list>
+#include <limits>
+#include <utility>
+#include <vector>
 
 namespace luxel::shading::source {
 namespace {
@@ -381,14 +386,22 @@ TEST(SourceLightmapped, LdrLightmapRoundTripThroughSrgbRead) {
 
 // ---- SIMD vs scalar ---------------------------------------------------------------------------
 
-template <LightmappedCombo C>
-testing::LaneComparison compare_lightmapped(int hard_every, uint32_t seed) {
+LightmappedGenericParams lane_test_params() {
   LightmappedGenericParams p;
   p.tint_lightmap_scale = glm::vec4(1.3f, 1.0f, 0.8f, 1.0f);
   p.envmap_contrast_saturation = glm::vec4(0.4f, 0.6f, 0.0f, 0.0f);
   p.fresnel = fresnel_constant(0.1f);
   p.tonemap = ToneMapConstants::for_scale(0.8f, 1.0f, 1.0f);
-  auto shade = [&]<class L>(const auto& get) -> float4<L> {
+  return p;
+}
+
+/// Inputs: base 0-3, bump 4-7, mask 8-10, lightmaps 11-22 (flat, bump 1, 2, 3), tangent 23-25,
+/// binormal 26-28, normal 29-31, eye vector 32-34.
+constexpr int kLightmappedInputs = 35;
+
+template <LightmappedCombo C>
+auto lightmapped_lane_shader(const LightmappedGenericParams& p) {
+  return [&p]<class L>(const auto& get) -> float4<L> {
     LightmappedTexels<L> t;
     t.base = float4<L>(get(0), get(1), get(2), get(3));
     t.bump = float4<L>(get(4), get(5), get(6), get(7));
@@ -401,22 +414,70 @@ testing::LaneComparison compare_lightmapped(int hard_every, uint32_t seed) {
     in.eye_vector = float3<L>(get(32), get(33), get(34));
     return lightmapped_generic_combine<C>(t, in, p, [](const float3<L>& r) { return testing::analytic_env(r); });
   };
-  std::vector<Draw> draws(35, Draw{0.0f, 1.0f, hard_every});
-  for (int i = 11; i < 23; ++i) draws[i] = Draw{0.0f, 4.0f, hard_every};
-  for (int i = 23; i < 35; ++i) draws[i] = Draw{-1.0f, 1.0f, hard_every};
-  return compare_lanes<35>(shade, draws, 256, seed);
 }
 
-TEST(SourceLightmapped, SimdWithinOneStepOfScalarForEveryCombo) {
+template <LightmappedCombo C>
+testing::LaneComparison compare_lightmapped(int hard_every, uint32_t seed) {
+  const LightmappedGenericParams p = lane_test_params();
+  std::vector<Draw> draws(kLightmappedInputs, Draw{0.0f, 1.0f, hard_every});
+  for (int i = 11; i < 23; ++i) draws[i] = Draw{0.0f, 4.0f, hard_every};
+  for (int i = 23; i < 35; ++i) draws[i] = Draw{-1.0f, 1.0f, hard_every};
+  return compare_lanes<kLightmappedInputs>(lightmapped_lane_shader<C>(p), draws, 256, seed);
+}
+
+/// Pixels built to sit on the edges of the math.
+std::vector<std::array<float, kLightmappedInputs>> lightmapped_hard_pixels() {
+  using Pixel = std::array<float, kLightmappedInputs>;
+  const float defaults[kLightmappedInputs] = {0.6f, 0.5f, 0.4f, 0.3f, 0.55f, 0.45f, 0.9f, 0.8f, 0.7f, 0.6f, 0.5f, 1.0f,
+                                              0.9f, 0.8f, 0.5f, 0.4f, 0.3f, 0.2f, 1.1f, 0.6f, 1.5f, 0.2f, 0.1f, 1.0f,
+                                              0.0f, 0.0f, 0.0f, 1.0f, 0.0f, 0.0f, 0.0f, 1.0f, 0.3f, -0.2f, 2.0f};
+  Pixel plain{};
+  std::copy(std::begin(defaults), std::end(defaults), plain.begin());
+  const float nan = std::numeric_limits<float>::quiet_NaN();
+  std::vector<Pixel> pixels;
+  auto with = [&](std::initializer_list<std::pair<int, float>> changes) {
+    Pixel q = plain;
+    for (const auto& [i, v] : changes) q[static_cast<size_t>(i)] = v;
+    pixels.push_back(q);
+  };
+  with({});
+  with({{4, 0.5f}, {5, 0.5f}, {6, 0.0f}});  // n = (0, 0, -1): every weight 0, 0 / 0
+  with({{4, 0.5f}, {5, 0.5f}, {6, 0.5f}});  // n = 0
+  with({{4, 0.5f}, {5, 1.0f}, {6, 0.5f}});  // n = (0, 1, 0): n · basis 0 exactly 0
+  with({{4, 1.0f}, {5, 1.0f}, {6, 1.0f}});  // |n| = √3: dots past 1, clamped
+  with({{29, 0.0f}, {30, 0.0f}, {31, 0.0f}, {23, 0.0f}, {27, 0.0f}});  // zero-length world frame
+  with({{29, 1e-40f}, {30, 0.0f}, {31, 1e-40f}, {23, 1e-40f}, {27, 1e-40f}});  // denormal frame
+  with({{32, 0.0f}, {33, 0.0f}, {34, 0.0f}});  // the eye on the surface: E = 0
+  with({{32, 0.0f}, {33, 0.0f}, {34, 5.0f}});  // head on (N parallel to E)
+  with({{32, 1.0f}, {33, 0.0f}, {34, 0.0f}});  // grazing: N·E = 0
+  with({{32, 1.0f}, {33, 0.0f}, {34, -1e-7f}});  // just behind
+  with({{32, 1e-40f}, {33, 1e-40f}, {34, 1e-40f}});  // denormal eye
+  with({{11, 1e30f}, {14, 1e30f}, {17, 1e30f}, {20, 1e30f}});  // HDR lightmaps
+  with({{0, 1e30f}, {1, 1e30f}, {3, 1e30f}});
+  with({{32, 1e30f}, {33, 1e30f}, {34, 1e30f}});  // N·E overflows
+  with({{8, 1e30f}, {9, 1e30f}});
+  with({{0, nan}, {3, nan}});
+  with({{4, nan}, {7, nan}});
+  with({{11, nan}, {14, nan}, {20, nan}});
+  with({{29, nan}, {32, nan}});
+  with({{34, std::numeric_limits<float>::infinity()}});
+  return pixels;
+}
+
+TEST(SourceLightmapped, SimdAgreesWithScalarBitForBitForEveryCombo) {
   uint32_t seed = 11;
+  const LightmappedGenericParams p = lane_test_params();
+  const auto hard_pixels = lightmapped_hard_pixels();
   for_each_lightmapped_combo([&]<LightmappedCombo C>() {
     const auto random = compare_lightmapped<C>(0, seed++);
     const auto hard = compare_lightmapped<C>(3, seed++);
-    EXPECT_LE(random.max_step, 1) << C.name();
-    EXPECT_LE(hard.max_step, 1) << C.name() << " (hard inputs)";
+    const auto constructed = testing::compare_lanes_at<kLightmappedInputs>(lightmapped_lane_shader<C>(p), hard_pixels);
+    testing::expect_bit_identical(random, C.name());
+    testing::expect_bit_identical(hard, C.name() + " (hard inputs)");
+    testing::expect_bit_identical(constructed, C.name() + " (constructed edge cases)");
     EXPECT_LE(random.max_step_vs_double, 1) << C.name() << ": the lane encode vs the exact curve";
-    std::printf("LightmappedGeneric %-40s simd-vs-scalar max %d step(s) (hard: %d), PSNR %s\n", C.name().c_str(),
-                random.max_step, hard.max_step, std::isinf(random.psnr()) ? "inf (bit-identical)" : "finite");
+    std::printf("LightmappedGeneric %-40s simd-vs-scalar max %d step(s) (hard: %d, constructed: %d)\n",
+                C.name().c_str(), random.max_step, hard.max_step, constructed.max_step);
   });
 }
 

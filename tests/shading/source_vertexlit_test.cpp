@@ -4,6 +4,7 @@
 // light folding into the ambient cube; SIMD vs scalar on random and hard inputs; every combo's
 // DX9 budget; the ambient cube's count beside Valve's published ones.
 
+#include "phong_reference.hpp"
 #include "source_support.hpp"
 
 #include "luxel/shading/source/light_folding.hpp"
@@ -13,8 +14,12 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdio>
+#include <initializer_list>
+#include <limits>
+#include <utility>
 #include <vector>
 
 namespace luxel::shading::source {
@@ -161,52 +166,8 @@ TEST(SourceVertexLit, SpotBetweenItsConesFollowsTheFalloffExponent) {
 
 // ---- Phong against double math ---------------------------------------------------------------
 
-/// One directional light and the material of the skin shader, in double, from SOURCE_FACTS §4
-/// (written from the formulas, not from the shader code).
-struct PhongReference {
-  glm::dvec3 light_dir{0.0, 0.0, 1.0};  // unit, toward the light
-  glm::dvec3 light_color{1.0};
-  glm::dvec3 base{0.0};
-  double base_alpha = 1.0;
-  glm::dvec4 exponent_texel{1.0};       // r: exponent 1 + 149 r, a: rim mask
-  bool exponent_texture = false;
-  double exponent_constant = 5.0;
-  glm::dvec3 tint{1.0};
-  double boost = 1.0;
-  double fresnel_min = 0.0, fresnel_mid = 0.5, fresnel_max = 1.0;
-  bool rim = false;
-  double rim_exponent = 4.0, rim_boost = 1.0;
-  bool rim_mask = false;
-  glm::dvec3 rim_ambient{0.0};          // the ambient cube along V (one color: tests keep it uniform)
-
-  glm::dvec3 operator()(const glm::dvec3& normal, const glm::dvec3& view) const {
-    const glm::dvec3 n = glm::normalize(normal), v = glm::normalize(view), l = light_dir;
-    const double n_dot_l = glm::dot(n, l);
-    const double h = std::clamp(0.5 * n_dot_l + 0.5, 0.0, 1.0);
-    const glm::dvec3 diffuse = base * light_color * (h * h);
-    const glm::dvec3 r = 2.0 * glm::dot(n, v) * n - v;
-    const double r_dot_l = std::clamp(glm::dot(r, l), 0.0, 1.0);
-    const double exponent = exponent_texture ? 1.0 + 149.0 * exponent_texel.x : exponent_constant;
-    const glm::dvec3 lit = light_color * std::clamp(n_dot_l, 0.0, 1.0);
-    glm::dvec3 spec = lit * std::pow(r_dot_l, exponent);
-    // Fresnel: f = sat(1 − N·V)², then piecewise linear through (0, min), (0.5, mid), (1, max).
-    const double one_minus = std::clamp(1.0 - glm::dot(n, v), 0.0, 1.0);
-    const double f = one_minus * one_minus;
-    const double fresnel = f < 0.5 ? fresnel_min + (fresnel_mid - fresnel_min) * (f / 0.5)
-                                   : fresnel_mid + (fresnel_max - fresnel_mid) * ((f - 0.5) / 0.5);
-    spec *= base_alpha * fresnel * boost;
-    if (rim) {
-      const double m = (rim_mask ? exponent_texel.w : 1.0) * std::pow(one_minus, 4.0);
-      const glm::dvec3 rim_light = lit * std::pow(r_dot_l, rim_exponent) * m;
-      spec = glm::max(spec, rim_light);
-      spec += rim_ambient * rim_boost * std::clamp(m * n.z, 0.0, 1.0);
-    }
-    return diffuse + spec * tint;
-  }
-};
-
 /// The shader's parameters for the same material, lit by one directional light.
-VertexLitParams phong_params(const PhongReference& ref, const glm::dvec3& eye) {
+VertexLitParams phong_params(const testing::PhongReference& ref, const glm::dvec3& eye) {
   VertexLitParams p;
   LightDesc d;
   d.type = LightDesc::Type::directional;
@@ -224,9 +185,9 @@ VertexLitParams phong_params(const PhongReference& ref, const glm::dvec3& eye) {
 }
 
 template <VertexLitCombo C>
-void expect_phong(const PhongReference& ref, const glm::dvec3& normal, const glm::dvec3& eye, const char* what) {
+void expect_phong(const testing::PhongReference& ref, const glm::dvec3& normal, const glm::dvec3& eye, const char* what) {
   VertexLitTexels<float> t;
-  t.base = float4<float>(float(ref.base.x), float(ref.base.y), float(ref.base.z), float(ref.base_alpha));
+  t.base = float4<float>(float(ref.base.x), float(ref.base.y), float(ref.base.z), float(ref.mask));
   t.exponent = float4<float>(float(ref.exponent_texel.x), float(ref.exponent_texel.y), float(ref.exponent_texel.z),
                              float(ref.exponent_texel.w));
   const VertexLitParams p = phong_params(ref, eye);
@@ -251,12 +212,12 @@ std::vector<glm::dvec3> phong_eyes() {
   return eyes;
 }
 
-PhongReference phong_material() {
-  PhongReference ref;
+testing::PhongReference phong_material() {
+  testing::PhongReference ref;
   ref.light_dir = glm::normalize(glm::dvec3(0.5, 0.3, 0.8));
   ref.light_color = glm::dvec3(1.5, 1.0, 0.7);
   ref.base = glm::dvec3(0.3, 0.2, 0.1);
-  ref.base_alpha = 0.8;
+  ref.mask = 0.8;
   ref.exponent_constant = 6.0;
   ref.tint = glm::dvec3(1.0, 0.8, 0.5);
   ref.boost = 2.5;
@@ -268,13 +229,13 @@ PhongReference phong_material() {
 
 TEST(SourceVertexLit, PhongAtIntermediateFresnelWithBoostAndTint) {
   constexpr VertexLitCombo kPhong{2, false, true, false, false, true, true};
-  const PhongReference ref = phong_material();
+  const testing::PhongReference ref = phong_material();
   for (const glm::dvec3& eye : phong_eyes()) expect_phong<kPhong>(ref, kPhongNormal, eye, "phong");
 }
 
 TEST(SourceVertexLit, PhongExponentTextureIsOnePlus149Red) {
   constexpr VertexLitCombo kExpTex{2, false, true, true, false, true, true};
-  PhongReference ref = phong_material();
+  testing::PhongReference ref = phong_material();
   ref.exponent_texture = true;
   for (double red : {0.0, 0.02, 0.1}) {
     ref.exponent_texel = glm::dvec4(red, 0.0, 0.0, 1.0);
@@ -284,7 +245,7 @@ TEST(SourceVertexLit, PhongExponentTextureIsOnePlus149Red) {
 
 TEST(SourceVertexLit, RimLightWithAndWithoutItsMask) {
   constexpr VertexLitCombo kRim{2, false, true, true, true, true, true};
-  PhongReference ref = phong_material();
+  testing::PhongReference ref = phong_material();
   ref.exponent_texture = true;
   ref.exponent_texel = glm::dvec4(0.05, 0.0, 0.0, 0.35);  // a: the rim mask
   ref.rim = true;
@@ -298,7 +259,7 @@ TEST(SourceVertexLit, RimLightWithAndWithoutItsMask) {
     ref.rim_mask = masked;
     for (const glm::dvec3& eye : phong_eyes()) {
       expect_phong<kRim>(ref, kPhongNormal, eye, masked ? "rim, masked" : "rim");
-      PhongReference no_rim = ref;
+      testing::PhongReference no_rim = ref;
       no_rim.rim = false;
       if (ref(kPhongNormal, eye).x > no_rim(kPhongNormal, eye).x + 1e-3) ++rim_wins;
     }
@@ -351,8 +312,7 @@ TEST(SourceVertexLit, SignificanceRanksByDeliveredLuminance) {
 
 // ---- SIMD vs scalar ---------------------------------------------------------------------------
 
-template <VertexLitCombo C>
-testing::LaneComparison compare_vertexlit(int hard_every, uint32_t seed) {
+VertexLitParams lane_test_params() {
   VertexLitParams p;
   p.ambient = test_cube();
   p.ambient_sh9 = sh9_ambient_constants(sh9_from_ambient_cube(p.ambient));  // the +sh9 combos
@@ -375,7 +335,16 @@ testing::LaneComparison compare_vertexlit(int hard_every, uint32_t seed) {
   p.phong_params = glm::vec4(150.0f, 4.0f, 1.0f, 1.0f);
   p.fresnel_ranges = encode_fresnel_ranges(0.1f, 0.5f, 1.0f);
   p.tonemap = ToneMapConstants::for_scale(0.7f);
-  auto run = [&]<class L>(const auto& get) -> float4<L> {
+  return p;
+}
+
+/// Inputs: base 0-3, bump 4-7, exponent 8-11, world_pos 12-14, normal 15-17, tangent 18-20,
+/// binormal 21-23, per-vertex attenuation 24-27.
+constexpr int kVertexLitInputs = 28;
+
+template <VertexLitCombo C>
+auto vertexlit_lane_shader(const VertexLitParams& p) {
+  return [&p]<class L>(const auto& get) -> float4<L> {
     VertexLitTexels<L> t;
     t.base = float4<L>(get(0), get(1), get(2), get(3));
     t.bump = float4<L>(get(4), get(5), get(6), get(7));
@@ -388,22 +357,76 @@ testing::LaneComparison compare_vertexlit(int hard_every, uint32_t seed) {
     in.attenuation = float4<L>(get(24), get(25), get(26), get(27));
     return vertexlit_combine<C>(t, in, p);
   };
-  std::vector<Draw> draws(28, Draw{0.0f, 1.0f, hard_every});
-  for (int i = 12; i < 15; ++i) draws[i] = Draw{-2.0f, 2.0f, hard_every};
-  for (int i = 15; i < 24; ++i) draws[i] = Draw{-1.0f, 1.0f, hard_every};
-  return compare_lanes<28>(run, draws, 256, seed);
 }
 
-TEST(SourceVertexLit, SimdWithinOneStepOfScalarForEveryCombo) {
+template <VertexLitCombo C>
+testing::LaneComparison compare_vertexlit(int hard_every, uint32_t seed) {
+  const VertexLitParams p = lane_test_params();
+  std::vector<Draw> draws(kVertexLitInputs, Draw{0.0f, 1.0f, hard_every});
+  for (int i = 12; i < 15; ++i) draws[i] = Draw{-2.0f, 2.0f, hard_every};
+  for (int i = 15; i < 24; ++i) draws[i] = Draw{-1.0f, 1.0f, hard_every};
+  return compare_lanes<kVertexLitInputs>(vertexlit_lane_shader<C>(p), draws, 256, seed);
+}
+
+/// Pixels built to sit on the edges of the math, for lane_test_params()'s lights and eye.
+std::vector<std::array<float, kVertexLitInputs>> vertexlit_hard_pixels() {
+  using Pixel = std::array<float, kVertexLitInputs>;
+  Pixel plain{};
+  const float defaults[kVertexLitInputs] = {0.6f, 0.5f, 0.4f, 0.9f, 0.5f, 0.5f, 1.0f, 0.8f, 0.3f, 0.5f, 0.5f, 0.6f,
+                                            0.1f, 0.2f, 0.0f, 0.0f, 0.0f, 1.0f, 1.0f, 0.0f, 0.0f, 0.0f, 1.0f, 0.0f,
+                                            0.7f, 0.4f, 0.2f, 1.0f};
+  std::copy(std::begin(defaults), std::end(defaults), plain.begin());
+  const float nan = std::numeric_limits<float>::quiet_NaN();
+  std::vector<Pixel> pixels;
+  auto with = [&](std::initializer_list<std::pair<int, float>> changes) {
+    Pixel q = plain;
+    for (const auto& [i, v] : changes) q[static_cast<size_t>(i)] = v;
+    pixels.push_back(q);
+  };
+  with({});
+  with({{15, 0.0f}, {16, 0.0f}, {17, 0.0f}, {4, 0.5f}, {5, 0.5f}, {6, 0.5f}});  // zero-length normal, bump too
+  with({{15, 1e-40f}, {16, 0.0f}, {17, 0.0f}, {18, 1e-40f}, {21, 0.0f}, {22, 1e-40f}});  // denormal normal and frame
+  with({{15, 3e-39f}, {16, -2e-39f}, {17, 1e-39f}});
+  // Light a at (1,1,1), the point at the origin: L = (1,1,1)/√3 and N = (1,-1,0)/√2, N·L = 0.
+  with({{12, 0.0f}, {13, 0.0f}, {14, 0.0f}, {15, 1.0f}, {16, -1.0f}, {17, 0.0f}});
+  // The eye (0.5, 2, 3) level with the point: V ⟂ N = +Z, N·V = 0 (grazing), and just past it.
+  with({{12, 0.5f}, {13, -1.0f}, {14, 3.0f}});
+  with({{12, 0.5f}, {13, -1.0f}, {14, 3.0001f}});
+  with({{12, -1.5f}, {13, 2.0f}, {14, 3.0f}, {15, 1.0f}, {16, 0.0f}, {17, 0.0f}});
+  // A point on a light, and on the eye.
+  with({{12, 1.0f}, {13, 1.0f}, {14, 1.0f}});
+  with({{12, 0.5f}, {13, 2.0f}, {14, 3.0f}});
+  // HDR texels and far points.
+  with({{0, 1e30f}, {1, 1e30f}, {2, 1e30f}, {3, 1e30f}});
+  with({{12, 1e30f}, {13, -1e30f}, {14, 1e30f}});
+  with({{24, 1e30f}, {25, 1e30f}, {26, 1e30f}, {27, 1e30f}});
+  with({{8, 1e30f}, {11, 1e30f}});
+  // NaN texels, NaN normals, NaN positions.
+  with({{0, nan}, {3, nan}});
+  with({{4, nan}, {7, nan}});
+  with({{15, nan}});
+  with({{12, nan}, {13, nan}, {14, nan}});
+  with({{8, nan}, {11, nan}, {24, nan}});
+  // Infinite normal (normalize(inf) is NaN) and negative zero normal.
+  with({{15, std::numeric_limits<float>::infinity()}});
+  with({{15, -0.0f}, {16, -0.0f}, {17, -0.0f}, {4, 0.5f}, {5, 0.5f}, {6, 0.5f}});
+  return pixels;
+}
+
+TEST(SourceVertexLit, SimdAgreesWithScalarBitForBitForEveryCombo) {
   uint32_t seed = 101;
+  const VertexLitParams p = lane_test_params();
+  const auto hard_pixels = vertexlit_hard_pixels();
   for_each_vertexlit_combo([&]<VertexLitCombo C>() {
     const auto random = compare_vertexlit<C>(0, seed++);
     const auto hard = compare_vertexlit<C>(3, seed++);
-    EXPECT_LE(random.max_step, 1) << C.name();
-    EXPECT_LE(hard.max_step, 1) << C.name() << " (hard inputs)";
+    const auto constructed = testing::compare_lanes_at<kVertexLitInputs>(vertexlit_lane_shader<C>(p), hard_pixels);
+    testing::expect_bit_identical(random, C.name());
+    testing::expect_bit_identical(hard, C.name() + " (hard inputs)");
+    testing::expect_bit_identical(constructed, C.name() + " (constructed edge cases)");
     EXPECT_LE(random.max_step_vs_double, 1) << C.name();
-    std::printf("VertexLitGeneric %-36s simd-vs-scalar max %d step(s) (hard: %d)\n", C.name().c_str(), random.max_step,
-                hard.max_step);
+    std::printf("VertexLitGeneric %-36s simd-vs-scalar max %d step(s) (hard: %d, constructed: %d)\n", C.name().c_str(),
+                random.max_step, hard.max_step, constructed.max_step);
   });
 }
 
