@@ -162,10 +162,11 @@ void BM_LuminanceRange(benchmark::State& state) {
   });
 }
 
-std::string models_of(const VertexLitCombo& c) {
+template <VertexLitCombo C>
+std::string models_of() {
   std::string r;
   for (ShaderModel m : kPixelModels)
-    if (c.valid(m)) r += std::string(r.empty() ? "" : ",") + std::string(caps(m).name);
+    if (vertexlit_compiles<C>(m)) r += std::string(r.empty() ? "" : ",") + std::string(caps(m).name);
   return r;
 }
 
@@ -176,7 +177,7 @@ const bool registered = [] {
     benchmark::RegisterBenchmark((name + "/scalar").c_str(), BM_Lightmapped<float, C>);
   });
   for_each_vertexlit_combo([]<VertexLitCombo C>() {
-    std::string name = "VertexLitGeneric/" + C.name() + "/" + models_of(C);
+    std::string name = "VertexLitGeneric/" + C.name() + "/" + models_of<C>();
     for (char& ch : name)
       if (ch == ' ') ch = '_';
     benchmark::RegisterBenchmark((name + "/simd").c_str(), BM_VertexLit<simd::Float, C>);

@@ -7,8 +7,11 @@
 //
 // Static combos: the template parameter VertexLitCombo (light count, bump, Phong, exponent
 // texture, rim, Half-Lambert, where the attenuation is computed); the shader model is a separate
-// axis: VertexLitCombo::valid(model) says which combos exist where (ps_2_0: at most two lights,
-// no Phong, as Valve's helper forces $phong off there).
+// axis: VertexLitCombo::valid(model) says which combos the SDK's rules allow where (ps_2_0: at
+// most two lights, no Phong, as Valve's helper forces $phong off there), and
+// vertexlit_compiles<C>(model) adds the model's limits, counted from the shader's code as fxc
+// would refuse it: that is what keeps per-pixel attenuation off ps_2_0 (its arithmetic exceeds
+// the 64 slots), not a rule written here.
 //
 // Lights (§3.2): the SDK computes attenuation per vertex and N·L per pixel. luxel's default for
 // two lights computes the attenuation per pixel too (pixel_attenuation = true: a light close to a
@@ -54,9 +57,6 @@ struct VertexLitCombo {
     if ((rim || exponent_texture) && !phong) return false;
     if (phong && !half_lambert) return false;
     if (lights > 2 && pixel_attenuation) return false;
-    // Two lights attenuated per pixel cost 65-73 arithmetic slots: over ps_2_0's 64 (measured,
-    // see the budget test), so ps_2_0 attenuates per vertex, as the SDK does.
-    if (m == ShaderModel::ps_2_0 && lights > 0 && pixel_attenuation) return false;
     // SH9 ambient is the ps_3_0 option (issue #3), where the SDK's separate VertexLitGeneric
     // ps_3_0 builds live (SOURCE_FACTS §11). A product choice, not a budget: it costs 2 slots and
     // 3 constant registers more than the cube, and even the largest combo would fit ps_2_b with it
@@ -289,6 +289,12 @@ template <VertexLitCombo C>
 inline Cost measure_vertexlit_generic(ShaderModel model) {
   const VertexLitParams params{};
   return measure(model, [&](CountedInputs& in) { return vertexlit_generic<C>(vertexlit_counted_inputs<C>(in), params); });
+}
+
+/// Whether combo C exists on `model`: allowed by the SDK's rules and within the model's limits.
+template <VertexLitCombo C>
+inline bool vertexlit_compiles(ShaderModel model) {
+  return C.valid(model) && static_cast<bool>(fits(measure_vertexlit_generic<C>(model), caps(model)));
 }
 
 }  // namespace luxel::shading::source
