@@ -6,7 +6,7 @@
 // counted DX9 slots beside it).
 
 #include "luxel/shading/source/lightmapped_generic.hpp"
-#include "luxel/shading/source/luminance_range_test.hpp"
+#include "luxel/shading/source/luminance_range.hpp"
 #include "luxel/shading/source/sky.hpp"
 #include "luxel/shading/source/unlit_generic.hpp"
 #include "luxel/shading/source/vertexlit_generic.hpp"

@@ -6,7 +6,7 @@
 #include "commands.hpp"
 
 #include "luxel/shading/source/lightmapped_generic.hpp"
-#include "luxel/shading/source/luminance_range_test.hpp"
+#include "luxel/shading/source/luminance_range.hpp"
 #include "luxel/shading/source/sky.hpp"
 #include "luxel/shading/source/spherical_harmonics.hpp"
 #include "luxel/shading/source/unlit_generic.hpp"
@@ -216,7 +216,7 @@ void report_luminance(int pixels) {
     auto shade = [&]<class L>(const auto& get) {
       return src::luminance_range_combine<C>(shading::float3<L>(get(0), get(1), get(2)), p).color;
     };
-    report_combo("LuminanceRange", C, shade, 3, pixels, [](ShaderModel m) { return src::measure_luminance_range_test<C>(m); });
+    report_combo("LuminanceRange", C, shade, 3, pixels, [](ShaderModel m) { return src::measure_luminance_range<C>(m); });
   });
 }
 
