@@ -9,6 +9,7 @@
 #include "source_support.hpp"
 
 #include "luxel/shading/source/lightmapped_generic.hpp"
+#include "luxel/shading/source/unlit_generic.hpp"
 #include "luxel/shading/source/vertexlit_generic.hpp"
 
 #include <glm/geometric.hpp>
@@ -199,6 +200,33 @@ testing::LaneComparison compare_vertexlit_sampled(const RandomTextures& tex, ras
   return testing::compare_lanes<18>(shade, draws, 64, seed);
 }
 
+template <UnlitCombo C>
+testing::LaneComparison compare_unlit_sampled(const RandomTextures& tex, rasterizer::Filter filter, int hard_every,
+                                              uint32_t seed) {
+  UnlitGenericParams p;
+  p.base.texture = &tex.base;
+  p.detail.texture = &tex.bump;
+  p.envmap_mask.texture = &tex.mask;
+  p.envmap.texture = &tex.cube;
+  for (auto* s : {&p.base, &p.detail, &p.envmap_mask}) s->state = sampler_for(filter);
+  p.envmap.state = sampler_for(filter);
+  p.envmap_contrast = glm::vec4(0.3f);
+  p.envmap_saturation = glm::vec4(0.7f);
+  p.detail_blend.w = 0.8f;
+  auto shade = [&]<class L>(const auto& get) -> float4<L> {
+    UnlitInputs<L> in;
+    in.base_uv = float2<L>(get(0), get(1));
+    in.detail_uv = float2<L>(get(2), get(3));
+    in.vertex_color = float4<L>(get(4), get(5), get(6), get(7));
+    in.eye_vector = float3<L>(get(8), get(9), get(10));
+    in.normal = float3<L>(get(11), get(12), get(13));
+    return unlit_generic<C>(in, p);
+  };
+  std::vector<Draw> draws(14, Draw{-1.0f, 1.0f, hard_every});
+  for (int i = 0; i < 4; ++i) draws[i] = Draw{-1.0f, 2.0f, 0};
+  return testing::compare_lanes<14>(shade, draws, 64, seed);
+}
+
 TEST(SourceTextured, SimdAgreesWithScalarThroughPointSamplingForEveryCombo) {
   const RandomTextures tex;
   uint32_t seed = 500;
@@ -211,6 +239,11 @@ TEST(SourceTextured, SimdAgreesWithScalarThroughPointSamplingForEveryCombo) {
     for (int hard_every : {0, 3})
       testing::expect_bit_identical(compare_vertexlit_sampled<C>(tex, rasterizer::Filter::Point, hard_every, seed++),
                                     "VertexLitGeneric " + C.name());
+  });
+  for_each_unlit_combo([&]<UnlitCombo C>() {
+    for (int hard_every : {0, 3})
+      testing::expect_bit_identical(compare_unlit_sampled<C>(tex, rasterizer::Filter::Point, hard_every, seed++),
+                                    "UnlitGeneric " + C.name());
   });
 }
 
@@ -229,6 +262,13 @@ TEST(SourceTextured, SimdWithinOneStepOfScalarThroughBilinearSampling) {
   for_each_vertexlit_combo([&]<VertexLitCombo C>() {
     const auto r = compare_vertexlit_sampled<C>(tex, rasterizer::Filter::Linear, 0, seed++);
     EXPECT_LE(r.max_step, 1) << "VertexLitGeneric " << C.name();
+    worst = std::max(worst, r.max_step);
+    mismatched += r.bit_mismatches;
+    channels += 4 * r.pixels;
+  });
+  for_each_unlit_combo([&]<UnlitCombo C>() {
+    const auto r = compare_unlit_sampled<C>(tex, rasterizer::Filter::Linear, 0, seed++);
+    EXPECT_LE(r.max_step, 1) << "UnlitGeneric " << C.name();
     worst = std::max(worst, r.max_step);
     mismatched += r.bit_mismatches;
     channels += 4 * r.pixels;
