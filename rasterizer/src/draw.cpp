@@ -1,5 +1,5 @@
-// The parts of a draw that do not depend on the shaders: validating the framebuffer, turning
-// pipeline state into per-draw constants, and the sRGB tables.
+// The parts of a draw that do not depend on the shaders: validating the framebuffer and turning
+// pipeline state into per-draw constants.
 
 #include "luxel/rasterizer/draw.hpp"
 
@@ -30,23 +30,6 @@ DrawStats& DrawStats::operator+=(const DrawStats& o) {
 }
 
 namespace detail {
-
-SrgbTables::SrgbTables() {
-  for (int i = 0; i < 256; ++i) {
-    const double c = i / 255.0;
-    decode[i] = static_cast<float>(c <= 0.04045 ? c / 12.92 : std::pow((c + 0.055) / 1.055, 2.4));
-  }
-  for (int i = 0; i < 65536; ++i) {
-    const double l = i / 65535.0;
-    const double s = l <= 0.0031308 ? l * 12.92 : 1.055 * std::pow(l, 1.0 / 2.4) - 0.055;
-    encode[i] = static_cast<uint8_t>(std::lround(std::clamp(s, 0.0, 1.0) * 255.0));
-  }
-}
-
-const SrgbTables& srgb_tables() {
-  static const SrgbTables tables;
-  return tables;
-}
 
 DrawPlan plan_draw(const Framebuffer& fb, const PipelineState& state, int varyings, FastPaths fast_paths) {
   DrawPlan plan;

@@ -56,12 +56,6 @@ uint16_t float_to_half(float f) {
   return sign | static_cast<uint16_t>(h);
 }
 
-double srgb_to_linear(double c) { return c <= 0.04045 ? c / 12.92 : std::pow((c + 0.055) / 1.055, 2.4); }
-
-double linear_to_srgb(double l) {
-  return l <= 0.0031308 ? l * 12.92 : 1.055 * std::pow(l, 1.0 / 2.4) - 0.055;
-}
-
 uint8_t encode_unorm8(double x) {
   if (!(x > 0.0)) return 0;  // negative or NaN
   if (x >= 1.0) return 255;
@@ -385,7 +379,7 @@ AxisTaps box_taps(int source_size, int i) {
 /// instead of three pow() per texel.
 glm::dvec4 decode_for_mips(TextureFormat format, const uint8_t* t) {
   if (format == TextureFormat::RGBA8_sRGB) {
-    const auto& table = texture_detail::kSrgbToLinear;
+    const auto& table = kSrgbToLinear;
     return {table[t[0]], table[t[1]], table[t[2]], t[3] / 255.0};
   }
   return decode_texel(format, t);

@@ -133,7 +133,7 @@ struct Rgba8 {
 struct Rgba8Srgb {
   static constexpr int kWords = 1;
   LUXEL_INLINE static Float4 fetch(const int32_t* words, const Int& index) {
-    const float* table = texture_detail::kSrgbToLinear.data();
+    const float* table = kSrgbToLinear.data();
     const Int w = gather(words, index), byte(0xff);
     return {gather(table, w & byte), gather(table, (w >> 8) & byte), gather(table, (w >> 16) & byte),
             to_float((w >> 24) & byte)};

@@ -8,6 +8,7 @@
 #include <array>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 namespace luxel::shading {
 namespace {
@@ -315,6 +316,50 @@ TEST(Counted, OverBudgetArithmeticIsRejectedReadably) {
   EXPECT_FALSE(v);
   EXPECT_EQ(v.reason, "ps_2_0: 71 arithmetic slots > 64");
   EXPECT_TRUE(fits(measure(ShaderModel::ps_2_b, long_chain), caps(ShaderModel::ps_2_b)));
+}
+
+TEST(Counted, OverFiveHundredTwelveSlotsIsRefusedOnPs2bAndPs30) {
+  const glm::vec4 k(0.5f);
+  auto chain = [&](int n) {
+    return [&, n](CountedInputs& in) {
+      float4<C> x = in.vector<4>();
+      for (int i = 0; i < n; ++i) x = x * constant<C>(k) + x;  // one mad each
+      return x;
+    };
+  };
+  for (ShaderModel m : {ShaderModel::ps_2_b, ShaderModel::ps_3_0}) {
+    const int out = m == ShaderModel::ps_2_b ? 1 : 0;  // shader model 2 writes oC0 with a mov
+    const Cost at_limit = measure(m, chain(512 - out));
+    EXPECT_EQ(at_limit.total_slots(), 512);
+    EXPECT_TRUE(fits(at_limit, caps(m))) << caps(m).name;
+    const Cost over = measure(m, chain(513 - out));
+    const Verdict v = fits(over, caps(m));
+    EXPECT_FALSE(v) << caps(m).name;
+    EXPECT_EQ(v.reason, std::string(caps(m).name) + ": 513 instruction slots > 512");
+  }
+}
+
+TEST(Counted, OverThirtyTwoTempsIsRefusedOnPs2bAndPs30) {
+  auto live = [](int n) {
+    return [n](CountedInputs& in) {
+      const float4<C> x = in.vector<4>();
+      std::vector<float4<C>> p(static_cast<size_t>(n));
+      for (int i = 0; i < n; ++i) p[i] = x * float(i + 2);  // n float4 values, all alive...
+      float4<C> m = p[0];
+      for (int i = 1; i < n; ++i) m = max(m, p[i]);  // ...until they are folded together here
+      return m;
+    };
+  };
+  for (ShaderModel m : {ShaderModel::ps_2_b, ShaderModel::ps_3_0}) {
+    const Cost at_limit = measure(m, live(32));
+    EXPECT_EQ(at_limit.temps, 32) << describe(at_limit);
+    EXPECT_TRUE(fits(at_limit, caps(m))) << caps(m).name << ": " << fits(at_limit, caps(m)).reason;
+    const Cost over = measure(m, live(33));
+    EXPECT_EQ(over.temps, 33) << describe(over);
+    const Verdict v = fits(over, caps(m));
+    EXPECT_FALSE(v) << caps(m).name;
+    EXPECT_EQ(v.reason, std::string(caps(m).name) + ": 33 temporaries alive at once (estimate) > 32");
+  }
 }
 
 TEST(Counted, TooManyTextureSlotsOnPs20) {

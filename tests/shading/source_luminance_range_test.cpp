@@ -7,7 +7,7 @@
 
 #include "luxel/rasterizer/context.hpp"
 #include "luxel/rasterizer/draw.hpp"
-#include "luxel/shading/source/luminance_range_test.hpp"
+#include "luxel/shading/source/luminance_range.hpp"
 
 #include <gtest/gtest.h>
 
@@ -94,7 +94,7 @@ TEST(SourceLuminanceRange, SimdAgreesWithScalarExactly) {
 TEST(SourceLuminanceRange, EveryComboFitsEveryPixelShaderModel) {
   for_each_luminance_range_combo([&]<LuminanceRangeCombo C>() {
     for (ShaderModel m : kPixelModels) {
-      const Cost cost = measure_luminance_range_test<C>(m);
+      const Cost cost = measure_luminance_range<C>(m);
       const Verdict v = fits(cost, caps(m));
       EXPECT_TRUE(v) << C.name() << ": " << v.reason;
       // texld; one more texture slot for texkill.
@@ -169,7 +169,7 @@ void check_counts(int samples) {
     for (int y = y0; y < y1; ++y)
       for (int x = x0; x < x1; ++x) {
         const float2<float> uv((x + 0.5f) / W, (y + 0.5f) / H);
-        const LuminanceRangeOutput<float> out = luminance_range_test<C>(uv, params);
+        const LuminanceRangeOutput<float> out = luminance_range<C>(uv, params);
         const bool pass = C.reject == LuminanceReject::texkill ? !out.discard : out.color.w > 0.0f;
         scalar_pixels += pass;
         expect_written[size_t(y) * W + x] = pass;

@@ -2,6 +2,7 @@
 // Private: per-sample depth/stencil tests, alpha test, blending and color packing on SIMD lanes.
 
 #include "luxel/rasterizer/simd.hpp"
+#include "luxel/rasterizer/srgb.hpp"
 #include "luxel/rasterizer/state.hpp"
 
 #include <cstdint>
@@ -45,14 +46,6 @@ inline Int stencil_op(StencilOp op, const Int& value, uint8_t ref) {
   return value;
 }
 
-/// sRGB encode/decode tables (exact formulas, rounded to nearest).
-struct SrgbTables {
-  float decode[256];               ///< 8-bit sRGB -> linear
-  uint8_t encode[65536];           ///< linear quantized to 16 bits -> 8-bit sRGB
-  SrgbTables();
-};
-const SrgbTables& srgb_tables();
-
 /// Four channels in [0, 1] (NaN -> 0) packed to RGBA8 with round-to-nearest-even.
 using simd::pack_unorm8;
 
@@ -60,7 +53,7 @@ inline Int encode_srgb_channel(const Float& x) {
   const Int index = simd::round_to_int(xsimd::min(xsimd::max(x, Float(0.0f)), Float(1.0f)) * Float(65535.0f));
   alignas(64) int32_t idx[simd::kLanes], out[simd::kLanes];
   index.store_aligned(idx);
-  const uint8_t* table = srgb_tables().encode;
+  const uint8_t* table = srgb_encode_table().data();
   for (int l = 0; l < simd::kLanes; ++l) out[l] = table[idx[l]];
   return Int::load_aligned(out);
 }
@@ -82,7 +75,7 @@ inline simd::Float4 unpack_unorm8(const Int& packed) {
 }
 
 inline simd::Float4 unpack_srgb8(const Int& packed) {
-  const float* table = srgb_tables().decode;
+  const float* table = kSrgbToLinear.data();
   return {Float::gather(table, packed & Int(255)), Float::gather(table, (packed >> 8) & Int(255)),
           Float::gather(table, (packed >> 16) & Int(255)),
           xsimd::to_float(xsimd::bitwise_cast<Int>(xsimd::bitwise_cast<simd::UInt>(packed) >> 24)) *

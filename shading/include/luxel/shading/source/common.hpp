@@ -17,6 +17,7 @@
 //   NaN: saturate(NaN) = 0 (intrinsics.hpp), so a NaN channel encodes to byte 0, as the
 //   rasterizer's output merger also writes NaN as 0. +inf encodes to 255, -inf to 0.
 
+#include "luxel/rasterizer/srgb.hpp"
 #include "luxel/shading/hlsl.hpp"
 
 #include <glm/vec3.hpp>
@@ -99,8 +100,7 @@ inline float4<L> encode_srgb8(const float4<L>& linear) {
 inline uint8_t srgb8_reference(double x) {
   if (!(x > 0.0)) return 0;  // NaN and <= 0
   if (x >= 1.0) return 255;
-  const double s = x <= 0.0031308 ? x * 12.92 : 1.055 * std::pow(x, 1.0 / 2.4) - 0.055;
-  return static_cast<uint8_t>(std::floor(s * 255.0 + 0.5));
+  return static_cast<uint8_t>(std::floor(rasterizer::linear_to_srgb(x) * 255.0 + 0.5));
 }
 
 /// The RNM basis (SOURCE_FACTS §1.1, common_fxc.h bumpBasis), the shader's literals exactly.

@@ -7,8 +7,11 @@
 //
 // Static combos: the template parameter VertexLitCombo (light count, bump, Phong, exponent
 // texture, rim, Half-Lambert, where the attenuation is computed); the shader model is a separate
-// axis: VertexLitCombo::valid(model) says which combos exist where (ps_2_0: at most two lights,
-// no Phong, as Valve's helper forces $phong off there).
+// axis: VertexLitCombo::valid(model) says which combos the SDK's rules allow where (ps_2_0: at
+// most two lights, no Phong, as Valve's helper forces $phong off there), and
+// vertexlit_compiles<C>(model) adds the model's limits, counted from the shader's code as fxc
+// would refuse it: that, not a rule written here, is what keeps the heavier per-pixel-attenuated
+// combos off ps_2_0 (their arithmetic exceeds its 64 slots; two Lambert lights still fit).
 //
 // Lights (§3.2): the SDK computes attenuation per vertex and N·L per pixel. luxel's default for
 // two lights computes the attenuation per pixel too (pixel_attenuation = true: a light close to a
@@ -69,9 +72,6 @@ struct VertexLitCombo {
     if ((rim || exponent_texture) && !phong) return false;
     if (phong && !half_lambert) return false;
     if (lights > 2 && pixel_attenuation) return false;
-    // Two lights attenuated per pixel cost 65-73 arithmetic slots: over ps_2_0's 64 (measured,
-    // see the budget test), so ps_2_0 attenuates per vertex, as the SDK does.
-    if (m == ShaderModel::ps_2_0 && lights > 0 && pixel_attenuation) return false;
     // SH9 ambient is the ps_3_0 option (issue #3), where the SDK's separate VertexLitGeneric
     // ps_3_0 builds live (SOURCE_FACTS §11). A product choice, not a budget: it costs 2 slots and
     // 3 constant registers more than the cube, and even the largest combo would fit ps_2_b with it
@@ -114,6 +114,14 @@ inline constexpr VertexLitCombo kVertexLitCombos[] = {
     {0, false, false, false, false, true, true, false, Fog::none, true},
     {2, false, false, false, false, true, false, false, Fog::none, true},
     {2, true, false, false, false, true, false, false, Fog::none, true},
+    // ps_2_0 with luxel's per-pixel attenuation: allowed by the rules; the count decides
+    // (vertexlit_compiles). Two Lambert lights fit ps_2_0's 64 arithmetic slots; Half-Lambert
+    // and height fog push the arithmetic over them (which is why the SDK attenuates per vertex
+    // on ps_2_0).
+    {2, false, false, false, false, false, true, false, Fog::none, true},
+    {2, false, false, false, false, true, true, false, Fog::none, true},
+    {2, true, false, false, false, true, true, false, Fog::none, true},
+    {2, true, false, false, false, true, true, false, Fog::height, true},
     // Fog, per model.
     {2, true, false, false, false, true, false, false, Fog::vertex_range, true},
     {2, true, false, false, false, true, false, false, Fog::height, true},
@@ -333,6 +341,12 @@ template <VertexLitCombo C>
 inline Cost measure_vertexlit_generic(ShaderModel model) {
   const VertexLitParams params{};
   return measure(model, [&](CountedInputs& in) { return vertexlit_generic<C>(vertexlit_counted_inputs<C>(in), params); });
+}
+
+/// Whether combo C exists on `model`: allowed by the SDK's rules and within the model's limits.
+template <VertexLitCombo C>
+inline bool vertexlit_compiles(ShaderModel model) {
+  return C.valid(model) && static_cast<bool>(fits(measure_vertexlit_generic<C>(model), caps(model)));
 }
 
 }  // namespace luxel::shading::source

@@ -104,15 +104,15 @@ inline LuminanceRangeOutput<L> luminance_range_combine(const float3<L>& texel, c
 
 /// The pixel shader.
 template <LuminanceRangeCombo C, Lane L>
-inline LuminanceRangeOutput<L> luminance_range_test(const float2<L>& uv, const LuminanceRangeParams& p) {
+inline LuminanceRangeOutput<L> luminance_range(const float2<L>& uv, const LuminanceRangeParams& p) {
   return luminance_range_combine<C>(tex2D(p.frame, uv).rgb(), p);
 }
 
 template <LuminanceRangeCombo C>
-inline Cost measure_luminance_range_test(ShaderModel model) {
+inline Cost measure_luminance_range(ShaderModel model) {
   const LuminanceRangeParams params{};
   return measure(model, [&](CountedInputs& in) {
-    const LuminanceRangeOutput<Counted> out = luminance_range_test<C>(in.vector<2>(), params);
+    const LuminanceRangeOutput<Counted> out = luminance_range<C>(in.vector<2>(), params);
     return std::make_tuple(out.color, out.depth);
   });
 }
@@ -126,7 +126,7 @@ struct LuminanceRangePixelShader {
 
   void operator()(const rasterizer::PixelInput<1>& in, rasterizer::PixelOutput& out) const {
     const float2<simd::Float> uv(in.varyings[0].x, in.varyings[0].y);
-    const LuminanceRangeOutput<simd::Float> r = luminance_range_test<C>(uv, *params);
+    const LuminanceRangeOutput<simd::Float> r = luminance_range<C>(uv, *params);
     out.color = {r.color.x, r.color.y, r.color.z, r.color.w};
     out.depth = r.depth;
     if constexpr (kCanDiscard) out.discard = simd::to_bits(r.discard);

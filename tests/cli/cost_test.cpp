@@ -1,0 +1,154 @@
+// `luxel cost` checked by what it prints: a row for every variant of the shading catalog on every
+// model the catalog lists for it (and no other, pixel or vertex shader model), the counts the Counted lane measures, "fits"
+// exactly when the printed counts are within the model's limits (shader_model.hpp), the reason
+// when not, the ambient-cube line and the CPU line. Table-driven from shader_catalog(), so the
+// variants a family adds are covered without touching this test.
+
+#include "luxel/shading/source/catalog.hpp"
+#include "luxel/shading/source/common.hpp"
+#include "luxel/shading/source/vertexlit_vertex_shader.hpp"
+
+#include <gtest/gtest.h>
+#include <sys/wait.h>
+
+#include <algorithm>
+#include <array>
+#include <cstdio>
+#include <map>
+#include <set>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace luxel::shading::source {
+namespace {
+
+struct Process {
+  int exit_code = -1;
+  std::string out;
+};
+
+Process run_luxel(const std::string& args) {
+  Process r;
+  FILE* pipe = popen((std::string(LUXEL_BINARY) + " " + args + " 2>&1").c_str(), "r");
+  if (!pipe) return r;
+  std::array<char, 4096> buf;
+  size_t n;
+  while ((n = std::fread(buf.data(), 1, buf.size(), pipe)) > 0) r.out.append(buf.data(), n);
+  const int status = pclose(pipe);
+  r.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  return r;
+}
+
+std::string trim(const std::string& s) {
+  const size_t a = s.find_first_not_of(' '), b = s.find_last_not_of(' ');
+  return a == std::string::npos ? "" : s.substr(a, b - a + 1);
+}
+
+/// The table's rows by "family|variant|model", each as its trimmed columns.
+std::map<std::string, std::vector<std::string>> table_rows(const std::string& out, int& rows) {
+  std::map<std::string, std::vector<std::string>> table;
+  std::istringstream lines(out);
+  std::string line;
+  rows = 0;
+  while (std::getline(lines, line)) {
+    std::vector<std::string> cols;
+    std::istringstream fields(line);
+    std::string f;
+    while (std::getline(fields, f, '|')) cols.push_back(trim(f));
+    if (line.back() == '|') cols.push_back("");
+    if (cols.size() != 13 || cols[0] == "shader") continue;
+    table[cols[0] + "|" + cols[1] + "|" + cols[2]] = cols;
+    ++rows;
+  }
+  return table;
+}
+
+TEST(CostCommand, PrintsEveryCatalogVariantOnItsModelsWithTheCountedCost) {
+  const Process run = run_luxel("cost --pixels 64 --repeats 1");
+  ASSERT_EQ(run.exit_code, 0) << run.out;
+  int rows = 0;
+  const auto table = table_rows(run.out, rows);
+  int expected_rows = 0, refused = 0;
+  std::set<std::string> families;
+  std::vector<ShaderModel> all_models(std::begin(kPixelModels), std::end(kPixelModels));
+  all_models.insert(all_models.end(), std::begin(kVertexModels), std::end(kVertexModels));
+  int vertex_rows = 0;
+  for (const ShaderVariant& v : shader_catalog()) {
+    families.insert(v.family);
+    for (ShaderModel m : all_models) {
+      const std::string key = v.family + "|" + v.variant + "|" + std::string(caps(m).name);
+      const bool listed = std::find(v.models.begin(), v.models.end(), m) != v.models.end();
+      const auto row = table.find(key);
+      if (!listed) {
+        EXPECT_EQ(row, table.end()) << key << ": printed, but the SDK's rules do not allow it there";
+        continue;
+      }
+      ++expected_rows;
+      if (m == ShaderModel::vs_2_0 || m == ShaderModel::vs_3_0) ++vertex_rows;
+      ASSERT_NE(row, table.end()) << key << " missing from:\n" << run.out;
+      const std::vector<std::string>& c = row->second;
+      const Cost cost = v.measure(m);
+      const int arith = std::stoi(c[3]), tex = std::stoi(c[4]), temps = std::stoi(c[5]), consts = std::stoi(c[6]),
+                indir = std::stoi(c[7]);
+      EXPECT_EQ(arith, cost.arithmetic_slots) << key;
+      EXPECT_EQ(tex, cost.texture_slots) << key;
+      EXPECT_EQ(temps, cost.temps) << key;
+      EXPECT_EQ(consts, cost.constant_registers()) << key;
+      EXPECT_EQ(indir, cost.texture_indirections) << key;
+      // Fits: from the printed counts and the caps table, plus what the table does not print.
+      const ShaderModelCaps& k = caps(m);
+      const bool within = arith <= k.arithmetic_slots && tex <= k.texture_slots && arith + tex <= k.total_slots &&
+                          temps <= k.temps && consts <= k.constants && indir <= k.texture_indirections &&
+                          cost.samplers <= k.samplers && cost.inputs <= k.inputs && cost.unsupported.empty();
+      EXPECT_EQ(c[9], within ? "yes" : "NO") << key;
+      EXPECT_EQ(c[12], within ? "" : fits(cost, k).reason) << key;
+      if (!within) ++refused;
+    }
+  }
+  EXPECT_EQ(rows, expected_rows) << "one row per variant and model, no others";
+  EXPECT_GT(refused, 0) << "some variant exceeds its model (ps_2_0's per-pixel attenuation), so both answers are checked";
+  std::set<std::string> printed;
+  for (const auto& [key, cols] : table) printed.insert(cols[0]);
+  EXPECT_EQ(printed, families);
+  EXPECT_GE(families.size(), 7u);
+  EXPECT_TRUE(families.count("VertexLitGeneric_vs")) << "the vertex shader is in the catalog";
+  EXPECT_GT(vertex_rows, 0) << "rows on vs_2_0 / vs_3_0, counted against the vertex-shader limits";
+}
+
+TEST(CostCommand, PrintsOnlyTheVertexShaderWhenAskedFor) {
+  const Process run = run_luxel("cost --shader vertexlit_vs --pixels 64 --repeats 1");
+  ASSERT_EQ(run.exit_code, 0) << run.out;
+  int rows = 0;
+  const auto table = table_rows(run.out, rows);
+  for (const auto& [key, cols] : table) {
+    EXPECT_EQ(cols[0], "VertexLitGeneric_vs") << "--shader vertexlit_vs prints " << key;
+    EXPECT_TRUE(cols[2] == "vs_2_0" || cols[2] == "vs_3_0") << key;
+  }
+  int expected = 0;
+  for (const VertexLitVsCombo& c : kVertexLitVsCombos)
+    for (ShaderModel m : kVertexModels) expected += c.valid(m) ? 1 : 0;
+  EXPECT_EQ(rows, expected) << "every vertex-shader combo on each vertex model it exists on (4 lights: vs_3_0 only)";
+}
+
+TEST(CostCommand, PrintsTheAmbientCubeCountsAndTheCpu) {
+  const Process run = run_luxel("cost --shader luminance --pixels 64 --repeats 1");
+  ASSERT_EQ(run.exit_code, 0) << run.out;
+  const AmbientCube cube;
+  auto body = [&](CountedInputs& in) { return ambient_light<Counted>(in.vector<3>(), cube); };
+  const std::string want = "ambient cube: ps_3_0 " + std::to_string(measure(ShaderModel::ps_3_0, body).arithmetic_slots) +
+                           ", ps_2_0 " + std::to_string(measure(ShaderModel::ps_2_0, body).arithmetic_slots) +
+                           " (+mov oC0), vs_2_0 " + std::to_string(measure(ShaderModel::vs_2_0, body).arithmetic_slots) +
+                           " slots";
+  EXPECT_NE(run.out.find(want), std::string::npos) << want << " not in:\n" << run.out;
+  EXPECT_EQ(run.out.rfind("cpu: ", 0), 0u) << "the first line names the CPU";
+  EXPECT_NE(run.out.find(" family "), std::string::npos) << "with its CPUID family and model";
+  EXPECT_NE(run.out.find("texture sampling excluded"), std::string::npos);
+  int rows = 0;
+  const auto table = table_rows(run.out, rows);
+  for (const auto& [key, cols] : table) EXPECT_EQ(cols[0], "LuminanceRange") << "--shader luminance prints " << key;
+  EXPECT_GT(rows, 0);
+}
+
+}  // namespace
+}  // namespace luxel::shading::source
