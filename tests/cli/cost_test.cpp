@@ -56,7 +56,7 @@ std::map<std::string, std::vector<std::string>> table_rows(const std::string& ou
     std::istringstream fields(line);
     std::string f;
     while (std::getline(fields, f, '|')) cols.push_back(trim(f));
-    if (line.back() == '|') cols.push_back("");
+    if (!line.empty() && line.back() == '|') cols.push_back("");
     if (cols.size() != 13 || cols[0] == "shader") continue;
     table[cols[0] + "|" + cols[1] + "|" + cols[2]] = cols;
     ++rows;
