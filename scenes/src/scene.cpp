@@ -1,0 +1,141 @@
+#include "luxel/scenes/scene.hpp"
+
+#include <glm/common.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
+namespace luxel::scenes {
+
+size_t Mesh::index_count() const {
+  return std::visit([](const auto& v) { return v.size(); }, indices);
+}
+
+uint32_t Mesh::index(size_t i) const {
+  return std::visit([i](const auto& v) { return static_cast<uint32_t>(v[i]); }, indices);
+}
+
+Bounds bounds_of(const Scene& scene) {
+  Bounds b;
+  for (const Mesh& m : scene.meshes) {
+    for (const glm::vec3& p : m.positions) {
+      b.min = b.empty ? p : glm::min(b.min, p);
+      b.max = b.empty ? p : glm::max(b.max, p);
+      b.empty = false;
+    }
+  }
+  return b;
+}
+
+namespace {
+
+bool finite(glm::vec3 v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
+
+[[noreturn]] void fail(const Scene& scene, const std::string& what) {
+  throw std::invalid_argument((scene.name.empty() ? std::string("scene") : scene.name) + ": " + what);
+}
+
+void check_ref(const Scene& scene, const TextureRef& ref, const std::string& where) {
+  if (ref.texture < -1 || ref.texture >= static_cast<int>(scene.textures.size()))
+    fail(scene, where + " refers to texture " + std::to_string(ref.texture) + " of " +
+                    std::to_string(scene.textures.size()));
+  if (ref.uv_set != 0 && ref.uv_set != 1) fail(scene, where + " reads UV set " + std::to_string(ref.uv_set));
+}
+
+void check_texture(const Scene& scene, const Texture& t, size_t i) {
+  const std::string where = "texture " + std::to_string(i) + " '" + t.name + "'";
+  const size_t faces = t.shape == TextureShape::cube ? 6 : 1;
+  if (t.faces.size() != faces)
+    fail(scene, where + " has " + std::to_string(t.faces.size()) + " images, not " + std::to_string(faces));
+  for (const PixelImage& f : t.faces) {
+    if (f.width < 1 || f.height < 1) fail(scene, where + " is empty");
+    if (t.shape == TextureShape::cube && (f.width != f.height || f.width != t.faces[0].width))
+      fail(scene, where + " is a cube whose faces are not squares of one size");
+    const size_t texels = static_cast<size_t>(f.width) * static_cast<size_t>(f.height) * 4;
+    if (f.rgba8.empty() == f.rgba32f.empty())
+      fail(scene, where + " must hold either 8-bit or float texels");
+    if ((f.is_hdr() ? f.rgba32f.size() : f.rgba8.size()) != texels)
+      fail(scene, where + " holds the wrong number of texels for " + std::to_string(f.width) + "x" +
+                      std::to_string(f.height));
+  }
+}
+
+void check_mesh(const Scene& scene, const Mesh& m, size_t i) {
+  const std::string where = "mesh " + std::to_string(i) + " '" + m.name + "'";
+  const size_t n = m.vertex_count();
+  auto same_length = [&](size_t size, const char* what) {
+    if (size != 0 && size != n)
+      fail(scene, where + " has " + std::to_string(size) + " " + what + " for " + std::to_string(n) + " positions");
+  };
+  same_length(m.normals.size(), "normals");
+  same_length(m.tangents.size(), "tangents");
+  same_length(m.uv0.size(), "uv0");
+  same_length(m.uv1.size(), "uv1");
+  same_length(m.colors.size(), "colors");
+  if (m.material < -1 || m.material >= static_cast<int>(scene.materials.size()))
+    fail(scene, where + " refers to material " + std::to_string(m.material));
+  for (size_t v = 0; v < n; ++v)
+    if (!finite(m.positions[v])) fail(scene, where + " position " + std::to_string(v) + " is not finite");
+  for (size_t v = 0; v < m.tangents.size(); ++v)
+    if (m.tangents[v].w != 1.0f && m.tangents[v].w != -1.0f)
+      fail(scene, where + " tangent " + std::to_string(v) + " handedness is not +-1");
+  const size_t count = m.index_count();
+  if (count % 3 != 0) fail(scene, where + " has " + std::to_string(count) + " indices, not a multiple of 3");
+  for (size_t k = 0; k < count; ++k)
+    if (m.index(k) >= n)
+      fail(scene, where + " index " + std::to_string(k) + " = " + std::to_string(m.index(k)) + " is beyond its " +
+                      std::to_string(n) + " vertices");
+}
+
+}  // namespace
+
+void validate(const Scene& scene) {
+  for (size_t i = 0; i < scene.textures.size(); ++i) check_texture(scene, scene.textures[i], i);
+  for (size_t i = 0; i < scene.materials.size(); ++i) {
+    const Material& m = scene.materials[i];
+    const std::string where = "material " + std::to_string(i) + " '" + m.name + "'";
+    for (const TextureRef* r : {&m.base, &m.bump, &m.detail, &m.envmap_texture, &m.envmap_mask_texture,
+                                &m.phong_exponent_texture, &m.water_normal})
+      check_ref(scene, *r, where);
+    if (m.envmap == EnvmapSource::texture &&
+        (!m.envmap_texture.bound() || scene.textures[m.envmap_texture.texture].shape != TextureShape::cube))
+      fail(scene, where + " asks for an env map texture but has no cube bound");
+  }
+  for (size_t i = 0; i < scene.meshes.size(); ++i) check_mesh(scene, scene.meshes[i], i);
+  for (size_t i = 0; i < scene.models.size(); ++i)
+    for (int mesh : scene.models[i].meshes)
+      if (mesh < 0 || mesh >= static_cast<int>(scene.meshes.size()))
+        fail(scene, "model " + std::to_string(i) + " refers to mesh " + std::to_string(mesh));
+  for (size_t i = 0; i < scene.lights.size(); ++i) {
+    const Light& l = scene.lights[i];
+    if (!finite(l.position) || !finite(l.direction) || !finite(l.color))
+      fail(scene, "light " + std::to_string(i) + " '" + l.name + "' is not finite");
+    if (l.constant < 0 || l.linear < 0 || l.quadratic < 0 || l.constant + l.linear + l.quadratic <= 0)
+      fail(scene, "light " + std::to_string(i) + " '" + l.name + "' has no positive falloff term");
+  }
+  for (size_t i = 0; i < scene.cameras.size(); ++i) {
+    const Camera& c = scene.cameras[i];
+    if (!finite(c.position) || !finite(c.target) || c.position == c.target ||
+        (c.projection == Projection::perspective && !(c.vertical_fov > 0.0f && c.vertical_fov < 3.1415f)) ||
+        (c.projection == Projection::orthographic && !(c.ortho_height > 0.0f && std::isfinite(c.ortho_height))) || !(c.near_plane > 0.0f) || !(c.far_plane > c.near_plane))
+      fail(scene, "camera " + std::to_string(i) + " '" + c.name + "' is degenerate");
+  }
+  auto check_texture_index = [&](int t, const std::string& where) {
+    if (t < -1 || t >= static_cast<int>(scene.textures.size())) fail(scene, where + " refers to texture " + std::to_string(t));
+  };
+  check_texture_index(scene.sky_texture, "the sky");
+  for (size_t i = 0; i < scene.cubemap_samples.size(); ++i)
+    check_texture_index(scene.cubemap_samples[i].texture, "cube-map sample " + std::to_string(i));
+  if (scene.lightmaps)
+    for (int t : scene.lightmaps->textures) check_texture_index(t, "the lightmaps");
+  if (const auto& v = scene.irradiance_volume) {
+    const size_t samples = static_cast<size_t>(std::max(v->counts.x, 0)) * std::max(v->counts.y, 0) * std::max(v->counts.z, 0);
+    if (!v->cubes.empty() && v->cubes.size() != samples)
+      fail(scene, "the irradiance volume holds " + std::to_string(v->cubes.size()) + " cubes for " +
+                      std::to_string(samples) + " samples");
+  }
+}
+
+}  // namespace luxel::scenes
