@@ -33,7 +33,10 @@ FastPaths parse_fast_paths_off(std::string_view list) {
 std::string fast_paths_off_names(FastPaths paths) {
   std::string names;
   for (const FastPathName& n : kFastPathNames)
-    if (!paths.on(n.path)) names += (names.empty() ? "" : ",") + std::string(n.name);
+    if (!paths.on(n.path)) {
+      if (!names.empty()) names += ',';
+      names += n.name;
+    }
   return names.empty() ? "none" : names;
 }
 
