@@ -6,9 +6,10 @@
 
 namespace luxel::scenes {
 
-std::vector<std::string> builtin_scene_names() { return {"demo", "fill", "tris"}; }
+std::vector<std::string> builtin_scene_names() { return {"courtyard", "demo", "fill", "tris"}; }
 
 Scene make_builtin_scene(std::string_view name, const BuiltinOptions& options) {
+  if (name == "courtyard") return builtin::make_courtyard();
   if (name == "demo") return builtin::make_demo();
   if (name == "fill") return builtin::make_fill();
   if (name == "tris") {
