@@ -97,4 +97,27 @@ struct PlainPixel {
   }
 };
 
+/// The sky behind everything: one triangle over the whole screen at the far plane, carrying the
+/// view ray's direction (linear in screen space for either projection) to a cube-map lookup.
+struct SkyVertex {
+  static constexpr int kVaryings = 1;
+  glm::vec4 clip[3];
+  glm::vec4 direction[3];
+  void operator()(uint32_t i, rasterizer::VertexOutput<1>& out) const {
+    out.position = clip[i];
+    out.varyings[0] = direction[i];
+  }
+};
+
+struct SkyPixel {
+  static constexpr bool kCanDiscard = false, kWritesDepth = false;
+  const rasterizer::Texture* cube;
+  const rasterizer::Sampler* sampler;
+  void operator()(const rasterizer::PixelInput<1>& in, rasterizer::PixelOutput& out) const {
+    const rasterizer::simd::Float4& d = in.varyings[0];
+    const rasterizer::simd::Float4 c = rasterizer::sample(*cube, *sampler, {d.x, d.y, d.z});
+    out.color = {c.x, c.y, c.z, rasterizer::simd::Float(1.0f)};
+  }
+};
+
 }  // namespace luxel::frame

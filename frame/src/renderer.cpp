@@ -13,6 +13,7 @@
 #include <glm/ext/vector_double3.hpp>
 #include <glm/ext/matrix_transform.hpp>
 #include <glm/geometric.hpp>
+#include <glm/matrix.hpp>
 
 #include <algorithm>
 #include <cmath>
@@ -34,7 +35,10 @@ scenes::Camera frame_camera(const scenes::Scene& scene, const FrameSettings& set
   return scene.cameras[settings.camera];
 }
 
-glm::mat4 view_projection(const scenes::Camera& c, int width, int height) {
+namespace {
+
+/// The view-projection matrix in double (renderer.hpp: rounded once, at the end).
+glm::dmat4 view_projection_d(const scenes::Camera& c, int width, int height) {
   const glm::dvec3 eye(c.position), target(c.target);
   glm::dvec3 up(c.up);
   // An up along the line of sight (looking straight down with +Z up) has no screen direction:
@@ -53,7 +57,13 @@ glm::mat4 view_projection(const scenes::Camera& c, int width, int height) {
     const double aspect = c.aspect > 0 ? double(c.aspect) : double(width) / height;
     projection = glm::perspectiveRH_ZO(double(c.vertical_fov), aspect, n, f);
   }
-  return glm::mat4(projection * view);
+  return projection * view;
+}
+
+}  // namespace
+
+glm::mat4 view_projection(const scenes::Camera& c, int width, int height) {
+  return glm::mat4(view_projection_d(c, width, height));
 }
 
 namespace {
@@ -102,6 +112,7 @@ struct Renderer::State {
   std::vector<GpuTexture> textures;
   GpuTexture white = white_texture();
   std::vector<Draw> draws;
+  std::optional<SkyVertex> sky;  // when the scene has a sky cube
   Image image;
   DrawStats stats;
 
@@ -130,7 +141,9 @@ const FrameSettings& checked(const scenes::Scene& scene, const FrameSettings& s)
 Renderer::Renderer(const scenes::Scene& scene, const FrameSettings& settings)
     : state_(std::make_unique<State>(scene, checked(scene, settings))) {
   State& st = *state_;
-  const glm::mat4 vp = view_projection(frame_camera(scene, settings), settings.width, settings.height);
+  const scenes::Camera camera = frame_camera(scene, settings);
+  const glm::dmat4 vp_d = view_projection_d(camera, settings.width, settings.height);
+  const glm::mat4 vp(vp_d);
   st.clear = glm::vec4(float(linear_to_srgb(std::clamp(scene.background.r, 0.0f, 1.0f))),
                        float(linear_to_srgb(std::clamp(scene.background.g, 0.0f, 1.0f))),
                        float(linear_to_srgb(std::clamp(scene.background.b, 0.0f, 1.0f))), 1.0f);
@@ -163,6 +176,18 @@ Renderer::Renderer(const scenes::Scene& scene, const FrameSettings& settings)
     }
     st.draws.push_back(d);
   }
+  if (scene.sky_texture >= 0 && scene.textures[scene.sky_texture].shape == scenes::TextureShape::cube) {
+    const glm::dmat4 inverse = glm::inverse(vp_d);
+    SkyVertex sky{};
+    const glm::vec2 corners[3] = {{-1, -1}, {3, -1}, {-1, 3}};
+    for (int i = 0; i < 3; ++i) {
+      const glm::dvec4 near_point = inverse * glm::dvec4(corners[i].x, corners[i].y, 0, 1);
+      const glm::dvec4 far_point = inverse * glm::dvec4(corners[i].x, corners[i].y, 1, 1);
+      sky.clip[i] = glm::vec4(corners[i], 1, 1);
+      sky.direction[i] = glm::vec4(glm::vec3(glm::dvec3(far_point) / far_point.w - glm::dvec3(near_point) / near_point.w), 0);
+    }
+    st.sky = sky;
+  }
 }
 
 Renderer::~Renderer() = default;
@@ -180,6 +205,16 @@ void Renderer::render(Context& ctx) {
       draw(ctx, fb, d.state, d.geometry, *unlit, UnlitPixel{});
     else
       draw(ctx, fb, d.state, d.geometry, std::get<PlainVertex>(d.vertex), d.pixel);
+  }
+  if (st.sky) {
+    // Last, where nothing else was drawn: depth is still the clear's 1, the sky's too.
+    PipelineState state;
+    state.rasterizer.cull = CullMode::None;
+    state.depth_stencil.depth_func = CompareFunc::LessEqual;
+    state.depth_stencil.depth_write = false;
+    state.blend.srgb_write = true;
+    const GpuTexture& cube = st.textures[st.scene->sky_texture];
+    draw(ctx, fb, state, Geometry::non_indexed(3), *st.sky, SkyPixel{&cube.texture, &cube.sampler});
   }
   resolve_into(ctx, st.color, st.image);
   st.stats = ctx.stats();

@@ -6,7 +6,7 @@
 // hero model, a bronze sphere in a ring (VertexLitGeneric: Phong with an exponent texture and a
 // base-alpha mask, rim light, hero boost); around it crates (bumped), barrels and balls (not).
 // A fountain basin holds a water plane. Lights: the sun and four local lights (two torches on the
-// walls, two spots), with Source's quadratic falloff. Environment: five cube-map sample points,
+// walls, their flames unlit, and two spots), with Source's quadratic falloff. Environment: five cube-map sample points,
 // an irradiance volume over the yard (bounds and spacing; baked later), an HDR sky cube, range
 // fog, a warm and a cool color-correction node, two cameras and a camera path around the yard.
 //
@@ -90,7 +90,7 @@ glm::vec3 sky_radiance(glm::vec3 d, glm::vec3 to_sun) {
   const float cos_sun = glm::dot(d, to_sun);
   c += glm::vec3(1.0f, 0.9f, 0.7f) * (std::pow(std::max(cos_sun, 0.0f), 64.0f) * 2.0f);  // glow
   if (cos_sun > 0.9995f) c += glm::vec3(60.0f, 55.0f, 45.0f);                              // the disc
-  return c * 1.5f;
+  return c;
 }
 
 /// A cube of six faces in D3D order, each face (u, v) mapped to its direction as D3D defines
@@ -364,6 +364,12 @@ Scene make_courtyard() {
   water.water_fog_color = {0.08f, 0.2f, 0.22f};
   water.water_fog_start = 0, water.water_fog_end = 64;
   const int water_m = b.material(water);
+  Material flame;
+  flame.name = "courtyard/flame";
+  flame.family = ShaderFamily::unlit_generic;
+  flame.color = {1.0f, 0.6f, 0.25f, 1.0f};
+  flame.emissive = {8.0f, 4.8f, 2.0f};
+  const int flame_m = b.material(flame);
 
   // --- World geometry (lightmapped: one chart per rectangle, 8 inches a luxel) ---
   ChartPacker charts(8.0f);
@@ -386,6 +392,9 @@ Scene make_courtyard() {
   const int water_mesh = b.mesh("water", water_m, false);
   add_rectangle(s.meshes[water_mesh], {168, -344, 18}, {176, 0, 0}, {0, 176, 0}, 2, 2, 176);
   compute_tangents(s.meshes[water_mesh]);
+  // The torches' flames, where the torch lights are (unlit, unbumped: no tangents).
+  const int flames = b.mesh("torch flames", flame_m, true);
+  for (float x : {-490.0f, 490.0f}) add_box(s.meshes[flames], {x - 5, -5, 170}, {x + 5, 5, 192}, 16, nullptr, -1, true);
 
   // --- Models ---
   const int hero_sphere = b.mesh("hero sphere", hero_m, true);

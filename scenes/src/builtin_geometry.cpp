@@ -157,8 +157,9 @@ void compute_tangents(Mesh& m) {
   for (size_t i = 0; i < n; ++i) {
     const glm::dvec3 nn = glm::dvec3(m.normals[i]);
     glm::dvec3 t = tan[i] - nn * glm::dot(nn, tan[i]);
-    if (glm::length(t) < 1e-9) {  // no uv gradient (a pole): any direction across the normal
-      t = std::abs(nn.x) < 0.9 ? glm::dvec3(1, 0, 0) : glm::dvec3(0, 1, 0);
+    if (glm::length(t) < 1e-9) {  // no u gradient (a pole): across the v gradient, else any
+      t = glm::cross(up[i], nn);
+      if (glm::length(t) < 1e-9) t = std::abs(nn.x) < 0.9 ? glm::dvec3(1, 0, 0) : glm::dvec3(0, 1, 0);
       t -= nn * glm::dot(nn, t);
     }
     t = glm::normalize(t);

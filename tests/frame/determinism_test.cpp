@@ -60,6 +60,14 @@ TEST(FrameDeterminism, DemoScene) {
   check("demo", {131, 67, 1});
 }
 
+TEST(FrameDeterminism, CourtyardScene) {
+  check("courtyard", {kReduced ? 96 : 240, kReduced ? 64 : 136, 4});
+  FrameSettings on_path{kReduced ? 64 : 160, kReduced ? 48 : 90, 2};
+  on_path.path_time = 7.5f;
+  check("courtyard", on_path);
+  for (int camera : {1, 2}) check("courtyard", {kReduced ? 64 : 160, kReduced ? 48 : 90, 1, camera});
+}
+
 TEST(FrameDeterminism, BadSettingsAndCamerasThrow) {
   const scenes::Scene fill = scenes::make_builtin_scene("fill");
   EXPECT_THROW(Renderer(fill, {0, 10, 1}), std::invalid_argument);

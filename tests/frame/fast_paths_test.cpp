@@ -48,6 +48,7 @@ TEST(FrameFastPaths, EachSwitchKeepsTheBytes) {
   check("tris", {kReduced ? 96 : 256, kReduced ? 64 : 144, 4});
   check("demo", {kReduced ? 96 : 200, kReduced ? 64 : 120, 4});
   check("demo", {131, 67, 1});
+  check("courtyard", {kReduced ? 96 : 200, kReduced ? 64 : 120, 4});
 }
 
 }  // namespace

@@ -12,7 +12,8 @@
 // with a trivial pixel functor (rasterizer/draw.hpp), the fastest path there is. Everything is
 // opaque and depth-tested with LESS; single-sided materials cull their back faces (front faces
 // are counter-clockwise, scene.hpp). Colors are sRGB-encoded on write unless the material says
-// $linearwrite; the background clears to Scene::background, sRGB-encoded.
+// $linearwrite; the background clears to Scene::background, sRGB-encoded, and a scene with a sky
+// cube (Scene::sky_texture) shows it wherever no mesh was drawn, unlit.
 //
 // Conventions: the view is Source's (+Z up, right-handed), projections are Direct3D's (depth in
 // [0, 1]). The view-projection matrix is computed in double and rounded once, so that a camera
