@@ -39,7 +39,7 @@ int main(int argc, char** argv) {
   app.add_option("--warmup", warmup)->check(CLI::Range(0, 100000));
   app.add_option("--out", out, "Directory for the final frame of each workload as PNG");
   app.add_flag("--print-frames", print_frames, "Print every frame time to stderr");
-  app.add_option("workloads", workloads, "fill, tris (default: both)");
+  app.add_option("workloads", workloads, "Built-in scenes: fill, tris (default: both), demo, courtyard");
   CLI11_PARSE(app, argc, argv);
   if (workloads.empty()) workloads = {"fill", "tris"};
 
