@@ -105,7 +105,6 @@ PlainLight plain_sun() {
 
 struct Renderer::State {
   const scenes::Scene* scene;
-  FrameSettings settings;
   ColorTarget color;
   DepthStencilTarget depth;
   glm::vec4 clear;
@@ -117,7 +116,7 @@ struct Renderer::State {
   DrawStats stats;
 
   State(const scenes::Scene& s, const FrameSettings& f)
-      : scene(&s), settings(f), color(f.width, f.height, f.samples), depth(f.width, f.height, f.samples) {}
+      : scene(&s), color(f.width, f.height, f.samples), depth(f.width, f.height, f.samples) {}
 };
 
 namespace {

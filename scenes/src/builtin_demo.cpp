@@ -79,6 +79,7 @@ Scene make_demo() {
   plane.material = 0;
   plane.indices = std::vector<uint32_t>{};
   add_quad(plane, {-100, 0, 100}, {100, 0, 100}, {100, 0, -100}, {-100, 0, -100}, {0, 1, 0}, 100.0f);
+  plane.uv1 = {{0, 1}, {1, 1}, {1, 0}, {0, 0}};  // the whole lightmap: one chart
   s.meshes.push_back(std::move(plane));
 
   for (int i = 0; i < 7; ++i) {
