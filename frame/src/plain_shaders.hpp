@@ -21,9 +21,13 @@ struct UnlitVertex {
   const glm::vec4* colors;  ///< or null: white
   glm::vec4 color;          ///< the material's
   glm::mat4 view_projection;
+  /// The front end prefetches the positions (draw.hpp); the colors, a second stream as large
+  /// (W2's 48 MB), are prefetched here, as far ahead: without it W2 ran ~1.5% slower.
+  static constexpr uint32_t kColorsAhead = 64;
   const void* input(uint32_t i) const { return positions + i; }
   void operator()(uint32_t i, rasterizer::VertexOutput<1>& out) const {
     out.position = view_projection * glm::vec4(positions[i], 1.0f);
+    if (colors) rasterizer::simd::prefetch(colors + i + kColorsAhead);  // never faults, even past the end
     out.varyings[0] = colors ? colors[i] * color : color;
   }
 };
