@@ -1,13 +1,16 @@
 // Whole-frame benchmark of the built-in workloads, printing exactly the line format of the
 // llvmpipe peer (../shared/peers/llvmpipe) so both run side by side:
 //   workload=<name> width=W height=H msaa=S threads=T frames=N median_ms=X min_ms=Y
-// A frame is what the peer calls a frame: clear, draw, resolve to a 1-sample image.
+// A frame is what the peer calls a frame: clear, draw, resolve to a 1-sample image. The scenes are
+// built and the renderer prepared (textures uploaded) before the clock starts, as the peer
+// generates its vertex buffers first.
 // stderr gets the CPU, the instruction set and the fast paths turned off (LUXEL_NO_FASTPATH).
 
 #include "machine.hpp"
 
-#include "luxel/frame/builtin.hpp"
+#include "luxel/frame/renderer.hpp"
 #include "luxel/rasterizer/fast_paths.hpp"
+#include "luxel/scenes/builtin.hpp"
 
 #include <CLI/CLI.hpp>
 
@@ -17,6 +20,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -35,7 +39,7 @@ int main(int argc, char** argv) {
   app.add_option("--warmup", warmup)->check(CLI::Range(0, 100000));
   app.add_option("--out", out, "Directory for the final frame of each workload as PNG");
   app.add_flag("--print-frames", print_frames, "Print every frame time to stderr");
-  app.add_option("workloads", workloads, "fill, tris (default: both)");
+  app.add_option("workloads", workloads, "Built-in scenes: fill, tris (default: both), demo, courtyard");
   CLI11_PARSE(app, argc, argv);
   if (workloads.empty()) workloads = {"fill", "tris"};
 
@@ -53,18 +57,20 @@ int main(int argc, char** argv) {
                luxel::rasterizer::fast_paths_off_names(options.fast_paths).c_str());
   luxel::rasterizer::Context ctx(options);
   for (const std::string& name : workloads) {
-    std::unique_ptr<luxel::frame::BuiltinScene> scene;
+    luxel::scenes::Scene scene;
+    std::unique_ptr<luxel::frame::Renderer> renderer;
     try {
-      scene = luxel::frame::make_builtin_scene(name, settings);
+      scene = luxel::scenes::make_builtin_scene(name, {settings.width, settings.height});
+      renderer = std::make_unique<luxel::frame::Renderer>(scene, settings);
     } catch (const std::exception& e) {
       std::printf("workload=%s skipped reason=\"%s\"\n", name.c_str(), e.what());
       continue;
     }
-    for (int i = 0; i < warmup; ++i) scene->render(ctx);
+    for (int i = 0; i < warmup; ++i) renderer->render(ctx);
     std::vector<double> ms;
     for (int i = 0; i < frames; ++i) {
       const auto t0 = std::chrono::steady_clock::now();
-      scene->render(ctx);
+      renderer->render(ctx);
       const auto t1 = std::chrono::steady_clock::now();
       ms.push_back(std::chrono::duration<double, std::milli>(t1 - t0).count());
       if (print_frames) std::fprintf(stderr, "%s frame %d: %.3f ms\n", name.c_str(), i, ms.back());
@@ -82,7 +88,7 @@ int main(int argc, char** argv) {
                                std::to_string(threads) + ".png";
       try {
         std::filesystem::create_directories(out);  // as the peer harness does
-        luxel::rasterizer::write_image(scene->image(), path);
+        luxel::rasterizer::write_image(renderer->image(), path);
       } catch (const std::exception& e) {
         std::fprintf(stderr, "luxel_frame_bench: %s: %s\n", path.c_str(), e.what());
         return 1;

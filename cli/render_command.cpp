@@ -1,11 +1,12 @@
-// luxel render --scene builtin:NAME [--width --height --msaa --threads --out FILE]
+// luxel render --scene builtin:NAME [--width --height --msaa --threads --camera N --out FILE --stats]
 // LUXEL_NO_FASTPATH=name,... (or all) turns rasterizer fast paths off (fast_paths.hpp).
 
 #include "commands.hpp"
 
-#include "luxel/frame/builtin.hpp"
+#include "luxel/frame/renderer.hpp"
 #include "luxel/rasterizer/fast_paths.hpp"
 #include "luxel/rasterizer/image.hpp"
+#include "luxel/scenes/builtin.hpp"
 
 #include <cstdlib>
 
@@ -28,11 +29,16 @@ struct RenderOptions {
 Runner add_render_command(CLI::App& app) {
   auto options = std::make_shared<RenderOptions>();
   CLI::App* cmd = app.add_subcommand("render", "Render a scene to an image file");
-  cmd->add_option("--scene", options->scene, "Scene to render: builtin:NAME (demo, fill, tris)")->capture_default_str();
+  std::string names;
+  for (const std::string& n : scenes::builtin_scene_names()) names += (names.empty() ? "" : ", ") + n;
+  cmd->add_option("--scene", options->scene, "Scene to render: builtin:NAME (" + names + ")")->capture_default_str();
   cmd->add_option("--width", options->settings.width, "Image width in pixels")->check(CLI::Range(1, 8192))->capture_default_str();
   cmd->add_option("--height", options->settings.height, "Image height in pixels")->check(CLI::Range(1, 8192))->capture_default_str();
   cmd->add_option("--msaa", options->settings.samples, "Samples per pixel: 1, 2, 4 or 8")
       ->check(CLI::IsMember({1, 2, 4, 8}))
+      ->capture_default_str();
+  cmd->add_option("--camera", options->settings.camera, "Which of the scene's cameras to look through (0 = the first)")
+      ->check(CLI::NonNegativeNumber)
       ->capture_default_str();
   cmd->add_option("--threads", options->threads, "Worker threads (0 = one per core)")->check(CLI::Range(0, 256))->capture_default_str();
   cmd->add_option("--out", options->out, "Output image (PNG, TIFF, EXR... by extension)")->capture_default_str();
@@ -54,23 +60,27 @@ Runner add_render_command(CLI::App& app) {
         return 2;
       }
     }
-    std::unique_ptr<frame::BuiltinScene> scene;
+    // The scene, then the renderer that reads it: both outlive the frame.
+    scenes::Scene scene;
+    std::unique_ptr<frame::Renderer> renderer;
     try {
-      scene = frame::make_builtin_scene(options->scene.substr(prefix.size()), options->settings);
+      scene = scenes::make_builtin_scene(options->scene.substr(prefix.size()),
+                                         {options->settings.width, options->settings.height});
+      renderer = std::make_unique<frame::Renderer>(scene, options->settings);
     } catch (const std::invalid_argument& e) {
       std::cerr << "luxel render: " << e.what() << "\n";
       return 2;
     }
     rasterizer::Context ctx(context_options);
-    scene->render(ctx);
+    renderer->render(ctx);
     try {
-      rasterizer::write_image(scene->image(), options->out);
+      rasterizer::write_image(renderer->image(), options->out);
     } catch (const std::exception& e) {
       std::cerr << "luxel render: " << e.what() << "\n";
       return 1;
     }
     if (options->stats) {
-      const rasterizer::DrawStats& s = scene->stats();
+      const rasterizer::DrawStats& s = renderer->stats();
       std::cout << "triangles=" << s.triangles << " rasterized=" << s.rasterized << " clipped=" << s.clipped
                 << " clip_overflow=" << s.clip_overflow
                 << " culled=" << s.culled << " outside=" << s.outside << " degenerate=" << s.degenerate

@@ -81,6 +81,8 @@ void check_mesh(const Scene& scene, const Mesh& m, size_t i) {
   for (size_t v = 0; v < m.tangents.size(); ++v)
     if (m.tangents[v].w != 1.0f && m.tangents[v].w != -1.0f)
       fail(scene, where + " tangent " + std::to_string(v) + " handedness is not +-1");
+  if (!m.indexed() && n % 3 != 0)
+    fail(scene, where + " is not indexed and has " + std::to_string(n) + " vertices, not a multiple of 3");
   const size_t count = m.index_count();
   if (count % 3 != 0) fail(scene, where + " has " + std::to_string(count) + " indices, not a multiple of 3");
   for (size_t k = 0; k < count; ++k)

@@ -1,7 +1,7 @@
-// Determinism of whole frames: the built-in `fill` and `tris` scenes (at reduced size) resolve to
-// identical bytes, and report identical stats, with 1, 2, 3 and 8 threads, frame after frame.
+// Determinism of whole frames: the built-in scenes (at reduced size) resolve to identical bytes,
+// and report identical stats, with 1, 2, 3 and 8 threads, frame after frame.
 
-#include "luxel/frame/builtin.hpp"
+#include "frame/frame_support.hpp"
 
 #include <gtest/gtest.h>
 
@@ -10,24 +10,10 @@
 namespace luxel::frame {
 namespace {
 
-struct Frame {
-  std::vector<uint8_t> rgba;
-  rasterizer::DrawStats stats;
-};
-
-Frame render(std::string_view name, const FrameSettings& settings, int threads, int frames) {
-  rasterizer::Context ctx(threads);
-  auto scene = make_builtin_scene(name, settings);
-  Frame f;
-  for (int i = 0; i < frames; ++i) {
-    scene->render(ctx);
-    if (i > 0) {
-      EXPECT_TRUE(scene->image().rgba == f.rgba) << name << ": frame " << i << " differs from frame 0";
-    }
-    f.rgba = scene->image().rgba;
-    f.stats = scene->stats();
-  }
-  return f;
+RenderedFrame render(std::string_view name, const FrameSettings& settings, int threads, int frames) {
+  rasterizer::ContextOptions options;
+  options.threads = threads;
+  return render_builtin(name, settings, options, frames);
 }
 
 bool same_stats(const rasterizer::DrawStats& a, const rasterizer::DrawStats& b) {
@@ -39,15 +25,15 @@ bool same_stats(const rasterizer::DrawStats& a, const rasterizer::DrawStats& b) 
 }
 
 void check(std::string_view name, const FrameSettings& settings) {
-  const Frame one = render(name, settings, 1, 2);
-  ASSERT_EQ(one.rgba.size(), size_t(settings.width) * settings.height * 4);
+  const RenderedFrame one = render(name, settings, 1, 2);
+  ASSERT_EQ(one.image.rgba.size(), size_t(settings.width) * settings.height * 4);
   // Not a blank image: the scene drew something.
   bool varied = false;
-  for (size_t i = 4; i < one.rgba.size() && !varied; ++i) varied = one.rgba[i] != one.rgba[i % 4];
+  for (size_t i = 4; i < one.image.rgba.size() && !varied; ++i) varied = one.image.rgba[i] != one.image.rgba[i % 4];
   EXPECT_TRUE(varied) << name;
   for (int threads : {2, 3, 8}) {
-    const Frame f = render(name, settings, threads, 2);
-    EXPECT_TRUE(f.rgba == one.rgba) << name << " " << settings.width << "x" << settings.height << "x" << settings.samples
+    const RenderedFrame f = render(name, settings, threads, 2);
+    EXPECT_TRUE(f.image.rgba == one.image.rgba) << name << " " << settings.width << "x" << settings.height << "x" << settings.samples
                                     << ": " << threads << " threads differ from 1 thread";
     EXPECT_TRUE(same_stats(f.stats, one.stats)) << name << ": stats differ with " << threads << " threads";
   }
@@ -69,10 +55,31 @@ TEST(FrameDeterminism, TrisScene) {
   if (!kReduced) check("tris", {131, 67, 8});
 }
 
-TEST(FrameDeterminism, UnknownScenesAndBadSettingsThrow) {
-  EXPECT_THROW(make_builtin_scene("no-such-scene", {}), std::invalid_argument);
-  EXPECT_THROW(make_builtin_scene("fill", {0, 10, 1}), std::invalid_argument);
-  EXPECT_THROW(make_builtin_scene("fill", {10, 10, 3}), std::invalid_argument);
+TEST(FrameDeterminism, DemoScene) {
+  check("demo", {kReduced ? 96 : 200, kReduced ? 64 : 120, 4});
+  check("demo", {131, 67, 1});
+}
+
+TEST(FrameDeterminism, CourtyardScene) {
+  check("courtyard", {kReduced ? 96 : 240, kReduced ? 64 : 136, 4});
+  FrameSettings on_path{kReduced ? 64 : 160, kReduced ? 48 : 90, 2};
+  on_path.path_time = 7.5f;
+  check("courtyard", on_path);
+  for (int camera : {1, 2}) check("courtyard", {kReduced ? 64 : 160, kReduced ? 48 : 90, 1, camera});
+}
+
+TEST(FrameDeterminism, BadSettingsAndCamerasThrow) {
+  const scenes::Scene fill = scenes::make_builtin_scene("fill");
+  EXPECT_THROW(Renderer(fill, {0, 10, 1}), std::invalid_argument);
+  EXPECT_THROW(Renderer(fill, {10, 10, 3}), std::invalid_argument);
+  EXPECT_THROW(Renderer(fill, {10, 10, 1, 1}), std::invalid_argument);   // fill has one camera
+  EXPECT_THROW(Renderer(fill, {10, 10, 1, -1}), std::invalid_argument);
+  FrameSettings on_path{10, 10, 1};
+  on_path.path_time = 0.0f;
+  EXPECT_THROW(Renderer(fill, on_path), std::invalid_argument);         // and no camera path
+  scenes::Scene broken = fill;
+  broken.meshes[0].material = 99;
+  EXPECT_THROW(Renderer(broken, {10, 10, 1}), std::invalid_argument);   // scenes::validate
 }
 
 }  // namespace

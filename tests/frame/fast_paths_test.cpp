@@ -1,7 +1,7 @@
 // The built-in scenes render to the same bytes with every fast path on, all off, and each one
 // off alone (fast_paths.hpp): a fast path may change the time and the stats, never the image.
 
-#include "luxel/frame/builtin.hpp"
+#include "frame/frame_support.hpp"
 #include "luxel/rasterizer/fast_paths.hpp"
 
 #include <gtest/gtest.h>
@@ -19,11 +19,9 @@ std::vector<uint8_t> render(std::string_view name, const FrameSettings& settings
   rasterizer::ContextOptions options;
   options.threads = 2;
   options.fast_paths = paths;
-  rasterizer::Context ctx(options);
-  auto scene = make_builtin_scene(name, settings);
-  scene->render(ctx);
-  if (stats) *stats = scene->stats();
-  return scene->image().rgba;
+  RenderedFrame f = render_builtin(name, settings, options);
+  if (stats) *stats = f.stats;
+  return f.image.rgba;
 }
 
 #if defined(__SANITIZE_ADDRESS__) || !defined(__OPTIMIZE__)
@@ -50,6 +48,7 @@ TEST(FrameFastPaths, EachSwitchKeepsTheBytes) {
   check("tris", {kReduced ? 96 : 256, kReduced ? 64 : 144, 4});
   check("demo", {kReduced ? 96 : 200, kReduced ? 64 : 120, 4});
   check("demo", {131, 67, 1});
+  check("courtyard", {kReduced ? 96 : 200, kReduced ? 64 : 120, 4});
 }
 
 }  // namespace

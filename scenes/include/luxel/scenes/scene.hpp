@@ -127,6 +127,8 @@ struct Material {
   float alpha_cutoff = 0.5f;        ///< $alphatestreference
   bool translucent = false;         ///< $translucent (drawn after opaque, back to front)
   bool double_sided = false;        ///< $nocull
+  bool linear_write = false;        ///< $linearwrite (UnlitGeneric): the result is written to the 8-bit
+                                    ///< target as it is, not sRGB-encoded (the peer workloads' output)
 
   // Water.
   TextureRef water_normal;          ///< $normalmap
@@ -140,6 +142,7 @@ struct Material {
 // --- Geometry ------------------------------------------------------------------------------------
 
 /// 16- or 32-bit triangle-list indices (three per triangle, counter-clockwise seen from the front).
+/// Empty: the mesh is not indexed, every three consecutive vertices are one triangle.
 using Indices = std::variant<std::vector<uint16_t>, std::vector<uint32_t>>;
 
 /// One triangle list with one material. Per-vertex arrays are either empty or as long as
@@ -157,6 +160,8 @@ struct Mesh {
 
   size_t vertex_count() const { return positions.size(); }
   size_t index_count() const;
+  bool indexed() const { return index_count() != 0; }
+  size_t triangle_count() const { return (indexed() ? index_count() : vertex_count()) / 3; }
   uint32_t index(size_t i) const;
 };
 
