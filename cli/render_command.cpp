@@ -5,7 +5,7 @@
 
 #include "luxel/frame/builtin.hpp"
 #include "luxel/rasterizer/fast_paths.hpp"
-#include "luxel/rasterizer/image.hpp"
+#include "luxel/scenes/image_io.hpp"
 
 #include <cstdlib>
 
@@ -64,7 +64,8 @@ Runner add_render_command(CLI::App& app) {
     rasterizer::Context ctx(context_options);
     scene->render(ctx);
     try {
-      rasterizer::write_image(scene->image(), options->out);
+      const rasterizer::Image& image = scene->image();
+      scenes::write_image(image.width, image.height, image.rgba, options->out);
     } catch (const std::exception& e) {
       std::cerr << "luxel render: " << e.what() << "\n";
       return 1;
