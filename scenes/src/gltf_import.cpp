@@ -158,7 +158,15 @@ class Importer {
                         : loader.LoadASCIIFromString(&model_, &err, &warn, reinterpret_cast<const char*>(bytes.data()),
                                                      unsigned(bytes.size()), dir_);
     if (!fs_error_.empty()) fail(fs_error_);
-    if (!ok) fail(first_line(err.empty() ? warn : err));
+    if (!ok) {
+      std::string why = first_line(err.empty() ? warn : err);
+      // nlohmann's parse errors start with "[json.exception.parse_error.101] ".
+      if (const size_t tag = why.find("[json.exception."); tag != std::string::npos) {
+        const size_t end = why.find("] ", tag);
+        why = "malformed JSON: " + (end == std::string::npos ? why : why.substr(end + 2));
+      }
+      fail(why);
+    }
   }
 
   // tinygltf's file system, confined: it joins the folder and a (decoded) buffer URI, then asks.
@@ -319,9 +327,9 @@ class Importer {
         if (!child[i]) roots.push_back(int(i));
     }
     // Depth first, without recursion, each node at most once (a cycle or a shared child is an error).
-    struct Item { int node; glm::dmat4 parent; int depth; };
+    struct Item { int node; glm::dmat4 parent; int depth; };  // placed: `parent` is the node's world matrix
     std::vector<char> seen(model_.nodes.size(), 0);
-    std::vector<Item> stack;
+    std::vector<Item> stack, placed;
     for (auto it = roots.rbegin(); it != roots.rend(); ++it) stack.push_back({*it, gltf::gltf_to_source(), 1});
     while (!stack.empty()) {
       const Item item = stack.back();
@@ -332,14 +340,50 @@ class Importer {
       if (item.depth > kMaxGltfNodeDepth) fail("nodes nest deeper than " + std::to_string(kMaxGltfNodeDepth) + " levels");
       seen[size_t(item.node)] = 1;
       const tinygltf::Node& n = model_.nodes[size_t(item.node)];
-      const std::string where = "node " + std::to_string(item.node) + (n.name.empty() ? "" : " '" + n.name + "'");
-      const glm::dmat4 world = item.parent * local_matrix(n, where);
-      if (n.mesh >= 0) add_mesh(n.mesh, world, where);
-      if (n.camera >= 0) add_camera(n.camera, world, where);
-      if (auto it = n.extensions.find("KHR_lights_punctual"); it != n.extensions.end() && it->second.Get("light").IsNumber())
-        add_light(it->second.Get("light").GetNumberAsInt(), world, where);
+      const glm::dmat4 world = item.parent * local_matrix(n, node_name(item.node));
+      placed.push_back({item.node, world, item.depth});
       for (auto c = n.children.rbegin(); c != n.children.rend(); ++c) stack.push_back({*c, world, item.depth + 1});
     }
+    // Instancing multiplies vertices: the flattened total is known, and refused, before any is read.
+    uint64_t total = 0;
+    for (const Item& item : placed) total += flattened_vertices(model_.nodes[size_t(item.node)].mesh);
+    if (total > kMaxGltfSceneVertices)
+      fail("the flattened scene has " + std::to_string(total) + " vertices, more than luxel reads (" +
+           std::to_string(kMaxGltfSceneVertices) + ")");
+    for (const Item& item : placed) {
+      const tinygltf::Node& n = model_.nodes[size_t(item.node)];
+      const std::string where = node_name(item.node);
+      if (n.mesh >= 0) add_mesh(n.mesh, item.parent, where);
+      if (n.camera >= 0) add_camera(n.camera, item.parent, where);
+      if (auto it = n.extensions.find("KHR_lights_punctual"); it != n.extensions.end() && it->second.Get("light").IsNumber())
+        add_light(it->second.Get("light").GetNumberAsInt(), item.parent, where);
+    }
+  }
+
+  std::string node_name(int index) const {
+    const tinygltf::Node& n = model_.nodes[size_t(index)];
+    return "node " + std::to_string(index) + (n.name.empty() ? "" : " '" + n.name + "'");
+  }
+
+  /// The vertices a mesh will have once read: its POSITION counts, or a vertex per triangle
+  /// corner where flat normals unweld it.
+  uint64_t flattened_vertices(int mesh) const {
+    if (mesh < 0 || size_t(mesh) >= model_.meshes.size()) return 0;
+    uint64_t total = 0;
+    for (const tinygltf::Primitive& p : model_.meshes[size_t(mesh)].primitives) {
+      auto count = [&](int accessor) -> uint64_t {
+        return accessor >= 0 && size_t(accessor) < model_.accessors.size() ? model_.accessors[size_t(accessor)].count : 0;
+      };
+      auto position = p.attributes.find("POSITION");
+      const uint64_t n = position == p.attributes.end() ? 0 : count(position->second);
+      if (p.attributes.count("NORMAL")) {
+        total += n;
+      } else {
+        const uint64_t m = p.indices >= 0 ? count(p.indices) : n;
+        total += p.mode == TINYGLTF_MODE_TRIANGLES || p.mode < 0 ? m : 3 * (m > 2 ? m - 2 : 0);
+      }
+    }
+    return total;
   }
 
   // --- Meshes ------------------------------------------------------------------------------------
@@ -382,9 +426,6 @@ class Importer {
     if (position < 0) fail(where + " has no POSITION");
     const size_t n = accessors_->count(position, where);
     if (n > kMaxGltfVertices) fail(where + " has " + std::to_string(n) + " vertices, more than luxel reads");
-    scene_vertices_ += n;
-    if (scene_vertices_ > kMaxGltfSceneVertices)
-      fail("the flattened scene has more than " + std::to_string(kMaxGltfSceneVertices) + " vertices");
     auto read = [&](const char* name, const AttributeRule& rule) -> std::optional<gltf::Floats> {
       const int a = attr(name);
       if (a < 0) return std::nullopt;
@@ -484,9 +525,6 @@ class Importer {
 
     if (!nrm) {
       // Flat normals: every triangle gets vertices of its own.
-      scene_vertices_ += tri.size();
-      if (scene_vertices_ > kMaxGltfSceneVertices)
-        fail("the flattened scene has more than " + std::to_string(kMaxGltfSceneVertices) + " vertices");
       Mesh flat;
       flat.material = mesh.material;
       for (size_t k = 0; k < tri.size(); ++k) {
@@ -628,7 +666,6 @@ class Importer {
   std::vector<std::optional<PixelImage>> images_;
   std::map<std::pair<int, ColorSpace>, int> textures_;
   std::vector<std::pair<int, Camera>> cameras_;
-  uint64_t scene_vertices_ = 0;
   Scene scene_;
 };
 
