@@ -614,7 +614,7 @@ class Importer {
 
   /// The camera asked for first, the others after it in the order the nodes placed them.
   void order_cameras() {
-    if (model_.cameras.empty()) return;
+    if (model_.cameras.empty() && options_.camera == 0) return;
     if (options_.camera < 0 || size_t(options_.camera) >= model_.cameras.size())
       fail("camera " + std::to_string(options_.camera) + " asked for; the file has " + std::to_string(model_.cameras.size()));
     auto chosen = std::find_if(cameras_.begin(), cameras_.end(), [&](const auto& c) { return c.first == options_.camera; });
