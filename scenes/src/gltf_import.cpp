@@ -255,8 +255,8 @@ class Importer {
     const tinygltf::Texture& t = model_.textures[size_t(index)];
     if (t.source < 0) fail(where + ": texture " + std::to_string(index) + " has no image luxel can read");
     Texture out;
-    const tinygltf::Image& im = model_.images.at(size_t(std::clamp(t.source, 0, int(model_.images.size()) - 1)));
-    out.faces.push_back(image(t.source, where + " (texture " + std::to_string(index) + ")"));
+    out.faces.push_back(image(t.source, where + " (texture " + std::to_string(index) + ")"));  // checks t.source
+    const tinygltf::Image& im = model_.images[size_t(t.source)];
     out.name = !im.name.empty() ? im.name : !im.uri.empty() && im.uri.rfind("data:", 0) != 0 ? im.uri : "texture " + std::to_string(index);
     out.color_space = color_space;
     if (t.sampler >= 0) {

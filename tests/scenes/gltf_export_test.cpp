@@ -352,6 +352,19 @@ TEST(GltfExport, ExportsAreDeterministicAndInMetersYUp) {
   EXPECT_EQ(pos["min"][0].get<double>(), double(-1000.0f));
   EXPECT_EQ(doc["materials"][0]["extras"]["luxel"]["shader"], "LightmappedGeneric");
   EXPECT_EQ(doc["materials"][1]["extras"]["luxel"]["phongexponent"].get<double>(), 33.0);
+  // Emission (3, 0.5, 0) beyond glTF's [0, 1] factor: factor / 3 and KHR_materials_emissive_strength 3.
+  const json& hero = doc["materials"][1];
+  EXPECT_EQ(hero["emissiveFactor"][0].get<double>(), 1.0);
+  EXPECT_NEAR(hero["emissiveFactor"][1].get<double>(), 0.5 / 3.0, 1e-7);
+  EXPECT_EQ(hero["extensions"]["KHR_materials_emissive_strength"]["emissiveStrength"].get<double>(), 3.0);
+  EXPECT_EQ(hero["alphaMode"], "MASK");
+  EXPECT_NE(std::find(doc["extensionsUsed"].begin(), doc["extensionsUsed"].end(), "KHR_materials_emissive_strength"),
+            doc["extensionsUsed"].end());
+  // The base texture's KHR_texture_transform.
+  const json& transform = doc["materials"][0]["pbrMetallicRoughness"]["baseColorTexture"]["extensions"]["KHR_texture_transform"];
+  EXPECT_EQ(transform["offset"][1].get<double>(), -0.5);
+  EXPECT_EQ(transform["scale"][0].get<double>(), 2.0);
+  EXPECT_EQ(transform["rotation"].get<double>(), double(0.7f));
   // A light of 50 (Source units) with quadratic 0.01: glTF intensity 50 / (0.01 k^2) candela.
   const json& lamp = doc["extensions"]["KHR_lights_punctual"]["lights"][1];
   EXPECT_NEAR(lamp["intensity"].get<double>(), 50.0 / (double(0.01f) * k * k), 1e-9);

@@ -1,5 +1,5 @@
 #pragma once
-// glTF 2.0 in and out (.gltf with external or base64 data-URI buffers, and .glb), through
+// glTF 2.0 in and out (.gltf with side files or base64 data URIs, and .glb), through
 // tinygltf 2.7 behind a validation layer of luxel's own.
 //
 // ## Units and axes
@@ -34,7 +34,7 @@
 // ## Materials: glTF PBR -> Source
 //   baseColorTexture               -> base (sRGB), its texCoord and KHR_texture_transform
 //   baseColorFactor                -> color (rgb linear, a = $alpha)
-//   normalTexture                  -> bump (linear)
+//   normalTexture                  -> bump (linear; its `scale` is not read)
 //   roughnessFactor r              -> phong = r < 0.9; phong_exponent = clamp(2 / r^4 - 2, 1, 150)
 //                                     (the Blinn-Phong exponent of GGX alpha = r^2)
 //   metallicFactor m               -> m > 0 and r < 0.5: envmap = nearest_sample,
@@ -58,7 +58,7 @@
 //   phong, phongexponent, phongboost, phongfresnelranges [3], phongtint [3], basemapalphaphongmask,
 //   rimlight, rimlightexponent, rimlightboost, rimmask, halflambert, heroboost,
 //   selfillum, selfillumtint [3], emissive [3],
-//   alphatest, alphatestreference, translucent, nocull,
+//   alphatestreference, translucent, nocull (alpha test and blending themselves are glTF's alphaMode),
 //   scroll1 [2], reflectamount, refractamount, reflecttint [3], refracttint [3],
 //   fogcolor [3], fogstart, fogend (Water).
 // Export writes every one of them, so a re-import gives the same Source material.
