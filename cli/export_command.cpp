@@ -6,7 +6,6 @@
 
 #include "luxel/scenes/gltf.hpp"
 
-#include <algorithm>
 #include <iostream>
 #include <memory>
 
@@ -18,11 +17,6 @@ struct ExportOptions {
   std::string out;
 };
 
-bool gltf_name(std::string s) {
-  std::transform(s.begin(), s.end(), s.begin(), [](unsigned char c) { return char(std::tolower(c)); });
-  auto ends = [&](const std::string& e) { return s.size() >= e.size() && s.compare(s.size() - e.size(), e.size(), e) == 0; };
-  return ends(".gltf") || ends(".glb");
-}
 }  // namespace
 
 Runner add_export_command(CLI::App& app) {
@@ -32,7 +26,7 @@ Runner add_export_command(CLI::App& app) {
   cmd->add_option("--out", options->out, "Output file: FILE.gltf or FILE.glb")->required();
   return [cmd, options]() -> int {
     if (!cmd->parsed()) return -1;
-    if (!gltf_name(options->out)) {
+    if (!scenes::has_extension(options->out, ".gltf") && !scenes::has_extension(options->out, ".glb")) {
       std::cerr << "luxel export: --out " << options->out << ": the name must end in .gltf or .glb\n";
       return 2;
     }

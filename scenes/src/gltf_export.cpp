@@ -4,8 +4,10 @@
 
 #include "gltf_axes.hpp"
 #include "gltf_materials.hpp"
+#include "gltf_scene_extras.hpp"
 #include "luxel/scenes/gltf.hpp"
 #include "luxel/scenes/image_io.hpp"
+#include "luxel/scenes/load.hpp"
 #include "tinygltf.hpp"
 
 #include <glm/geometric.hpp>
@@ -25,11 +27,6 @@ namespace {
 
 using tinygltf::Value;
 
-bool ends_with(std::string s, const std::string& suffix) {
-  std::transform(s.begin(), s.end(), s.begin(), [](unsigned char c) { return char(std::tolower(c)); });
-  return s.size() >= suffix.size() && s.compare(s.size() - suffix.size(), suffix.size(), suffix) == 0;
-}
-
 std::vector<double> column_major(const glm::dmat4& m) {
   std::vector<double> out;
   for (int c = 0; c < 4; ++c)
@@ -42,8 +39,8 @@ class Exporter {
   Exporter(const Scene& scene, const std::string& path) : scene_(scene), path_(path) {}
 
   void run() {
-    const bool glb = ends_with(path_, ".glb");
-    if (!glb && !ends_with(path_, ".gltf")) fail("the file name must end in .gltf or .glb");
+    const bool glb = has_extension(path_, ".glb");
+    if (!glb && !has_extension(path_, ".gltf")) fail("the file name must end in .gltf or .glb");
     model_.asset.version = "2.0";
     model_.asset.generator = "luxel";
     textures();
@@ -54,6 +51,7 @@ class Exporter {
     lights();
     tinygltf::Scene s;
     s.nodes = scene_roots_;
+    s.extras = gltf::scene_extras(scene_);
     model_.scenes.push_back(s);
     model_.defaultScene = 0;
     if (!buffer_.empty()) {

@@ -4,6 +4,7 @@
 #include "gltf_accessors.hpp"
 #include "gltf_axes.hpp"
 #include "gltf_materials.hpp"
+#include "gltf_scene_extras.hpp"
 #include "luxel/scenes/gltf.hpp"
 #include "luxel/scenes/image_io.hpp"
 #include "luxel/scenes/tangents.hpp"
@@ -317,6 +318,7 @@ class Importer {
       const int s = model_.defaultScene >= 0 ? model_.defaultScene : 0;
       if (size_t(s) >= model_.scenes.size()) fail("scene " + std::to_string(s) + " does not exist");
       roots = model_.scenes[size_t(s)].nodes;
+      gltf::read_scene_extras(model_.scenes[size_t(s)].extras, scene_);
     } else {
       // No scenes: every node without a parent is drawn.
       std::vector<char> child(model_.nodes.size(), 0);

@@ -1,17 +1,15 @@
 #include "luxel/scenes/load.hpp"
 
 #include <algorithm>
+#include <cctype>
 
 namespace luxel::scenes {
 
-namespace {
-
-bool ends_with(std::string s, const std::string& suffix) {
-  std::transform(s.begin(), s.end(), s.begin(), [](unsigned char c) { return char(std::tolower(c)); });
-  return s.size() >= suffix.size() && s.compare(s.size() - suffix.size(), suffix.size(), suffix) == 0;
+bool has_extension(const std::string& path, const std::string& extension) {
+  if (path.size() < extension.size()) return false;
+  return std::equal(extension.begin(), extension.end(), path.end() - long(extension.size()),
+                    [](char a, char b) { return std::tolower(uint8_t(a)) == std::tolower(uint8_t(b)); });
 }
-
-}  // namespace
 
 Scene load_scene(const std::string& arg, const GltfImportOptions& options) {
   const std::string builtin = "builtin:";
@@ -19,7 +17,7 @@ Scene load_scene(const std::string& arg, const GltfImportOptions& options) {
     // Built-in scenes (scenes/builtin.hpp, make_builtin_scene) plug in here.
     throw SceneArgumentError(arg + ": built-in scenes are not on this branch");
   }
-  if (ends_with(arg, ".gltf") || ends_with(arg, ".glb")) return load_gltf(arg, options);
+  if (has_extension(arg, ".gltf") || has_extension(arg, ".glb")) return load_gltf(arg, options);
   throw SceneArgumentError(arg + ": not a scene: name a .gltf or .glb file, or builtin:NAME");
 }
 

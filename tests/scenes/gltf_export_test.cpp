@@ -225,6 +225,19 @@ Scene hand_built() {
   plan.name = "plan", plan.projection = Projection::orthographic, plan.position = {0, 0, 1000}, plan.target = {0, 0, 0},
   plan.up = {0, 1, 0}, plan.ortho_height = 512.0f, plan.aspect = 2.0f;
   s.cameras = {eye, plan};
+  s.background = {0.1f, 0.2f, 0.3f};
+  s.fog.mode = FogMode::height, s.fog.color = {0.4f, 0.5f, 0.6f}, s.fog.start = 12.5f, s.fog.end = 900.0f;
+  s.fog.max_density = 0.7f, s.fog.water_z = -5.0f;
+  s.exposure.min_scale = 0.25f, s.exposure.max_scale = 3.0f, s.exposure.rate = 0.5f, s.exposure.percent_target = 55.0f;
+  s.exposure.percent_bright = 3.0f, s.exposure.bloom_scale = 1.25f;
+  s.cubemap_samples = {{{1, 2, 3}, 32, -1}, {{-100, 50, 64}, 128, -1}};
+  s.color_corrections = {{"builtin:warm", {10, 20, 30}, 64.0f, 256.0f, 0.8f}};
+  s.irradiance_volume = IrradianceVolume{{-1000, 0, -10}, {0, 10, 130}, {128, 64, 32}, {9, 2, 5}, {}};
+  CameraKey key;
+  key.time = 2.5f;
+  key.camera = eye;
+  key.camera.position = {1, 2, 3};
+  s.camera_path = {key};
   return s;
 }
 
@@ -321,6 +334,33 @@ TEST(GltfExport, HandBuiltSceneRoundTrips) {
       EXPECT_NEAR(a.near_plane, b.near_plane, 1e-4f);
       EXPECT_NEAR(a.far_plane, b.far_plane, 1e-1f);
     }
+    // The scene's own Source data, through the glTF scene's extras (Source units, exact).
+    EXPECT_EQ(back.background, s.background);
+    EXPECT_EQ(back.fog.mode, FogMode::height);
+    EXPECT_EQ(back.fog.color, s.fog.color);
+    EXPECT_EQ(back.fog.start, s.fog.start);
+    EXPECT_EQ(back.fog.end, s.fog.end);
+    EXPECT_EQ(back.fog.max_density, s.fog.max_density);
+    EXPECT_EQ(back.fog.water_z, s.fog.water_z);
+    EXPECT_EQ(back.exposure.min_scale, s.exposure.min_scale);
+    EXPECT_EQ(back.exposure.percent_target, s.exposure.percent_target);
+    EXPECT_EQ(back.exposure.bloom_scale, s.exposure.bloom_scale);
+    ASSERT_EQ(back.cubemap_samples.size(), 2u);
+    EXPECT_EQ(back.cubemap_samples[1].position, s.cubemap_samples[1].position);
+    EXPECT_EQ(back.cubemap_samples[1].size, 128);
+    ASSERT_EQ(back.color_corrections.size(), 1u);
+    EXPECT_EQ(back.color_corrections[0].lut, "builtin:warm");
+    EXPECT_EQ(back.color_corrections[0].position, s.color_corrections[0].position);
+    EXPECT_EQ(back.color_corrections[0].max_falloff, 256.0f);
+    ASSERT_TRUE(back.irradiance_volume.has_value());
+    EXPECT_EQ(back.irradiance_volume->min, s.irradiance_volume->min);
+    EXPECT_EQ(back.irradiance_volume->spacing, s.irradiance_volume->spacing);
+    EXPECT_EQ(back.irradiance_volume->counts, s.irradiance_volume->counts);
+    ASSERT_EQ(back.camera_path.size(), 1u);
+    EXPECT_EQ(back.camera_path[0].time, 2.5f);
+    EXPECT_EQ(back.camera_path[0].camera.position, glm::vec3(1, 2, 3));
+    EXPECT_EQ(back.camera_path[0].camera.target, s.camera_path[0].camera.target);
+    EXPECT_EQ(back.camera_path[0].camera.vertical_fov, 0.9f);
     EXPECT_NEAR(back.cameras[0].vertical_fov, 0.9f, 1e-6f);
     EXPECT_NEAR(back.cameras[1].ortho_height, 512.0f, 1e-3f);
   }

@@ -63,6 +63,14 @@
 //   fogcolor [3], fogstart, fogend (Water).
 // Export writes every one of them, so a re-import gives the same Source material.
 //
+// ## The scene's own Source data: the glTF scene's extras.luxel
+// Positions in Source inches, +Z up (not glTF's meters: only luxel reads them):
+//   background [3], fog {mode: none|range|height, color [3], start, end, maxdensity, waterz},
+//   exposure {minscale, maxscale, rate, percenttarget, percentbright, bloomscale},
+//   cubemapsamples [{position [3], size}], colorcorrections [{lut, position [3], minfalloff,
+//   maxfalloff, maxweight}], irradiancevolume {min [3], max [3], spacing [3], counts [3]} (its
+//   baked cubes are not written), camerapath [{time, camera {position, target, up [3], fov, near, far}}].
+//
 // ## Lights (KHR_lights_punctual)
 // glTF's point and spot lights fall off as intensity / d^2, intensity in candela, d in meters;
 // Source's as color / (constant + linear d + quadratic d^2), d in inches. With d_m = d_in / k
@@ -118,11 +126,13 @@ Scene load_gltf(const std::string& path, const GltfImportOptions& options = {});
 
 /// Writes the scene as .glb (when `path` ends in .glb) or as one .gltf with base64-embedded
 /// buffers. Writes positions, normals, tangents, uv0, uv1, colors (float) and indices, POSITION
-/// min/max, 8-bit textures as embedded PNG with their samplers, every material with its Source
-/// parameters in extras (see above), lights (KHR_lights_punctual), cameras, and models as nodes.
+/// min/max, 8-bit textures as embedded PNG with their samplers, lights (KHR_lights_punctual),
+/// cameras, models as nodes, every material with its Source
+/// parameters in extras (see above), the scene's Source data in the glTF scene's extras.
 /// Not written: float (HDR) and cube textures (glTF has no such images; a material whose env map
-/// is a texture then asks for the nearest sample), the sky, lightmaps, irradiance volume, fog
-/// and color correction. Throws GltfError naming the file.
+/// is a texture then asks for the nearest sample), so neither the sky nor baked lightmaps, cube
+/// maps and ambient cubes. Meshes without vertices or triangles are left out. Throws GltfError
+/// naming the file.
 void save_gltf(const Scene& scene, const std::string& path);
 
 }  // namespace luxel::scenes

@@ -15,6 +15,9 @@ struct SceneArgumentError : std::invalid_argument {
   using std::invalid_argument::invalid_argument;
 };
 
+/// Whether `path` ends in `extension` (".glb"), in any letter case.
+bool has_extension(const std::string& path, const std::string& extension);
+
 /// `arg` is a .gltf or .glb path (case-insensitive extension), read with `options`, or
 /// builtin:NAME. Throws SceneArgumentError or GltfError.
 Scene load_scene(const std::string& arg, const GltfImportOptions& options = {});
