@@ -346,12 +346,19 @@ class Importer {
       placed.push_back({item.node, world, item.depth});
       for (auto c = n.children.rbegin(); c != n.children.rend(); ++c) stack.push_back({*c, world, item.depth + 1});
     }
-    // Instancing multiplies vertices: the flattened total is known, and refused, before any is read.
-    uint64_t total = 0;
-    for (const Item& item : placed) total += flattened_vertices(model_.nodes[size_t(item.node)].mesh);
-    if (total > kMaxGltfSceneVertices)
-      fail("the flattened scene has " + std::to_string(total) + " vertices, more than luxel reads (" +
+    // Instancing multiplies vertices and triangles: the flattened totals are known, and refused,
+    // before any is read.
+    Flattened total;
+    for (const Item& item : placed) {
+      const Flattened f = flattened(model_.nodes[size_t(item.node)].mesh);
+      total.vertices += f.vertices, total.indices += f.indices;
+    }
+    if (total.vertices > kMaxGltfSceneVertices)
+      fail("the flattened scene has " + std::to_string(total.vertices) + " vertices, more than luxel reads (" +
            std::to_string(kMaxGltfSceneVertices) + ")");
+    if (total.indices > kMaxGltfSceneIndices)
+      fail("the flattened scene has " + std::to_string(total.indices) + " triangle corners, more than luxel reads (" +
+           std::to_string(kMaxGltfSceneIndices) + ")");
     for (const Item& item : placed) {
       const tinygltf::Node& n = model_.nodes[size_t(item.node)];
       const std::string where = node_name(item.node);
@@ -367,23 +374,23 @@ class Importer {
     return "node " + std::to_string(index) + (n.name.empty() ? "" : " '" + n.name + "'");
   }
 
-  /// The vertices a mesh will have once read: its POSITION counts, or a vertex per triangle
-  /// corner where flat normals unweld it.
-  uint64_t flattened_vertices(int mesh) const {
-    if (mesh < 0 || size_t(mesh) >= model_.meshes.size()) return 0;
-    uint64_t total = 0;
+  struct Flattened { uint64_t vertices = 0, indices = 0; };
+
+  /// The vertices and triangle corners a mesh will have once read: its POSITION counts (or a
+  /// vertex per corner where flat normals unweld it) and its triangle list's length.
+  Flattened flattened(int mesh) const {
+    Flattened total;
+    if (mesh < 0 || size_t(mesh) >= model_.meshes.size()) return total;
     for (const tinygltf::Primitive& p : model_.meshes[size_t(mesh)].primitives) {
       auto count = [&](int accessor) -> uint64_t {
         return accessor >= 0 && size_t(accessor) < model_.accessors.size() ? model_.accessors[size_t(accessor)].count : 0;
       };
       auto position = p.attributes.find("POSITION");
       const uint64_t n = position == p.attributes.end() ? 0 : count(position->second);
-      if (p.attributes.count("NORMAL")) {
-        total += n;
-      } else {
-        const uint64_t m = p.indices >= 0 ? count(p.indices) : n;
-        total += p.mode == TINYGLTF_MODE_TRIANGLES || p.mode < 0 ? m : 3 * (m > 2 ? m - 2 : 0);
-      }
+      const uint64_t m = p.indices >= 0 ? count(p.indices) : n;
+      const uint64_t corners = p.mode == TINYGLTF_MODE_TRIANGLES || p.mode < 0 ? m : 3 * (m > 2 ? m - 2 : 0);
+      total.vertices += p.attributes.count("NORMAL") ? n : corners;
+      total.indices += corners;
     }
     return total;
   }

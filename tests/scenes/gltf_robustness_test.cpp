@@ -188,6 +188,14 @@ TEST(GltfRobustness, AbsurdCountsAreRefusedBeforeAllocation) {
   const std::string instanced = i.write(dir, "instanced.gltf");
   expect_gltf_error(instanced, "the flattened scene has 67108864 vertices, more than luxel reads (33554432)",
                     [&] { load_gltf(instanced); });
+  // 2^20 one-byte indices (with normals: 3 vertices) instanced by 129 nodes: 129 x 2^20 corners.
+  GltfBuilder x = triangle();
+  x.doc["meshes"][0]["primitives"][0]["attributes"]["NORMAL"] = x.add_floats({0, 0, 1, 0, 0, 1, 0, 0, 1}, "VEC3", 3);
+  x.doc["meshes"][0]["primitives"][0]["indices"] = x.add_accessor(std::vector<uint8_t>(1u << 20, 0), 5121, "SCALAR", 1);
+  for (int n = 0; n < 128; ++n) x.add_node({{"mesh", 0}});
+  const std::string corners = x.write(dir, "corners.gltf");
+  expect_gltf_error(corners, "the flattened scene has 135266304 triangle corners, more than luxel reads (134217728)",
+                    [&] { load_gltf(corners); });
   // An image whose PNG header claims 20000 x 20000 pixels.
   PixelImage tiny;
   tiny.width = tiny.height = 1;

@@ -112,6 +112,7 @@ struct GltfError : std::runtime_error {
 inline constexpr uint64_t kMaxGltfVertices = uint64_t{1} << 24;   ///< per accessor and primitive
 inline constexpr uint64_t kMaxGltfIndices = uint64_t{1} << 26;    ///< per primitive
 inline constexpr uint64_t kMaxGltfSceneVertices = uint64_t{1} << 25;  ///< summed over the flattened scene
+inline constexpr uint64_t kMaxGltfSceneIndices = uint64_t{1} << 27;   ///< triangle corners, summed likewise
 inline constexpr int kMaxGltfNodeDepth = 256;
 
 struct GltfImportOptions {
