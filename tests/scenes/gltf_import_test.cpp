@@ -6,6 +6,7 @@
 #include "gltf_support.hpp"
 
 #include "luxel/scenes/gltf.hpp"
+#include "luxel/scenes/image_io.hpp"
 
 #include <glm/geometric.hpp>
 
@@ -247,6 +248,47 @@ TEST(GltfImport, MaterialsFollowTheTableAndExtrasOverride) {
   ASSERT_EQ(s.models.size(), 2u);
   EXPECT_EQ(s.models[0].meshes, std::vector<int>{0});
   EXPECT_EQ(s.models[1].meshes, std::vector<int>{2});
+}
+
+// A data-URI PNG; KHR_texture_transform's texCoord overrides the textureInfo's; a third UV set
+// is refused (luxel has two).
+TEST(GltfImport, TextureTransformPicksTheUvSet) {
+  TempDir dir;
+  PixelImage px;
+  px.width = 2, px.height = 1;
+  px.rgba8 = {10, 20, 30, 40, 50, 60, 70, 80};
+  const std::vector<uint8_t> png = encode_png(px, "px");
+  GltfBuilder b;
+  b.doc["images"] = {{{"uri", "data:image/png;base64," + base64(png)}}};
+  b.doc["samplers"] = {{{"wrapS", 33648}, {"wrapT", 33071}, {"magFilter", 9728}, {"minFilter", 9987}}};
+  b.doc["textures"] = {{{"source", 0}, {"sampler", 0}}};
+  b.doc["extensionsUsed"] = {"KHR_texture_transform"};
+  json info = {{"index", 0}, {"texCoord", 0}};
+  info["extensions"]["KHR_texture_transform"] = {{"texCoord", 1}, {"offset", {0.5, 0.25}}};
+  json material;
+  material["pbrMetallicRoughness"]["baseColorTexture"] = info;
+  material["normalTexture"] = {{"index", 0}};
+  b.doc["materials"] = json::array({material});
+  const std::string path = b.write(dir);
+  const Scene s = load_gltf(path, no_defaults());
+  const Material& m = s.materials[0];
+  EXPECT_EQ(m.base.uv_set, 1);
+  EXPECT_EQ(m.base.offset, glm::vec2(0.5f, 0.25f));
+  // One image read two ways: the base color as sRGB, the normal map as linear.
+  ASSERT_EQ(s.textures.size(), 2u);
+  const Texture& base = s.textures[size_t(m.base.texture)];
+  const Texture& bump = s.textures[size_t(m.bump.texture)];
+  EXPECT_EQ(base.color_space, ColorSpace::srgb);
+  EXPECT_EQ(bump.color_space, ColorSpace::linear);
+  EXPECT_EQ(base.faces[0].rgba8, px.rgba8);
+  EXPECT_EQ(base.wrap_u, Wrap::mirror);
+  EXPECT_EQ(base.wrap_v, Wrap::clamp);
+  EXPECT_EQ(base.mag, Filter::nearest);
+  EXPECT_EQ(base.min, Filter::linear);
+  EXPECT_TRUE(base.mipmaps);
+  b.doc["materials"][0]["pbrMetallicRoughness"]["baseColorTexture"]["extensions"]["KHR_texture_transform"]["texCoord"] = 2;
+  const std::string bad = b.write(dir, "uv2.gltf");
+  expect_gltf_error(bad, "material 0 base color texture reads TEXCOORD_2; luxel reads TEXCOORD_0 and _1", [&] { load_gltf(bad); });
 }
 
 TEST(GltfImport, UnknownShaderInExtrasIsNamed) {
