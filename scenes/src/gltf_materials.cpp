@@ -1,5 +1,7 @@
 #include "gltf_materials.hpp"
 
+#include "gltf_values.hpp"
+
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -60,35 +62,20 @@ constexpr std::array<std::pair<EnvmapMask, const char*>, 4> kMasks = {{
     {EnvmapMask::base_alpha, "basealpha"}, {EnvmapMask::normal_alpha, "normalalpha"},
 }};
 
-bool read_floats(const Value& v, float* out, int n) {
-  if (!v.IsArray() || int(v.ArrayLen()) != n) return false;
-  for (int i = 0; i < n; ++i) {
-    if (!v.Get(i).IsNumber()) return false;
-    out[i] = float(v.Get(i).GetNumberAsDouble());
-  }
-  return true;
-}
-
-Value floats(const float* v, int n) {
-  Value::Array a;
-  for (int i = 0; i < n; ++i) a.emplace_back(double(v[i]));
-  return Value(std::move(a));
-}
-
 void read_transform(const Value& t, TextureRef& ref) {
   if (!t.IsObject()) return;
-  read_floats(t.Get("offset"), &ref.offset.x, 2);
-  read_floats(t.Get("scale"), &ref.scale.x, 2);
-  if (t.Get("rotation").IsNumber()) ref.rotation = float(t.Get("rotation").GetNumberAsDouble());
-  if (t.Get("texCoord").IsNumber()) ref.uv_set = t.Get("texCoord").GetNumberAsInt();
+  read(t.Get("offset"), ref.offset);
+  read(t.Get("scale"), ref.scale);
+  read(t.Get("rotation"), ref.rotation);
+  read(t.Get("texCoord"), ref.uv_set);
 }
 
 bool has_transform(const TextureRef& r) { return r.offset != glm::vec2(0.0f) || r.scale != glm::vec2(1.0f) || r.rotation != 0.0f; }
 
 Value transform_value(const TextureRef& r) {
   Value::Object t;
-  t["offset"] = floats(&r.offset.x, 2);
-  t["scale"] = floats(&r.scale.x, 2);
+  t["offset"] = floats(r.offset);
+  t["scale"] = floats(r.scale);
   t["rotation"] = Value(double(r.rotation));
   return Value(std::move(t));
 }
@@ -131,7 +118,7 @@ Material material_from_gltf(const tinygltf::Material& g, size_t index, const Res
   }
   float strength = 1.0f;
   if (auto it = g.extensions.find("KHR_materials_emissive_strength"); it != g.extensions.end())
-    if (it->second.Get("emissiveStrength").IsNumber()) strength = float(it->second.Get("emissiveStrength").GetNumberAsDouble());
+    read(it->second.Get("emissiveStrength"), strength);
   if (g.emissiveFactor.size() == 3)
     m.emissive = glm::vec3(float(g.emissiveFactor[0]), float(g.emissiveFactor[1]), float(g.emissiveFactor[2])) * strength;
   if (g.alphaMode == "MASK") m.alpha = AlphaMode::alpha_test;
@@ -148,9 +135,8 @@ Material material_from_gltf(const tinygltf::Material& g, size_t index, const Res
     if (it == kShaders.end()) fail(where + " extras ask for shader '" + s.Get<std::string>() + "', which luxel does not have");
     m.family = it->first;
   }
-  for (const FloatKey& k : kFloats)
-    if (const Value& v = x.Get(k.key); v.IsNumber()) m.*k.member = float(v.GetNumberAsDouble());
-  for (const Vec3Key& k : kVec3s) read_floats(x.Get(k.key), &(m.*k.member).x, 3);
+  for (const FloatKey& k : kFloats) read(x.Get(k.key), m.*k.member);
+  for (const Vec3Key& k : kVec3s) read(x.Get(k.key), m.*k.member);
   for (const BoolKey& k : kBools)
     if (const Value& v = x.Get(k.key); v.IsBool()) m.*k.member = v.Get<bool>();
   for (const TextureKey& k : kTextures) {
@@ -159,12 +145,13 @@ Material material_from_gltf(const tinygltf::Material& g, size_t index, const Res
     TextureRef& r = m.*k.member;
     r = TextureRef{};
     r.texture = resolve(t.Get("index").GetNumberAsInt(), k.color_space, where + " extras " + k.key);
-    r.uv_set = t.Get("texCoord").IsNumber() ? t.Get("texCoord").GetNumberAsInt() : 0;
-    read_transform(t, r);
+    read_transform(t, r);  // texCoord, offset, scale, rotation
   }
-  read_floats(x.Get("color"), &m.color.x, 3);
-  if (const Value& a = x.Get("alpha"); a.IsNumber()) m.color.a = float(a.GetNumberAsDouble());
-  read_floats(x.Get("scroll1"), &m.water_scroll.x, 2);
+  glm::vec3 rgb(m.color);
+  read(x.Get("color"), rgb);
+  m.color = glm::vec4(rgb, m.color.a);
+  read(x.Get("alpha"), m.color.a);
+  read(x.Get("scroll1"), m.water_scroll);
   if (const Value& e = x.Get("envmap"); e.IsString())
     m.envmap = e.Get<std::string>() == "env_cubemap" ? EnvmapSource::nearest_sample : EnvmapSource::none;
   if (const Value& e = x.Get("envmapmask"); e.IsString()) {
@@ -219,7 +206,7 @@ tinygltf::Material material_to_gltf(const Material& m, const std::function<int(i
   for (const auto& [family, name] : kShaders)
     if (family == m.family) x["shader"] = Value(std::string(name));
   for (const FloatKey& k : kFloats) x[k.key] = Value(double(m.*k.member));
-  for (const Vec3Key& k : kVec3s) x[k.key] = floats(&(m.*k.member).x, 3);
+  for (const Vec3Key& k : kVec3s) x[k.key] = floats(m.*k.member);
   for (const BoolKey& k : kBools) x[k.key] = Value(m.*k.member);
   for (const TextureKey& k : kTextures) {
     const TextureRef& r = m.*k.member;
@@ -228,14 +215,14 @@ tinygltf::Material material_to_gltf(const Material& m, const std::function<int(i
     Value::Object t;
     t["index"] = Value(index);
     t["texCoord"] = Value(r.uv_set);
-    t["offset"] = floats(&r.offset.x, 2);
-    t["scale"] = floats(&r.scale.x, 2);
+    t["offset"] = floats(r.offset);
+    t["scale"] = floats(r.scale);
     t["rotation"] = Value(double(r.rotation));
     x[k.key] = Value(std::move(t));
   }
-  x["color"] = floats(&m.color.x, 3);
+  x["color"] = floats(glm::vec3(m.color));
   x["alpha"] = Value(double(m.color.a));
-  x["scroll1"] = floats(&m.water_scroll.x, 2);
+  x["scroll1"] = floats(m.water_scroll);
   // A texture env map cannot be exported (cube): it asks for the nearest sample instead.
   x["envmap"] = Value(std::string(m.envmap == EnvmapSource::none ? "" : "env_cubemap"));
   for (const auto& [mask, name] : kMasks)

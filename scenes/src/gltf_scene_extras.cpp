@@ -1,5 +1,7 @@
 #include "gltf_scene_extras.hpp"
 
+#include "gltf_values.hpp"
+
 #include <array>
 #include <utility>
 
@@ -8,30 +10,6 @@ namespace luxel::scenes::gltf {
 namespace {
 
 using tinygltf::Value;
-
-template <int N>
-Value floats(const glm::vec<N, float>& v) {
-  Value::Array a;
-  for (int i = 0; i < N; ++i) a.emplace_back(double(v[i]));
-  return Value(std::move(a));
-}
-
-template <int N>
-void read(const Value& v, glm::vec<N, float>& out) {
-  if (!v.IsArray() || int(v.ArrayLen()) != N) return;
-  glm::vec<N, float> r;
-  for (int i = 0; i < N; ++i) {
-    if (!v.Get(i).IsNumber()) return;
-    r[i] = float(v.Get(i).GetNumberAsDouble());
-  }
-  out = r;
-}
-void read(const Value& v, float& out) {
-  if (v.IsNumber()) out = float(v.GetNumberAsDouble());
-}
-void read(const Value& v, int& out) {
-  if (v.IsNumber()) out = v.GetNumberAsInt();
-}
 
 constexpr std::array<std::pair<FogMode, const char*>, 3> kFogModes = {{{FogMode::none, "none"}, {FogMode::range, "range"}, {FogMode::height, "height"}}};
 
