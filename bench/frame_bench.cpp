@@ -11,6 +11,7 @@
 #include "luxel/frame/renderer.hpp"
 #include "luxel/rasterizer/fast_paths.hpp"
 #include "luxel/scenes/builtin.hpp"
+#include "luxel/scenes/image_io.hpp"
 
 #include <CLI/CLI.hpp>
 
@@ -88,7 +89,8 @@ int main(int argc, char** argv) {
                                std::to_string(threads) + ".png";
       try {
         std::filesystem::create_directories(out);  // as the peer harness does
-        luxel::rasterizer::write_image(renderer->image(), path);
+        const luxel::rasterizer::Image& image = renderer->image();
+        luxel::scenes::write_image(image.width, image.height, image.rgba, path);
       } catch (const std::exception& e) {
         std::fprintf(stderr, "luxel_frame_bench: %s: %s\n", path.c_str(), e.what());
         return 1;

@@ -12,5 +12,7 @@ using Runner = std::function<int()>;
 
 Runner add_render_command(CLI::App& app);
 Runner add_cost_command(CLI::App& app);
+Runner add_export_command(CLI::App& app);
+Runner add_info_command(CLI::App& app);
 
 }  // namespace luxel::cli

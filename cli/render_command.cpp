@@ -1,4 +1,4 @@
-// luxel render --scene builtin:NAME [--width --height --msaa --threads --camera N --out FILE --stats]
+// luxel render --scene FILE.gltf|FILE.glb|builtin:NAME [--width --height --msaa --threads --camera N --out FILE --stats]
 // LUXEL_NO_FASTPATH=name,... (or all) turns rasterizer fast paths off (fast_paths.hpp).
 
 #include "commands.hpp"
@@ -7,12 +7,15 @@
 #include "luxel/rasterizer/fast_paths.hpp"
 #include "luxel/rasterizer/image.hpp"
 #include "luxel/scenes/builtin.hpp"
+#include "luxel/scenes/image_io.hpp"
+#include "luxel/scenes/load.hpp"
 
 #include <cstdlib>
 
 #include <iostream>
 #include <memory>
 #include <string>
+#include <utility>
 
 namespace luxel::cli {
 
@@ -31,7 +34,7 @@ Runner add_render_command(CLI::App& app) {
   CLI::App* cmd = app.add_subcommand("render", "Render a scene to an image file");
   std::string names;
   for (const std::string& n : scenes::builtin_scene_names()) names += (names.empty() ? "" : ", ") + n;
-  cmd->add_option("--scene", options->scene, "Scene to render: builtin:NAME (" + names + ")")->capture_default_str();
+  cmd->add_option("--scene", options->scene, "Scene to render: FILE.gltf, FILE.glb or builtin:NAME (" + names + ")")->capture_default_str();
   cmd->add_option("--width", options->settings.width, "Image width in pixels")->check(CLI::Range(1, 8192))->capture_default_str();
   cmd->add_option("--height", options->settings.height, "Image height in pixels")->check(CLI::Range(1, 8192))->capture_default_str();
   cmd->add_option("--msaa", options->settings.samples, "Samples per pixel: 1, 2, 4 or 8")
@@ -45,11 +48,6 @@ Runner add_render_command(CLI::App& app) {
   cmd->add_flag("--stats", options->stats, "Print what the draws did");
   return [cmd, options]() -> int {
     if (!cmd->parsed()) return -1;
-    const std::string prefix = "builtin:";
-    if (options->scene.rfind(prefix, 0) != 0) {
-      std::cerr << "luxel render: --scene " << options->scene << ": only builtin:NAME scenes are supported so far\n";
-      return 2;
-    }
     rasterizer::ContextOptions context_options;
     context_options.threads = options->threads;
     if (const char* off = std::getenv("LUXEL_NO_FASTPATH")) {
@@ -60,13 +58,25 @@ Runner add_render_command(CLI::App& app) {
         return 2;
       }
     }
-    // The scene, then the renderer that reads it: both outlive the frame.
+    // The scene, then the renderer that reads it: both outlive the frame. A file's camera N is
+    // made its first on import (as `luxel info` and `export` do); a built-in's is picked here.
+    frame::FrameSettings settings = options->settings;
+    scenes::GltfImportOptions gltf;
+    const bool file = options->scene.rfind("builtin:", 0) != 0;
+    if (file) gltf.camera = std::exchange(settings.camera, 0);
     scenes::Scene scene;
+    try {
+      scene = scenes::load_scene(options->scene, gltf, {settings.width, settings.height});
+    } catch (const scenes::SceneArgumentError& e) {
+      std::cerr << "luxel render: --scene " << e.what() << "\n";
+      return 2;
+    } catch (const std::exception& e) {
+      std::cerr << "luxel render: " << e.what() << "\n";
+      return 1;
+    }
     std::unique_ptr<frame::Renderer> renderer;
     try {
-      scene = scenes::make_builtin_scene(options->scene.substr(prefix.size()),
-                                         {options->settings.width, options->settings.height});
-      renderer = std::make_unique<frame::Renderer>(scene, options->settings);
+      renderer = std::make_unique<frame::Renderer>(scene, settings);
     } catch (const std::invalid_argument& e) {
       std::cerr << "luxel render: " << e.what() << "\n";
       return 2;
@@ -74,7 +84,8 @@ Runner add_render_command(CLI::App& app) {
     rasterizer::Context ctx(context_options);
     renderer->render(ctx);
     try {
-      rasterizer::write_image(renderer->image(), options->out);
+      const rasterizer::Image& image = renderer->image();
+      scenes::write_image(image.width, image.height, image.rgba, options->out);
     } catch (const std::exception& e) {
       std::cerr << "luxel render: " << e.what() << "\n";
       return 1;

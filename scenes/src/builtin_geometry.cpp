@@ -142,7 +142,7 @@ void compute_tangents(Mesh& m) {
   const size_t n = m.vertex_count();
   std::vector<glm::dvec3> tan(n, glm::dvec3(0)), up(n, glm::dvec3(0));
   for (size_t k = 0; k + 2 < m.index_count(); k += 3) {
-    const uint32_t i0 = m.index(k), i1 = m.index(k + 1), i2 = m.index(k + 2);
+    const uint32_t i0 = m.vertex_of_corner(k), i1 = m.vertex_of_corner(k + 1), i2 = m.vertex_of_corner(k + 2);
     const glm::dvec3 e1 = glm::dvec3(m.positions[i1] - m.positions[i0]), e2 = glm::dvec3(m.positions[i2] - m.positions[i0]);
     const glm::dvec2 d1 = glm::dvec2(m.uv0[i1] - m.uv0[i0]), d2 = glm::dvec2(m.uv0[i2] - m.uv0[i0]);
     const double det = d1.x * d2.y - d2.x * d1.y;

@@ -13,7 +13,8 @@ size_t Mesh::index_count() const {
   return std::visit([](const auto& v) { return v.size(); }, indices);
 }
 
-uint32_t Mesh::index(size_t i) const {
+uint32_t Mesh::vertex_of_corner(size_t i) const {
+  if (!indexed()) return static_cast<uint32_t>(i);
   return std::visit([i](const auto& v) { return static_cast<uint32_t>(v[i]); }, indices);
 }
 
@@ -86,8 +87,8 @@ void check_mesh(const Scene& scene, const Mesh& m, size_t i) {
   const size_t count = m.index_count();
   if (count % 3 != 0) fail(scene, where + " has " + std::to_string(count) + " indices, not a multiple of 3");
   for (size_t k = 0; k < count; ++k)
-    if (m.index(k) >= n)
-      fail(scene, where + " index " + std::to_string(k) + " = " + std::to_string(m.index(k)) + " is beyond its " +
+    if (m.vertex_of_corner(k) >= n)
+      fail(scene, where + " index " + std::to_string(k) + " = " + std::to_string(m.vertex_of_corner(k)) + " is beyond its " +
                       std::to_string(n) + " vertices");
 }
 

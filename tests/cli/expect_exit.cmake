@@ -1,5 +1,6 @@
 # Runs LUXEL with ARGS (separated by |) and checks the exit code, that stderr is exactly one line when
-# the code is non-zero, that stderr matches STDERR_REGEX (if given), and that FILE exists (if given).
+# the code is non-zero, that stderr matches STDERR_REGEX and stdout STDOUT_REGEX (if given), and that FILE
+# exists (if given).
 string(REPLACE "|" ";" ARGS "${ARGS}")
 execute_process(COMMAND ${LUXEL} ${ARGS} RESULT_VARIABLE code OUTPUT_VARIABLE out ERROR_VARIABLE err)
 if(NOT code STREQUAL "${EXPECT_CODE}")
@@ -14,6 +15,9 @@ if(NOT EXPECT_CODE STREQUAL "0")
 endif()
 if(DEFINED STDERR_REGEX AND NOT err MATCHES "${STDERR_REGEX}")
   message(FATAL_ERROR "stderr does not match '${STDERR_REGEX}':\n${err}")
+endif()
+if(DEFINED STDOUT_REGEX AND NOT out MATCHES "${STDOUT_REGEX}")
+  message(FATAL_ERROR "stdout does not match '${STDOUT_REGEX}':\n${out}")
 endif()
 if(DEFINED FILE AND NOT EXISTS "${FILE}")
   message(FATAL_ERROR "${FILE} was not written")

@@ -248,10 +248,10 @@ TEST_F(Courtyard, LightmapChartsAreInsideTheUnitSquareAndDoNotOverlap) {
       return x;
     };
     for (size_t k = 0; k < m.index_count(); k += 3)
-      for (int e = 1; e < 3; ++e) parent[find(m.index(k + e))] = find(m.index(k));
+      for (int e = 1; e < 3; ++e) parent[find(m.vertex_of_corner(k + e))] = find(m.vertex_of_corner(k));
     std::map<uint32_t, Box> boxes;
     for (size_t k = 0; k < m.index_count(); ++k) {
-      const uint32_t v = m.index(k);
+      const uint32_t v = m.vertex_of_corner(k);
       Box& b = boxes[find(v)];
       b.lo = glm::min(b.lo, m.uv1[v]);
       b.hi = glm::max(b.hi, m.uv1[v]);
@@ -295,7 +295,7 @@ TEST_F(Courtyard, TangentFramesAreOrthonormalWithHandedness) {
     }
     size_t checked = 0, wrong = 0;
     for (size_t k = 0; k < m.index_count(); k += 3) {
-      const uint32_t i0 = m.index(k), i1 = m.index(k + 1), i2 = m.index(k + 2);
+      const uint32_t i0 = m.vertex_of_corner(k), i1 = m.vertex_of_corner(k + 1), i2 = m.vertex_of_corner(k + 2);
       const glm::dvec3 e1(m.positions[i1] - m.positions[i0]), e2(m.positions[i2] - m.positions[i0]);
       const glm::dvec2 d1(m.uv0[i1] - m.uv0[i0]), d2(m.uv0[i2] - m.uv0[i0]);
       const double det = d1.x * d2.y - d2.x * d1.y;

@@ -1,8 +1,8 @@
 #pragma once
-// A plain row-major RGBA8 image (top row first), the rasterizer's way out to files.
+// A plain row-major RGBA8 image (top row first): the rasterizer's resolve target. Writing it to a
+// file is for scenes/image_io.hpp (the rasterizer knows nothing about files).
 
 #include <cstdint>
-#include <string>
 #include <vector>
 
 namespace luxel::rasterizer {
@@ -20,13 +20,5 @@ struct Image {
     return rgba.data() + (static_cast<size_t>(y) * width + x) * 4;
   }
 };
-
-/// Writes the image with OpenImageIO (format from the extension: .png, .tif, .exr...).
-/// Throws std::runtime_error naming the file on failure.
-void write_image(const Image& image, const std::string& path);
-
-/// Reads an image file as RGBA8 (missing channels: alpha 255, grey replicated).
-/// Throws std::runtime_error naming the file on failure.
-Image read_image(const std::string& path);
 
 }  // namespace luxel::rasterizer

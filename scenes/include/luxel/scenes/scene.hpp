@@ -159,10 +159,11 @@ struct Mesh {
   Indices indices;
 
   size_t vertex_count() const { return positions.size(); }
-  size_t index_count() const;
+  size_t index_count() const;        ///< 0 when not indexed
   bool indexed() const { return index_count() != 0; }
   size_t triangle_count() const { return (indexed() ? index_count() : vertex_count()) / 3; }
-  uint32_t index(size_t i) const;
+  /// The vertex of triangle corner i (i < 3 triangle_count()): indices[i], or i when not indexed.
+  uint32_t vertex_of_corner(size_t i) const;
 };
 
 /// A VertexLitGeneric object: lighting (ambient cube, two most significant lights) is chosen per

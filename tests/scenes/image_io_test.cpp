@@ -1,8 +1,9 @@
-// write_image / read_image (image.hpp, through OpenImageIO): exact round trips of RGBA8 images
-// through PNG, TIFF and OpenEXR, the channel rules for files with fewer channels (written here
-// by hand, not by the code under test), and failures that name the file.
+// write_image / read_image (scenes/image_io.hpp, through OpenImageIO): exact round trips of RGBA8
+// images through PNG, TIFF and OpenEXR and of float images through OpenEXR, PNG bytes in memory,
+// the channel rules for files with fewer channels (written here by hand, not by the code under
+// test), oversized images refused before allocation, and failures that name the file.
 
-#include "luxel/rasterizer/image.hpp"
+#include "luxel/scenes/image_io.hpp"
 
 #include <gtest/gtest.h>
 
@@ -13,7 +14,7 @@
 #include <string>
 #include <unistd.h>
 
-namespace luxel::rasterizer::test {
+namespace luxel::scenes::test {
 namespace {
 
 namespace fs = std::filesystem;
@@ -40,47 +41,105 @@ class TempDir {
 
 /// Every byte value in every channel, alpha included (0 and partial alpha catch a writer or
 /// reader that premultiplies), in an odd size (no row padding hides an off-by-one).
-Image test_image() {
-  Image img(37, 29);
+PixelImage test_image() {
+  PixelImage img;
+  img.width = 37, img.height = 29;
+  img.rgba8.resize(37 * 29 * 4);
   std::mt19937 rng(2718);
-  for (size_t i = 0; i < img.rgba.size(); ++i) img.rgba[i] = uint8_t(i < 1024 ? i / 4 : rng());
+  for (size_t i = 0; i < img.rgba8.size(); ++i) img.rgba8[i] = uint8_t(i < 1024 ? i / 4 : rng());
   // Pixels 0..255: (v, v, v, v) for every v, so a channel mixed into another shows.
   for (int v = 0; v < 256; ++v) {
-    uint8_t* p = img.rgba.data() + 4 * v;
+    uint8_t* p = img.rgba8.data() + 4 * v;
     p[0] = uint8_t(v), p[1] = uint8_t(255 - v), p[2] = uint8_t(v ^ 0x5a), p[3] = uint8_t(v);
   }
   return img;
 }
 
-int count_differences(const Image& a, const Image& b, std::string& first) {
+int count_differences(const PixelImage& a, const PixelImage& b, std::string& first) {
   if (a.width != b.width || a.height != b.height) {
     first = "size " + std::to_string(b.width) + "x" + std::to_string(b.height);
     return 1;
   }
+  if (b.is_hdr() || b.rgba8.size() != a.rgba8.size()) {
+    first = "an 8-bit image read back as float";
+    return 1;
+  }
   int bad = 0;
-  for (size_t i = 0; i < a.rgba.size(); ++i)
-    if (a.rgba[i] != b.rgba[i] && bad++ == 0)
+  for (size_t i = 0; i < a.rgba8.size(); ++i)
+    if (a.rgba8[i] != b.rgba8[i] && bad++ == 0)
       first = "pixel " + std::to_string(i / 4 % a.width) + ", " + std::to_string(i / 4 / a.width) + " channel " +
-              std::to_string(i % 4) + ": wrote " + std::to_string(a.rgba[i]) + ", read " + std::to_string(b.rgba[i]);
+              std::to_string(i % 4) + ": wrote " + std::to_string(a.rgba8[i]) + ", read " + std::to_string(b.rgba8[i]);
   return bad;
 }
 
 void expect_round_trip(const std::string& extension) {
   TempDir dir;
-  const Image img = test_image();
+  const PixelImage img = test_image();
   const std::string path = dir.file("round-trip." + extension);
   write_image(img, path);
   ASSERT_TRUE(fs::exists(path));
-  const Image back = read_image(path);
+  const PixelImage back = read_image(path);
   std::string first;
   EXPECT_EQ(count_differences(img, back, first), 0) << extension << ": first difference " << first;
 }
 
 TEST(ImageIo, PngRoundTripIsExact) { expect_round_trip("png"); }
 TEST(ImageIo, TiffRoundTripIsExact) { expect_round_trip("tif"); }
-// OpenEXR stores half or float channels: 8-bit values survive when written as v / 255 and read
-// back rounded (a half has 11 significant bits: 255 * 2^-12 < 0.5).
-TEST(ImageIo, ExrRoundTripIsExact) { expect_round_trip("exr"); }
+
+// A float image (values beyond 1, negative, tiny) survives OpenEXR exactly and stays float.
+TEST(ImageIo, FloatExrRoundTripIsExactAndStaysFloat) {
+  TempDir dir;
+  PixelImage hdr;
+  hdr.width = 5, hdr.height = 3;
+  std::mt19937 rng(31);
+  std::uniform_real_distribution<float> value(-2.0f, 60000.0f);
+  for (int i = 0; i < 5 * 3 * 4; ++i) hdr.rgba32f.push_back(i == 0 ? 1e-30f : value(rng));
+  const std::string path = dir.file("hdr.exr");
+  write_image(hdr, path);
+  const PixelImage back = read_image(path);
+  ASSERT_TRUE(back.is_hdr());
+  EXPECT_TRUE(back.rgba8.empty());
+  ASSERT_EQ(back.width, 5);
+  ASSERT_EQ(back.height, 3);
+  EXPECT_EQ(back.rgba32f, hdr.rgba32f);
+}
+
+// encode_png and read_image(bytes) are the glTF path for embedded textures: exact, and named.
+TEST(ImageIo, PngInMemoryRoundTripIsExact) {
+  const PixelImage img = test_image();
+  const std::vector<uint8_t> png = encode_png(img, "in-memory");
+  ASSERT_GT(png.size(), 8u);
+  EXPECT_EQ(png[1], 'P');
+  const PixelImage back = read_image(png, "in-memory");
+  std::string first;
+  EXPECT_EQ(count_differences(img, back, first), 0) << first;
+  // Cut short, or not an image: one line naming what was read.
+  const std::vector<uint8_t> cut(png.begin(), png.begin() + png.size() / 2);
+  const std::vector<uint8_t> garbage{1, 2, 3, 4, 5, 6, 7, 8, 9};
+  for (const std::vector<uint8_t>& bytes : {cut, garbage}) {
+    try {
+      read_image(bytes, "image 7 'cut'");
+      ADD_FAILURE() << "no exception";
+    } catch (const std::runtime_error& e) {
+      EXPECT_EQ(std::string(e.what()).rfind("image 7 'cut': ", 0), 0u) << e.what();
+      EXPECT_EQ(std::string(e.what()).find('\n'), std::string::npos) << e.what();
+    }
+  }
+}
+
+// A header claiming 20000 x 20000 pixels is refused from the header: the test would need 1.6 GB
+// if the reader allocated first (and the file has no pixels to read anyway).
+TEST(ImageIo, OversizedImagesAreRefusedBeforeAllocation) {
+  TempDir dir;
+  const std::string ppm = dir.file("huge.ppm");
+  std::ofstream(ppm, std::ios::binary) << "P6\n20000 20000\n255\n" << "abc";
+  try {
+    read_image(ppm);
+    ADD_FAILURE() << "no exception";
+  } catch (const std::runtime_error& e) {
+    EXPECT_EQ(std::string(e.what()), ppm + ": 20000x20000 is larger than 16384 on a side");
+  }
+}
 
 // image.hpp: "missing channels: alpha 255, grey replicated". Binary PGM (grey) and PPM (RGB)
 // files, written byte by byte here.
@@ -95,18 +154,18 @@ TEST(ImageIo, ReadingFewerChannelsFillsThemIn) {
   const std::string pgm = dir.file("grey.pgm"), ppm = dir.file("rgb.ppm");
   std::ofstream(pgm, std::ios::binary) << "P5\n" << w << " " << h << "\n255\n" << grey;
   std::ofstream(ppm, std::ios::binary) << "P6\n" << w << " " << h << "\n255\n" << rgb;
-  const Image g = read_image(pgm), c = read_image(ppm);
+  const PixelImage g = read_image(pgm), c = read_image(ppm);
   ASSERT_EQ(g.width, w);
   ASSERT_EQ(g.height, h);
   ASSERT_EQ(c.width, w);
   ASSERT_EQ(c.height, h);
   for (int i = 0; i < w * h; ++i) {
-    const uint8_t* p = g.rgba.data() + 4 * i;
+    const uint8_t* p = g.rgba8.data() + 4 * i;
     EXPECT_EQ(p[0], 17 * i);
     EXPECT_EQ(p[1], 17 * i);
     EXPECT_EQ(p[2], 17 * i);
     EXPECT_EQ(p[3], 255);
-    const uint8_t* q = c.rgba.data() + 4 * i;
+    const uint8_t* q = c.rgba8.data() + 4 * i;
     EXPECT_EQ(q[0], i);
     EXPECT_EQ(q[1], 100 + i);
     EXPECT_EQ(q[2], 200 + i);
@@ -127,7 +186,7 @@ void expect_error_naming(const std::string& path, Fn fn) {
 
 TEST(ImageIo, WriteFailuresNameTheFile) {
   TempDir dir;
-  const Image img = test_image();
+  const PixelImage img = test_image();
   for (const char* ext : {"png", "tif", "exr"}) {
     const std::string missing_dir = dir.file(std::string("no/such/dir/out.") + ext);
     expect_error_naming(missing_dir, [&] { write_image(img, missing_dir); });
@@ -136,7 +195,7 @@ TEST(ImageIo, WriteFailuresNameTheFile) {
   const std::string unknown = dir.file("out.not-an-image-format");
   expect_error_naming(unknown, [&] { write_image(img, unknown); });
   const std::string empty = dir.file("empty.png");
-  expect_error_naming(empty, [&] { write_image(Image{}, empty); });
+  expect_error_naming(empty, [&] { write_image(PixelImage{}, empty); });
   // A directory where the file should be.
   const std::string is_dir = dir.file("dir.png");
   fs::create_directories(is_dir);
@@ -169,4 +228,4 @@ TEST(ImageIo, ReadFailuresNameTheFile) {
 }
 
 }  // namespace
-}  // namespace luxel::rasterizer::test
+}  // namespace luxel::scenes::test

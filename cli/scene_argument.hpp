@@ -1,0 +1,44 @@
+#pragma once
+// `--scene SCENE [--camera N]`, shared by the commands that read a scene, and how they report a
+// scene that cannot be read: one line, exit 2 for an argument that names no scene, 1 for a file
+// that cannot be read.
+
+#include "luxel/scenes/load.hpp"
+
+#include <CLI/CLI.hpp>
+
+#include <iostream>
+#include <optional>
+#include <string>
+
+namespace luxel::cli {
+
+struct SceneArgument {
+  std::string scene;
+  int camera = 0;
+
+  void add_to(CLI::App& cmd) {
+    cmd.add_option("--scene", scene, "Scene: FILE.gltf, FILE.glb or builtin:NAME")->required();
+    cmd.add_option("--camera", camera, "The file's camera to use first (index into its cameras)")
+        ->check(CLI::Range(0, 1 << 20))
+        ->capture_default_str();
+  }
+
+  /// The scene, or nullopt after printing one line and setting `code`.
+  std::optional<scenes::Scene> load(const std::string& command, int& code) const {
+    scenes::GltfImportOptions options;
+    options.camera = camera;
+    try {
+      return scenes::load_scene(scene, options);
+    } catch (const scenes::SceneArgumentError& e) {
+      std::cerr << "luxel " << command << ": --scene " << e.what() << "\n";
+      code = 2;
+    } catch (const std::exception& e) {
+      std::cerr << "luxel " << command << ": " << e.what() << "\n";
+      code = 1;
+    }
+    return std::nullopt;
+  }
+};
+
+}  // namespace luxel::cli

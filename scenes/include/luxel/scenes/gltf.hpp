@@ -1,0 +1,140 @@
+#pragma once
+// glTF 2.0 in and out (.gltf with side files or base64 data URIs, and .glb), through
+// tinygltf 2.7 behind a validation layer of luxel's own.
+//
+// ## Units and axes
+// glTF is in meters, +Y up; a scene is in inches, +Z up (scene.hpp). Import maps a glTF world
+// point (x, y, z) to (x, -z, y) * kInchesPerMeter: the conversion is folded into every node's
+// world matrix, composed in double precision. Export writes the scene's vertex values unchanged
+// and puts the conversion back in one root node, "luxel:source-to-gltf", whose matrix rotates +Z up
+// to +Y up and scales by 1 / kInchesPerMeter, so every glTF viewer sees meters and +Y up.
+// Re-import gives identical vertex bytes: when a primitive's world matrix (the conversion
+// included) is the identity to within 1e-9 per element, as it is under that root node, its
+// vertices are copied bit for bit instead of transformed.
+//
+// ## Geometry
+// - Node hierarchy (matrix or TRS) flattened to world space: positions by the matrix, normals by
+//   its inverse transpose (normalized), tangents' xyz by the matrix (normalized). A mirroring
+//   matrix (negative determinant) reverses each triangle's winding and negates tangent handedness,
+//   so front faces and bitangents stay what the author drew.
+// - Modes: TRIANGLES; TRIANGLE_STRIP and TRIANGLE_FAN converted to lists as the glTF
+//   specification orders them; POINTS, LINES, LINE_LOOP and LINE_STRIP refused.
+// - Indices: UNSIGNED_BYTE widened to 16 bits, UNSIGNED_SHORT and UNSIGNED_INT kept; a
+//   TRIANGLES primitive without indices stays a non-indexed mesh (unless mirroring or flat
+//   normals reorder it; then 0..n-1 in the smallest type that holds them).
+// - Attributes: POSITION, NORMAL, TANGENT, TEXCOORD_0 (uv0), TEXCOORD_1 (uv1, lightmap UVs),
+//   COLOR_0 (VEC3 gets alpha 1), with the component types the specification allows (normalized
+//   unsigned bytes and shorts for TEXCOORD and COLOR), sparse accessors applied.
+// - Without NORMAL, flat normals (each triangle gets its own three vertices), as the specification
+//   asks, except under an unlit material (KHR_materials_unlit, UnlitGeneric), which reads none. Without TANGENT but with normals and uv0, tangents are generated (tangents.hpp).
+// - Each node with a mesh becomes a Model (a VertexLitGeneric object) holding the meshes of its
+//   primitives whose material is VertexLitGeneric; its centroid is the node's
+//   extras.luxel.centroid (written by save_gltf) or else the mean of their world positions. Primitives with other families (LightmappedGeneric, Water, ...) are world geometry.
+// - Skins, morph targets and animations are ignored (the bind pose is drawn).
+//
+// ## Materials: glTF PBR -> Source
+//   baseColorTexture               -> base (sRGB), its texCoord and KHR_texture_transform
+//   baseColorFactor                -> color (rgb linear, a = $alpha)
+//   normalTexture                  -> bump (linear; its `scale` is not read)
+//   roughnessFactor r              -> phong = r < 0.9; phong_exponent = clamp(2 / r^4 - 2, 1, 150)
+//                                     (the Blinn-Phong exponent of GGX alpha = r^2)
+//   metallicFactor m               -> m > 0 and r < 0.5: envmap = nearest_sample,
+//                                     envmap_tint = lerp(0.04, baseColor.rgb, m) * (1 - r)
+//   emissiveFactor x KHR_materials_emissive_strength -> emissive
+//   alphaMode MASK / BLEND, alphaCutoff -> alpha_test / blend (+ translucent), alpha_cutoff
+//   doubleSided                    -> double_sided ($nocull)
+//   KHR_materials_unlit            -> UnlitGeneric
+//   metallicRoughnessTexture, occlusionTexture, emissiveTexture: not read (Source has no slot
+//   that means the same).
+// Then Source parameters in the material's extras override the mapping, so an author can set
+// them in any glTF editor: extras: {"luxel": {"shader": "LightmappedGeneric", "phong": true,
+// "phongexponent": 20, ...}}. The keys are the .vmt names without '$' (lower case), values
+// numbers, booleans, [r, g, b] arrays, or for textures a glTF textureInfo {"index": i,
+// "texCoord": n, "offset": [u, v], "scale": [u, v], "rotation": radians}:
+//   shader: LightmappedGeneric | VertexLitGeneric | UnlitGeneric | Water | Sky
+//   basetexture, bumpmap, detail, envmapmasktexture, phongexponenttexture, normalmap (Water): textures
+//   color [3], alpha, detailscale, detailblendfactor,
+//   envmap: "" | "env_cubemap" (nearest sample), envmapmask: "" | "texture" | "basealpha" | "normalalpha",
+//   envmaptint [3], envmapcontrast, envmapsaturation, fresnelreflection,
+//   phong, phongexponent, phongboost, phongfresnelranges [3], phongtint [3], basemapalphaphongmask,
+//   rimlight, rimlightexponent, rimlightboost, rimmask, halflambert, heroboost,
+//   selfillum, selfillumtint [3], emissive [3],
+//   alphatestreference, translucent, nocull (alpha test and blending themselves are glTF's alphaMode),
+//   scroll1 [2], reflectamount, refractamount, reflecttint [3], refracttint [3],
+//   fogcolor [3], fogstart, fogend (Water).
+// Export writes every one of them, so a re-import gives the same Source material.
+//
+// ## The scene's own Source data: the glTF scene's extras.luxel
+// Positions in Source inches, +Z up (not glTF's meters: only luxel reads them):
+//   background [3], fog {mode: none|range|height, color [3], start, end, maxdensity, waterz},
+//   exposure {minscale, maxscale, rate, percenttarget, percentbright, bloomscale},
+//   cubemapsamples [{position [3], size}], colorcorrections [{lut, position [3], minfalloff,
+//   maxfalloff, maxweight}], irradiancevolume {min [3], max [3], spacing [3], counts [3]} (its
+//   baked cubes are not written), camerapath [{time, camera {position, target, up [3], fov, near, far}}].
+//
+// ## Lights (KHR_lights_punctual)
+// glTF's point and spot lights fall off as intensity / d^2, intensity in candela, d in meters;
+// Source's as color / (constant + linear d + quadratic d^2), d in inches. With d_m = d_in / k
+// (k = kInchesPerMeter), I / d_m^2 = I / (d_in^2 / k^2), so a light becomes
+//   color = glTF color x intensity, constant = linear = 0, quadratic = 1 / k^2 (0.00064516),
+// which is exact. Directional lights (lux) become color = color x intensity without falloff.
+// `range` (meters) becomes Light::range (inches): Source cuts the light off there, where glTF
+// recommends a smooth window towards it; that window is not modelled. Spot cone angles are kept
+// (half-angles). Export inverts this; a light with constant or linear terms is matched at
+// 100 inches, where its intensity is the same.
+//
+// ## Cameras
+// All cameras placed by nodes are imported; the one asked for (the first by default) is
+// Scene::cameras[0]. Without any, a camera framing bounds_of(scene) is added, and without any
+// light, a key and a fill directional light, so every asset renders to something visible.
+//
+// ## Errors
+// Every problem throws GltfError whose what() is one line "FILE: problem". Before any data is
+// read, luxel checks in 64-bit arithmetic that every accessor (and sparse part) lies within its
+// buffer view and buffer, the component types and types each attribute may have, byte strides,
+// index values against the vertex count, the limits below, that URIs stay in the file's folder
+// (no "../", no absolute paths or schemes), that images exist and decode, that positions are
+// finite; then scenes::validate().
+
+#include "luxel/scenes/scene.hpp"
+
+#include <cstdint>
+#include <stdexcept>
+#include <string>
+
+namespace luxel::scenes {
+
+/// A glTF file that cannot be read: what() is one line naming the file and the problem.
+struct GltfError : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
+/// Limits checked before anything is allocated for the data they count.
+inline constexpr uint64_t kMaxGltfVertices = uint64_t{1} << 24;   ///< per accessor and primitive
+inline constexpr uint64_t kMaxGltfIndices = uint64_t{1} << 26;    ///< per primitive
+inline constexpr uint64_t kMaxGltfSceneVertices = uint64_t{1} << 25;  ///< summed over the flattened scene
+inline constexpr uint64_t kMaxGltfSceneIndices = uint64_t{1} << 27;   ///< triangle corners, summed likewise
+inline constexpr int kMaxGltfNodeDepth = 256;
+
+struct GltfImportOptions {
+  int camera = 0;                   ///< the glTF camera (index into its `cameras`) made Scene::cameras[0]
+  bool default_camera = true;       ///< add a framing camera when the file has none
+  bool default_lights = true;       ///< add a key and a fill light when the file has none
+  bool generate_tangents = true;    ///< MikkTSpace tangents where TANGENT is missing
+};
+
+/// Reads a .gltf or .glb file (told apart by its first bytes). Scene::name is `path`.
+Scene load_gltf(const std::string& path, const GltfImportOptions& options = {});
+
+/// Writes the scene as .glb (when `path` ends in .glb) or as one .gltf with base64-embedded
+/// buffers. Writes positions, normals, tangents, uv0, uv1, colors (float) and indices, POSITION
+/// min/max, 8-bit textures as embedded PNG with their samplers, lights (KHR_lights_punctual),
+/// cameras, models as nodes, every material with its Source
+/// parameters in extras (see above), the scene's Source data in the glTF scene's extras.
+/// Not written: float (HDR) and cube textures (glTF has no such images; a material whose env map
+/// is a texture then asks for the nearest sample), so neither the sky nor baked lightmaps, cube
+/// maps and ambient cubes. Meshes without vertices or triangles are left out. Throws GltfError
+/// naming the file.
+void save_gltf(const Scene& scene, const std::string& path);
+
+}  // namespace luxel::scenes

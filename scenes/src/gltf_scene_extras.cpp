@@ -1,0 +1,157 @@
+#include "gltf_scene_extras.hpp"
+
+#include "gltf_values.hpp"
+
+#include <array>
+#include <utility>
+
+namespace luxel::scenes::gltf {
+
+namespace {
+
+using tinygltf::Value;
+
+constexpr std::array<std::pair<FogMode, const char*>, 3> kFogModes = {{{FogMode::none, "none"}, {FogMode::range, "range"}, {FogMode::height, "height"}}};
+
+Value camera_value(const Camera& c) {
+  Value::Object o;
+  o["position"] = floats(c.position);
+  o["target"] = floats(c.target);
+  o["up"] = floats(c.up);
+  o["fov"] = Value(double(c.vertical_fov));
+  o["near"] = Value(double(c.near_plane));
+  o["far"] = Value(double(c.far_plane));
+  return Value(std::move(o));
+}
+
+void read_camera(const Value& v, Camera& c) {
+  read(v.Get("position"), c.position);
+  read(v.Get("target"), c.target);
+  read(v.Get("up"), c.up);
+  read(v.Get("fov"), c.vertical_fov);
+  read(v.Get("near"), c.near_plane);
+  read(v.Get("far"), c.far_plane);
+}
+
+}  // namespace
+
+Value scene_extras(const Scene& s) {
+  Value::Object x;
+  x["background"] = floats(s.background);
+  Value::Object fog;
+  for (const auto& [mode, name] : kFogModes)
+    if (mode == s.fog.mode) fog["mode"] = Value(std::string(name));
+  fog["color"] = floats(s.fog.color);
+  fog["start"] = Value(double(s.fog.start));
+  fog["end"] = Value(double(s.fog.end));
+  fog["maxdensity"] = Value(double(s.fog.max_density));
+  fog["waterz"] = Value(double(s.fog.water_z));
+  x["fog"] = Value(std::move(fog));
+  Value::Object e;
+  e["minscale"] = Value(double(s.exposure.min_scale));
+  e["maxscale"] = Value(double(s.exposure.max_scale));
+  e["rate"] = Value(double(s.exposure.rate));
+  e["percenttarget"] = Value(double(s.exposure.percent_target));
+  e["percentbright"] = Value(double(s.exposure.percent_bright));
+  e["bloomscale"] = Value(double(s.exposure.bloom_scale));
+  x["exposure"] = Value(std::move(e));
+  Value::Array samples;
+  for (const CubemapSample& c : s.cubemap_samples) {
+    Value::Object o;
+    o["position"] = floats(c.position);
+    o["size"] = Value(c.size);
+    samples.emplace_back(std::move(o));
+  }
+  x["cubemapsamples"] = Value(std::move(samples));
+  Value::Array corrections;
+  for (const ColorCorrection& c : s.color_corrections) {
+    Value::Object o;
+    o["lut"] = Value(c.lut);
+    o["position"] = floats(c.position);
+    o["minfalloff"] = Value(double(c.min_falloff));
+    o["maxfalloff"] = Value(double(c.max_falloff));
+    o["maxweight"] = Value(double(c.max_weight));
+    corrections.emplace_back(std::move(o));
+  }
+  x["colorcorrections"] = Value(std::move(corrections));
+  if (s.irradiance_volume) {
+    Value::Object v;
+    v["min"] = floats(s.irradiance_volume->min);
+    v["max"] = floats(s.irradiance_volume->max);
+    v["spacing"] = floats(s.irradiance_volume->spacing);
+    v["counts"] = floats(glm::vec3(s.irradiance_volume->counts));
+    x["irradiancevolume"] = Value(std::move(v));
+  }
+  Value::Array path;
+  for (const CameraKey& k : s.camera_path) {
+    Value::Object o;
+    o["time"] = Value(double(k.time));
+    o["camera"] = camera_value(k.camera);
+    path.emplace_back(std::move(o));
+  }
+  x["camerapath"] = Value(std::move(path));
+  Value::Object extras;
+  extras["luxel"] = Value(std::move(x));
+  return Value(std::move(extras));
+}
+
+void read_scene_extras(const Value& extras, Scene& s) {
+  const Value& x = extras.Get("luxel");
+  if (!x.IsObject()) return;
+  read(x.Get("background"), s.background);
+  if (const Value& fog = x.Get("fog"); fog.IsObject()) {
+    if (fog.Get("mode").IsString())
+      for (const auto& [mode, name] : kFogModes)
+        if (fog.Get("mode").Get<std::string>() == name) s.fog.mode = mode;
+    read(fog.Get("color"), s.fog.color);
+    read(fog.Get("start"), s.fog.start);
+    read(fog.Get("end"), s.fog.end);
+    read(fog.Get("maxdensity"), s.fog.max_density);
+    read(fog.Get("waterz"), s.fog.water_z);
+  }
+  if (const Value& e = x.Get("exposure"); e.IsObject()) {
+    read(e.Get("minscale"), s.exposure.min_scale);
+    read(e.Get("maxscale"), s.exposure.max_scale);
+    read(e.Get("rate"), s.exposure.rate);
+    read(e.Get("percenttarget"), s.exposure.percent_target);
+    read(e.Get("percentbright"), s.exposure.percent_bright);
+    read(e.Get("bloomscale"), s.exposure.bloom_scale);
+  }
+  const Value& samples = x.Get("cubemapsamples");
+  for (size_t i = 0; samples.IsArray() && i < samples.ArrayLen(); ++i) {
+    CubemapSample c;
+    read(samples.Get(int(i)).Get("position"), c.position);
+    read(samples.Get(int(i)).Get("size"), c.size);
+    s.cubemap_samples.push_back(c);
+  }
+  const Value& corrections = x.Get("colorcorrections");
+  for (size_t i = 0; corrections.IsArray() && i < corrections.ArrayLen(); ++i) {
+    const Value& o = corrections.Get(int(i));
+    ColorCorrection c;
+    if (o.Get("lut").IsString()) c.lut = o.Get("lut").Get<std::string>();
+    read(o.Get("position"), c.position);
+    read(o.Get("minfalloff"), c.min_falloff);
+    read(o.Get("maxfalloff"), c.max_falloff);
+    read(o.Get("maxweight"), c.max_weight);
+    s.color_corrections.push_back(c);
+  }
+  if (const Value& v = x.Get("irradiancevolume"); v.IsObject()) {
+    IrradianceVolume volume;
+    read(v.Get("min"), volume.min);
+    read(v.Get("max"), volume.max);
+    read(v.Get("spacing"), volume.spacing);
+    glm::vec3 counts(0.0f);
+    read(v.Get("counts"), counts);
+    volume.counts = glm::ivec3(counts);
+    s.irradiance_volume = volume;
+  }
+  const Value& path = x.Get("camerapath");
+  for (size_t i = 0; path.IsArray() && i < path.ArrayLen(); ++i) {
+    CameraKey k;
+    read(path.Get(int(i)).Get("time"), k.time);
+    read_camera(path.Get(int(i)).Get("camera"), k.camera);
+    s.camera_path.push_back(k);
+  }
+}
+
+}  // namespace luxel::scenes::gltf

@@ -1,0 +1,150 @@
+#include "luxel/scenes/image_io.hpp"
+
+#include <OpenImageIO/filesystem.h>
+#include <OpenImageIO/imageio.h>
+
+#include <algorithm>
+#include <stdexcept>
+
+namespace luxel::scenes {
+
+namespace {
+
+/// OpenImageIO's messages can span lines; ours are one line.
+std::string one_line(std::string s) {
+  std::replace(s.begin(), s.end(), '\n', ' ');
+  while (!s.empty() && s.back() == ' ') s.pop_back();
+  return s.empty() ? "unknown OpenImageIO error" : s;
+}
+
+[[noreturn]] void fail(const std::string& name, const std::string& what) {
+  throw std::runtime_error(name + ": " + one_line(what));
+}
+
+bool is_float(OIIO::TypeDesc t) {
+  return t.basetype == OIIO::TypeDesc::FLOAT || t.basetype == OIIO::TypeDesc::HALF ||
+         t.basetype == OIIO::TypeDesc::DOUBLE;
+}
+
+/// 4 channels from n: grey replicated, alpha `one` where the file has none.
+template <class T>
+std::vector<T> expand_to_rgba(const std::vector<T>& raw, size_t pixels, int n, T one) {
+  std::vector<T> out(pixels * 4);
+  for (size_t i = 0; i < pixels; ++i) {
+    const T* p = &raw[i * n];
+    T* q = &out[i * 4];
+    q[0] = p[0];
+    q[1] = n >= 3 ? p[1] : p[0];
+    q[2] = n >= 3 ? p[2] : p[0];
+    q[3] = n >= 4 ? p[3] : (n == 2 ? p[1] : one);
+  }
+  return out;
+}
+
+PixelImage read_opened(OIIO::ImageInput& in, const std::string& name) {
+  const OIIO::ImageSpec& spec = in.spec();
+  if (spec.width <= 0 || spec.height <= 0 || spec.nchannels <= 0)
+    fail(name, "the image has no pixels");
+  if (spec.width > kMaxImageSide || spec.height > kMaxImageSide)
+    fail(name, std::to_string(spec.width) + "x" + std::to_string(spec.height) + " is larger than " +
+                   std::to_string(kMaxImageSide) + " on a side");
+  // Only the channels kept are read, so a file claiming thousands of channels allocates four.
+  const int n = std::min(spec.nchannels, 4);
+  const size_t pixels = static_cast<size_t>(spec.width) * static_cast<size_t>(spec.height);
+  PixelImage image;
+  image.width = spec.width;
+  image.height = spec.height;
+  if (is_float(spec.format)) {
+    std::vector<float> raw(pixels * n);
+    if (!in.read_image(0, 0, 0, n, OIIO::TypeDesc::FLOAT, raw.data())) fail(name, in.geterror());
+    image.rgba32f = expand_to_rgba(raw, pixels, n, 1.0f);
+  } else {
+    std::vector<uint8_t> raw(pixels * n);
+    if (!in.read_image(0, 0, 0, n, OIIO::TypeDesc::UINT8, raw.data())) fail(name, in.geterror());
+    image.rgba8 = expand_to_rgba(raw, pixels, n, uint8_t{255});
+  }
+  return image;
+}
+
+/// Straight alpha in and out: without it OIIO's PNG reader premultiplies and its writer divides
+/// color by alpha, losing it where alpha is 0.
+OIIO::ImageSpec straight_alpha_config() {
+  OIIO::ImageSpec config;
+  config.attribute("oiio:UnassociatedAlpha", 1);
+  return config;
+}
+
+void write_pixels(int width, int height, OIIO::TypeDesc type, const void* pixels, const std::string& path) {
+  if (width <= 0 || height <= 0) fail(path, "cannot write an empty image");
+  auto out = OIIO::ImageOutput::create(path);
+  if (!out) fail(path, "cannot write this file type (" + OIIO::geterror() + ")");
+  OIIO::ImageSpec spec(width, height, 4, type);
+  spec.attribute("oiio:UnassociatedAlpha", 1);
+  if (!out->open(path, spec)) fail(path, out->geterror());
+  if (!out->write_image(type, pixels)) fail(path, out->geterror());
+  if (!out->close()) fail(path, out->geterror());
+}
+
+void check_layout(const PixelImage& image, const std::string& name) {
+  const size_t texels = static_cast<size_t>(std::max(image.width, 0)) * static_cast<size_t>(std::max(image.height, 0)) * 4;
+  if (image.width <= 0 || image.height <= 0) fail(name, "cannot write an empty image");
+  if (image.rgba8.empty() == image.rgba32f.empty()) fail(name, "the image must hold either 8-bit or float texels");
+  if ((image.is_hdr() ? image.rgba32f.size() : image.rgba8.size()) != texels)
+    fail(name, "the image holds the wrong number of texels for its size");
+}
+
+}  // namespace
+
+PixelImage read_image(const std::string& path) {
+  const OIIO::ImageSpec config = straight_alpha_config();
+  auto in = OIIO::ImageInput::open(path, &config);
+  if (!in) fail(path, OIIO::geterror());
+  return read_opened(*in, path);
+}
+
+PixelImage read_image(std::span<const uint8_t> bytes, const std::string& name) {
+  // In memory there is no extension to pick a reader by: tell the formats glTF allows by their
+  // signatures.
+  static const uint8_t kPng[] = {0x89, 'P', 'N', 'G', 0x0d, 0x0a, 0x1a, 0x0a};
+  const char* as = nullptr;
+  if (bytes.size() >= 8 && std::equal(kPng, kPng + 8, bytes.begin())) as = "memory.png";
+  else if (bytes.size() >= 3 && bytes[0] == 0xff && bytes[1] == 0xd8 && bytes[2] == 0xff) as = "memory.jpg";
+  if (!as) fail(name, "not a PNG or JPEG image");
+  OIIO::Filesystem::IOMemReader reader(bytes.data(), bytes.size());
+  // OIIO 2.4 ignores open()'s ioproxy argument when a config is given: pass it in the config.
+  OIIO::ImageSpec config = straight_alpha_config();
+  OIIO::Filesystem::IOProxy* proxy = &reader;
+  config.attribute("oiio:ioproxy", OIIO::TypeDesc::PTR, &proxy);
+  auto in = OIIO::ImageInput::open(as, &config);
+  if (!in) fail(name, OIIO::geterror());
+  return read_opened(*in, name);
+}
+
+void write_image(const PixelImage& image, const std::string& path) {
+  check_layout(image, path);
+  if (image.is_hdr()) write_pixels(image.width, image.height, OIIO::TypeDesc::FLOAT, image.rgba32f.data(), path);
+  else write_pixels(image.width, image.height, OIIO::TypeDesc::UINT8, image.rgba8.data(), path);
+}
+
+void write_image(int width, int height, std::span<const uint8_t> rgba8, const std::string& path) {
+  if (width > 0 && height > 0 && rgba8.size() != static_cast<size_t>(width) * static_cast<size_t>(height) * 4)
+    fail(path, "the image holds the wrong number of bytes for its size");
+  write_pixels(width, height, OIIO::TypeDesc::UINT8, rgba8.data(), path);
+}
+
+std::vector<uint8_t> encode_png(const PixelImage& image, const std::string& name) {
+  check_layout(image, name);
+  if (image.is_hdr()) fail(name, "a float image cannot be stored as PNG");
+  std::vector<uint8_t> bytes;
+  OIIO::Filesystem::IOVecOutput writer(bytes);
+  auto out = OIIO::ImageOutput::create("memory.png");
+  if (!out || !out->set_ioproxy(&writer)) fail(name, OIIO::geterror());
+  OIIO::ImageSpec spec(image.width, image.height, 4, OIIO::TypeDesc::UINT8);
+  spec.attribute("oiio:UnassociatedAlpha", 1);
+  if (!out->open("memory.png", spec)) fail(name, out->geterror());
+  if (!out->write_image(OIIO::TypeDesc::UINT8, image.rgba8.data())) fail(name, out->geterror());
+  if (!out->close()) fail(name, out->geterror());
+  return bytes;
+}
+
+}  // namespace luxel::scenes

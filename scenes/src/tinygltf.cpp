@@ -1,0 +1,3 @@
+// tinygltf's implementation, compiled once (with the macros of tinygltf.hpp).
+#define TINYGLTF_IMPLEMENTATION
+#include "tinygltf.hpp"
