@@ -201,6 +201,21 @@ std::span<const uint8_t> Accessors::view(int index, const std::string& where) co
   return std::span<const uint8_t>(model_.buffers[size_t(v.buffer)].data).subspan(v.byteOffset, v.byteLength);
 }
 
+template <class Write>
+void Accessors::for_each_sparse(const tinygltf::Accessor& a, const std::string& what, size_t value_size, Write write) const {
+  const auto& s = a.sparse;
+  const std::span<const uint8_t> ind = view(s.indices.bufferView, what).subspan(size_t(s.indices.byteOffset));
+  const std::span<const uint8_t> val = view(s.values.bufferView, what).subspan(size_t(s.values.byteOffset));
+  const size_t isize = size_t(component_size(s.indices.componentType));
+  for (size_t k = 0; k < size_t(s.count); ++k) {
+    const uint32_t target = unsigned_value(ind.data() + k * isize, s.indices.componentType);
+    if (target >= a.count)
+      fail(what + " sparse index " + std::to_string(k) + " = " + std::to_string(target) + " is beyond its " +
+           std::to_string(a.count) + " elements");
+    write(target, val.data() + k * value_size);
+  }
+}
+
 Floats Accessors::attribute(int index, const AttributeRule& rule, const std::string& where) const {
   const tinygltf::Accessor& a = accessor(index, where);
   const std::string what = where + " " + rule.name + " (accessor " + std::to_string(index) + ")";
@@ -229,19 +244,8 @@ Floats Accessors::attribute(int index, const AttributeRule& rule, const std::str
     const size_t stride = model_.bufferViews[size_t(a.bufferView)].byteStride ? model_.bufferViews[size_t(a.bufferView)].byteStride : element;
     for (size_t i = 0; i < a.count; ++i) read_element(bytes.data() + a.byteOffset + i * stride, i);
   }
-  if (a.sparse.isSparse) {
-    const auto& s = a.sparse;
-    const std::span<const uint8_t> ind = view(s.indices.bufferView, what).subspan(size_t(s.indices.byteOffset));
-    const std::span<const uint8_t> val = view(s.values.bufferView, what).subspan(size_t(s.values.byteOffset));
-    const size_t isize = size_t(component_size(s.indices.componentType));
-    for (size_t k = 0; k < size_t(s.count); ++k) {
-      const uint32_t target = unsigned_value(ind.data() + k * isize, s.indices.componentType);
-      if (target >= a.count)
-        fail(what + " sparse index " + std::to_string(k) + " = " + std::to_string(target) + " is beyond its " +
-             std::to_string(a.count) + " elements");
-      read_element(val.data() + k * element, target);
-    }
-  }
+  if (a.sparse.isSparse)
+    for_each_sparse(a, what, element, [&](uint32_t target, const uint8_t* value) { read_element(value, target); });
   return out;
 }
 
@@ -259,19 +263,9 @@ std::vector<uint32_t> Accessors::indices(int index, const std::string& where, in
     const size_t stride = model_.bufferViews[size_t(a.bufferView)].byteStride ? model_.bufferViews[size_t(a.bufferView)].byteStride : csize;
     for (size_t i = 0; i < a.count; ++i) out[i] = unsigned_value(bytes.data() + a.byteOffset + i * stride, a.componentType);
   }
-  if (a.sparse.isSparse) {
-    const auto& s = a.sparse;
-    const std::span<const uint8_t> ind = view(s.indices.bufferView, what).subspan(size_t(s.indices.byteOffset));
-    const std::span<const uint8_t> val = view(s.values.bufferView, what).subspan(size_t(s.values.byteOffset));
-    const size_t isize = size_t(component_size(s.indices.componentType));
-    for (size_t k = 0; k < size_t(s.count); ++k) {
-      const uint32_t target = unsigned_value(ind.data() + k * isize, s.indices.componentType);
-      if (target >= a.count)
-        fail(what + " sparse index " + std::to_string(k) + " = " + std::to_string(target) + " is beyond its " +
-             std::to_string(a.count) + " elements");
-      out[target] = unsigned_value(val.data() + k * csize, a.componentType);
-    }
-  }
+  if (a.sparse.isSparse)
+    for_each_sparse(a, what, csize,
+                    [&](uint32_t target, const uint8_t* value) { out[target] = unsigned_value(value, a.componentType); });
   return out;
 }
 

@@ -48,6 +48,9 @@ class Accessors {
 
  private:
   void check_view(size_t index) const;
+  /// Calls write(element, value bytes) for each of a sparse accessor's replaced elements.
+  template <class Write>
+  void for_each_sparse(const tinygltf::Accessor& a, const std::string& what, size_t value_size, Write write) const;
   void check_accessor(size_t index) const;
   const tinygltf::Accessor& accessor(int index, const std::string& where) const;
 

@@ -192,7 +192,9 @@ TEST(GltfAssets, MeshPrimitiveModes) {
     ASSERT_EQ(s.meshes.size(), 1u) << name;
     const Mesh& m = s.meshes[0];
     ASSERT_EQ(m.triangle_count(), 2u) << name;
-    if (i == 4) EXPECT_FALSE(m.indexed()) << name << ": TRIANGLES without indices stays a non-indexed list";
+    if (i == 4) {
+      EXPECT_FALSE(m.indexed()) << name << ": TRIANGLES without indices stays a non-indexed list";
+    }
     double area = 0.0;
     for (size_t t = 0; t < 6; t += 3) {
       const glm::dvec3 a(m.positions[m.vertex_of_corner(t)]), b(m.positions[m.vertex_of_corner(t + 1)]), c(m.positions[m.vertex_of_corner(t + 2)]);

@@ -4,6 +4,7 @@
 // test), oversized images refused before allocation, and failures that name the file.
 
 #include "luxel/scenes/image_io.hpp"
+#include "temp_dir.hpp"
 
 #include <gtest/gtest.h>
 
@@ -18,26 +19,6 @@ namespace luxel::scenes::test {
 namespace {
 
 namespace fs = std::filesystem;
-
-/// A fresh directory under the system's temporary directory, removed with everything in it.
-class TempDir {
- public:
-  TempDir() {
-    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-    path_ = fs::temp_directory_path() /
-            ("luxel-" + std::string(info->name()) + "-" + std::to_string(::getpid()));
-    fs::remove_all(path_);
-    fs::create_directories(path_);
-  }
-  ~TempDir() {
-    std::error_code ec;
-    fs::remove_all(path_, ec);
-  }
-  std::string file(const std::string& name) const { return (path_ / name).string(); }
-
- private:
-  fs::path path_;
-};
 
 /// Every byte value in every channel, alpha included (0 and partial alpha catch a writer or
 /// reader that premultiplies), in an odd size (no row padding hides an off-by-one).
