@@ -4,6 +4,7 @@
 
 #include "luxel/rasterizer/draw.hpp"
 #include "luxel/rasterizer/texture.hpp"
+#include "luxel/scenes/scene.hpp"
 
 #include <glm/mat4x4.hpp>
 #include <glm/vec2.hpp>
@@ -41,16 +42,6 @@ struct UnlitPixel {
   }
 };
 
-/// KHR_texture_transform's order: scale, then rotate counter-clockwise, then offset.
-struct UvTransform {
-  glm::vec2 offset{0.0f}, scale{1.0f};
-  float cos_r = 1.0f, sin_r = 0.0f;
-  glm::vec2 operator()(glm::vec2 uv) const {
-    const glm::vec2 s = uv * scale;
-    return offset + glm::vec2(cos_r * s.x - sin_r * s.y, sin_r * s.x + cos_r * s.y);
-  }
-};
-
 /// Texture coordinates, world normal and vertex color x material color, packed in two
 /// varyings: (u, v, nx, ny), (nz, r, g, b).
 struct PlainVertex {
@@ -60,7 +51,7 @@ struct PlainVertex {
   const glm::vec2* uvs;      ///< or null: (0, 0)
   const glm::vec4* colors;   ///< or null: white
   glm::vec4 color;
-  UvTransform uv_transform;
+  scenes::UvTransform uv_transform;
   glm::mat4 view_projection;
   void operator()(uint32_t i, rasterizer::VertexOutput<2>& out) const {
     out.position = view_projection * glm::vec4(positions[i], 1.0f);

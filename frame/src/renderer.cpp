@@ -167,7 +167,7 @@ Renderer::Renderer(const scenes::Scene& scene, const FrameSettings& settings)
       v.uvs = data_or_null(m.base.uv_set == 1 ? mesh.uv1 : mesh.uv0);
       v.colors = data_or_null(mesh.colors);
       v.color = m.color;
-      v.uv_transform = {m.base.offset, m.base.scale, std::cos(m.base.rotation), std::sin(m.base.rotation)};
+      v.uv_transform = scenes::UvTransform::of(m.base);
       v.view_projection = vp;
       d.vertex = v;
       const GpuTexture& t = m.base.bound() ? st.textures[m.base.texture] : st.white;

@@ -9,6 +9,10 @@
 
 namespace luxel::scenes {
 
+UvTransform UvTransform::of(const TextureRef& ref) {
+  return {ref.offset, ref.scale, std::cos(ref.rotation), std::sin(ref.rotation)};
+}
+
 size_t Mesh::index_count() const {
   return std::visit([](const auto& v) { return v.size(); }, indices);
 }

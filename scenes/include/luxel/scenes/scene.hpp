@@ -59,13 +59,25 @@ struct Texture {
   bool mipmaps = true;              ///< trilinear; false: the base level only
 };
 
-/// A material's reference to a texture, with the UV set it reads and KHR_texture_transform.
+/// A material's reference to a texture, with the UV set it reads and KHR_texture_transform:
+/// uv' = offset + R (scale * uv), R = [cos r, sin r; -sin r, cos r] (the extension's matrix).
 struct TextureRef {
   int texture = -1;                 ///< index into Scene::textures; -1 = none
   int uv_set = 0;                   ///< 0 or 1
   glm::vec2 offset{0.0f}, scale{1.0f};
-  float rotation = 0.0f;            ///< radians, counter-clockwise in UV (the extension's convention)
+  float rotation = 0.0f;            ///< radians, r above
   bool bound() const { return texture >= 0; }
+};
+
+/// A TextureRef's transform with its sine and cosine taken once, for applying it per vertex.
+struct UvTransform {
+  glm::vec2 offset{0.0f}, scale{1.0f};
+  float cos_r = 1.0f, sin_r = 0.0f;
+  static UvTransform of(const TextureRef& ref);
+  glm::vec2 operator()(glm::vec2 uv) const {
+    const glm::vec2 s = uv * scale;
+    return offset + glm::vec2(cos_r * s.x + sin_r * s.y, cos_r * s.y - sin_r * s.x);
+  }
 };
 
 // --- Materials -----------------------------------------------------------------------------------
