@@ -90,10 +90,14 @@ void check_mesh(const Scene& scene, const Mesh& m, size_t i) {
     fail(scene, where + " is not indexed and has " + std::to_string(n) + " vertices, not a multiple of 3");
   const size_t count = m.index_count();
   if (count % 3 != 0) fail(scene, where + " has " + std::to_string(count) + " indices, not a multiple of 3");
-  for (size_t k = 0; k < count; ++k)
-    if (m.vertex_of_corner(k) >= n)
-      fail(scene, where + " index " + std::to_string(k) + " = " + std::to_string(m.vertex_of_corner(k)) + " is beyond its " +
-                      std::to_string(n) + " vertices");
+  std::visit(
+      [&](const auto& indices) {  // one visit for the whole array, not one per index
+        for (size_t k = 0; k < indices.size(); ++k)
+          if (indices[k] >= n)
+            fail(scene, where + " index " + std::to_string(k) + " = " + std::to_string(indices[k]) + " is beyond its " +
+                            std::to_string(n) + " vertices");
+      },
+      m.indices);
 }
 
 }  // namespace

@@ -97,11 +97,12 @@ void generate(Mesh& mesh, std::vector<uint32_t>& indices) {
 void generate_tangents(Mesh& mesh) {
   if (mesh.normals.size() != mesh.vertex_count() || mesh.uv0.size() != mesh.vertex_count())
     throw std::invalid_argument("mesh '" + mesh.name + "': tangents need a normal and a uv0 per vertex");
-  for (size_t k = 0; k < mesh.index_count(); ++k)
-    if (mesh.vertex_of_corner(k) >= mesh.vertex_count())
-      throw std::invalid_argument("mesh '" + mesh.name + "': index " + std::to_string(k) + " is beyond its vertices");
   std::vector<uint32_t> indices(3 * mesh.triangle_count());
-  for (size_t k = 0; k < indices.size(); ++k) indices[k] = mesh.vertex_of_corner(k);
+  for (size_t k = 0; k < indices.size(); ++k) {
+    indices[k] = mesh.vertex_of_corner(k);
+    if (indices[k] >= mesh.vertex_count())
+      throw std::invalid_argument("mesh '" + mesh.name + "': index " + std::to_string(k) + " is beyond its vertices");
+  }
   generate(mesh, indices);
   // Split vertices may need wider indices than the mesh had.
   if (std::holds_alternative<std::vector<uint16_t>>(mesh.indices) && mesh.vertex_count() <= 65536)
