@@ -23,6 +23,11 @@
 //   mispredicts often, and a misprediction costs more than such a shader. Its draws also test
 //   depth with the compare function compiled in (FastPath::FixedDepthPaths), which pays where
 //   per-stamp overheads weigh as much as the shading and costs compile time everywhere else.
+//   Only kTrivial functors are inlined into a tile rasterizer of their own; every other functor
+//   is called through a pointer from tile rasterizers that the library compiles once per varying
+//   count (detail/called_shader.hpp): a draw with a new shader compiles its vertex functor's front
+//   end and nothing of the tile loop. Either way the draw keeps a copy of the pixel functor until
+//   it has run (at the context's next flush).
 //
 // The pipeline: vertex functor -> clip (near, far, guard band) -> snap to 1/256 pixel -> cull ->
 // setup -> bin into tiles -> per tile, in submission order: coverage per sample, early depth /

@@ -2,6 +2,7 @@
 // Private: the body of draw(). Templated on the shader functors so that the per-stamp loop
 // inlines them; everything that does not depend on them lives in .cpp files.
 
+#include "luxel/rasterizer/detail/called_shader.hpp"
 #include "luxel/rasterizer/detail/command_queue.hpp"
 #include "luxel/rasterizer/detail/output_merger.hpp"
 #include "luxel/rasterizer/detail/triangle_setup.hpp"
@@ -636,7 +637,7 @@ void TileRasterizer<PS, N, kPath, S>::shade_stamp(const TriangleSetup& t, int px
     for (int s = 0; s < S; ++s) {
       coverage[s] &= keep;
       if (depth_ && simd::sign_bits(coverage[s]))
-        coverage[s] = depth_stencil_test(t, stamp_z, stamp, s, coverage[s], PS::kWritesDepth ? &out.depth : nullptr);
+        coverage[s] = depth_stencil_test(t, stamp_z, stamp, s, coverage[s], writes_depth(ps_) ? &out.depth : nullptr);
       live |= coverage[s];
     }
     if (!simd::sign_bits(live)) return;
@@ -756,7 +757,7 @@ class DrawCommand final : public Command {
     const CompareFunc depth_func = state_.depth_stencil.depth_func;
     const bool depth_only = kTrivialPixelFunctor<PS> && plan_.depth_stencil && plan_.depth_test && !plan_.stencil &&
                             plan_.constants.fast_paths.on(FastPath::FixedDepthPaths);
-    depth_path_ = PS::kCanDiscard || PS::kWritesDepth || plan_.alpha_test              ? DepthPath::Late
+    depth_path_ = can_discard(ps_) || writes_depth(ps_) || plan_.alpha_test          ? DepthPath::Late
                    : depth_only && depth_func == CompareFunc::Less      ? DepthPath::EarlyLess
                    : depth_only && depth_func == CompareFunc::LessEqual ? DepthPath::EarlyLessEqual
                                                                         : DepthPath::Early;
@@ -779,7 +780,7 @@ class DrawCommand final : public Command {
   template <int S>
   void execute_with(int tile, TileCounters& counters) {
     const bool count = query_slot_ >= 0;
-    if constexpr (PS::kCanDiscard || PS::kWritesDepth) {  // only the late path: instantiate no other
+    if constexpr ((PS::kCanDiscard || PS::kWritesDepth) && !kCalledPixelShader<PS>) {  // only the late path
       run(TileRasterizer<PS, N, DepthPath::Late, S>(plan_, ps_, tile, count), tile, counters);
     } else if constexpr (!kTrivialPixelFunctor<PS>) {  // no fixed paths (DepthPath)
       if (depth_path_ == DepthPath::Late)
@@ -820,6 +821,21 @@ class DrawCommand final : public Command {
   DepthPath depth_path_;
 };
 
+/// What a draw records of its pixel functor: a kTrivial one as it is, inlined into its own tile
+/// rasterizers, any other behind a pointer (called_shader.hpp).
+template <int N, class PS>
+auto recorded_pixel_shader(const PS& ps) {
+  if constexpr (kTrivialPixelFunctor<PS>) return ps;
+  else return CalledPixelShader<N>::of(ps);
+}
+
+template <int N, class PS>
+std::unique_ptr<Command> make_draw_command(const DrawPlan& plan, const PipelineState& state, const PS& ps,
+                                           std::vector<ChunkBins*> chunks, int query_slot) {
+  if constexpr (kCalledPixelShader<PS>) return make_called_draw_command<N>(plan, state, ps, std::move(chunks), query_slot);
+  else return std::make_unique<DrawCommand<PS, N>>(plan, state, ps, std::move(chunks), query_slot);
+}
+
 }  // namespace luxel::rasterizer::detail
 
 namespace luxel::rasterizer {
@@ -839,6 +855,7 @@ void draw(Context& ctx, const Framebuffer& fb, const PipelineState& state, const
       plan.constants.clip_y0 >= plan.constants.clip_y1)
     return;
 
+  const auto recorded_shader = recorded_pixel_shader<N>(pixel_shader);
   // A large draw is recorded in parts, and the queue flushes between them once its records take
   // more than the context's budget (ContextOptions::max_pending_record_bytes).
   for (uint32_t part_first = 0; part_first < triangles;) {
@@ -861,7 +878,7 @@ void draw(Context& ctx, const Framebuffer& fb, const PipelineState& state, const
     const int slot = queue.query_slot(ctx.active_query());
     if (plan.color) ctx.refer(*plan.color);  // see Context, "The deferred frame"
     if (plan.depth_stencil) ctx.refer(*plan.depth_stencil);
-    queue.push(std::make_unique<DrawCommand<PS, N>>(plan, state, pixel_shader, std::move(chunks), slot));
+    queue.push(make_draw_command<N>(plan, state, recorded_shader, std::move(chunks), slot));
     part_first += part;
   }
 }
