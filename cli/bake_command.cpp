@@ -98,6 +98,15 @@ Runner add_bake_command(CLI::App& app) {
       std::cerr << "luxel bake: " << o->scene << ": no HOME or XDG_CACHE_HOME to keep the bake in; give --out DIR\n";
       return 2;
     }
+    {
+      // The folder first: a bake that cannot be kept is not started.
+      std::error_code ec;
+      std::filesystem::create_directories(folder, ec);
+      if (ec) {
+        std::cerr << "luxel bake: " << folder << ": cannot create the bake folder (" << ec.message() << ")\n";
+        return 1;
+      }
+    }
     bake::BakeSettings settings = o->quick ? bake::BakeSettings::quick() : bake::BakeSettings{};
     settings.threads = o->threads;
     try {

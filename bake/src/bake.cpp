@@ -37,40 +37,67 @@ constexpr uint64_t kBytesPerTexel = 4 * 12 + 2 * 12 + 2 + 4 + 20 + sizeof(Luxel)
 
 }  // namespace
 
-BakeResult bake(const scenes::Scene& scene, const BakeSettings& settings, const ProgressFn& progress) {
-  const auto start = std::chrono::steady_clock::now();
-  try {
-    scenes::validate(scene);
-  } catch (const std::exception& e) {
-    throw BakeError(e.what());
-  }
-  check_settings(scene, settings);
-  BakeResult result;
-  std::vector<std::string>& warnings = result.warnings;
-  const Inputs in = prepare_inputs(scene, settings);
+GeneratedCharts plan_charts(const scenes::Scene& scene, const BakeSettings& settings) {
   const float luxel_size = settings.luxel_size > 0 ? settings.luxel_size : scene.lightmap_luxel_size;
-  if (!(luxel_size > 0.0f) || !std::isfinite(luxel_size))
-    throw BakeError(scene.name + ": the luxel size " + std::to_string(luxel_size) + " inches is not a positive number");
-
-  // Which meshes get luxels, through which uv1.
-  MeshUvs uvs(scene.meshes.size(), nullptr);
-  result.generated_uv1.resize(scene.meshes.size());
-  size_t lightmapped = 0;
+  const Inputs in = prepare_inputs(scene, settings);
+  std::vector<char> which(scene.meshes.size(), 0);
+  bool missing = false;
   for (size_t i = 0; i < scene.meshes.size(); ++i) {
     const scenes::Mesh& m = scene.meshes[i];
     if (in.roles[i] != MeshRole::lightmapped || m.triangle_count() == 0) continue;
-    if (m.uv1.size() != m.positions.size()) {
-      warnings.push_back(scene.name + ": mesh " + std::to_string(i) + " '" + m.name +
-                         "' has no uv1: it gets no lightmap (charts are not generated yet)");
-      continue;
-    }
+    which[i] = 1;
+    missing |= m.uv1.size() != m.positions.size();
+  }
+  if (!missing || !(luxel_size > 0.0f) || !std::isfinite(luxel_size)) {
+    GeneratedCharts none;
+    none.meshes.resize(scene.meshes.size());
+    return none;
+  }
+  return make_charts(scene, which, luxel_size, settings.chart_angle_degrees, kMaxAtlasSide);
+}
+
+BakeResult bake(const scenes::Scene& original, const BakeSettings& settings, const ProgressFn& progress) {
+  const auto start = std::chrono::steady_clock::now();
+  try {
+    scenes::validate(original);
+  } catch (const std::exception& e) {
+    throw BakeError(e.what());
+  }
+  check_settings(original, settings);
+  BakeResult result;
+  std::vector<std::string>& warnings = result.warnings;
+  const float luxel_size = settings.luxel_size > 0 ? settings.luxel_size : original.lightmap_luxel_size;
+  if (!(luxel_size > 0.0f) || !std::isfinite(luxel_size))
+    throw BakeError(original.name + ": the luxel size " + std::to_string(luxel_size) + " inches is not a positive number");
+
+  // Charts for meshes without uv1: the bake then reads a copy of the scene with those meshes
+  // rebuilt.
+  GeneratedCharts charts = plan_charts(original, settings);
+  scenes::Scene charted;
+  if (charts.atlas_size > 0) {
+    charted = original;
+    size_t n = 0;
+    for (size_t i = 0; i < charts.meshes.size(); ++i)
+      if (charts.meshes[i]) charted.meshes[i] = *charts.meshes[i], ++n;
+    warnings.push_back(original.name + ": " + std::to_string(n) + " lightmapped meshes got lightmap charts from the baker (" +
+                       std::to_string(charts.charts) + " charts, a " + std::to_string(charts.atlas_size) + "-luxel atlas)");
+  }
+  const scenes::Scene& scene = charts.atlas_size > 0 ? charted : original;
+  const Inputs in = prepare_inputs(scene, settings);
+
+  // Which meshes get luxels, through which uv1.
+  MeshUvs uvs(scene.meshes.size(), nullptr);
+  size_t lightmapped = 0;
+  for (size_t i = 0; i < scene.meshes.size(); ++i) {
+    const scenes::Mesh& m = scene.meshes[i];
+    if (in.roles[i] != MeshRole::lightmapped || m.triangle_count() == 0 || m.uv1.size() != m.positions.size()) continue;
     uvs[i] = &m.uv1;
     ++lightmapped;
   }
 
   int side = 0;
   if (lightmapped) {
-    side = atlas_side_from_uv1(scene, in, uvs, luxel_size);
+    side = charts.atlas_size > 0 ? charts.atlas_size : atlas_side_from_uv1(scene, in, uvs, luxel_size);
     if (side == 0) {
       warnings.push_back(scene.name + ": no lightmapped triangle has both area and uv1 area: no lightmaps");
     } else if (side > kMaxAtlasSide) {
@@ -107,13 +134,15 @@ BakeResult bake(const scenes::Scene& scene, const BakeSettings& settings, const 
   if (!grid.luxels.empty()) result.lightmaps = bake_lightmaps(ctx, result.stats, warnings);
   result.stats.width = result.lightmaps.width, result.stats.height = result.lightmaps.height;
   if (scene.irradiance_volume) result.cubes = bake_ambient_cubes(ctx, result.lightmaps, result.stats, warnings);
+  result.charted_meshes = std::move(charts.meshes);
+  result.charted_meshes.resize(scene.meshes.size());
   result.stats.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return result;
 }
 
 void attach(scenes::Scene& scene, const BakeResult& result) {
-  for (size_t i = 0; i < result.generated_uv1.size() && i < scene.meshes.size(); ++i)
-    if (!result.generated_uv1[i].empty()) scene.meshes[i].uv1 = result.generated_uv1[i];
+  for (size_t i = 0; i < result.charted_meshes.size() && i < scene.meshes.size(); ++i)
+    if (result.charted_meshes[i]) scene.meshes[i] = *result.charted_meshes[i];
   const LightmapAtlas& a = result.lightmaps;
   if (a.width > 0) {
     static const char* names[4] = {"bake/lightmap_flat", "bake/lightmap_basis0", "bake/lightmap_basis1", "bake/lightmap_basis2"};

@@ -143,8 +143,8 @@ void save_bake(const BakeResult& r, const scenes::Scene& scene, const BakeSettin
       files.push_back(kMapFiles[k]);
     }
     json generated = json::array();
-    for (size_t i = 0; i < r.generated_uv1.size(); ++i)
-      if (!r.generated_uv1[i].empty()) generated.push_back(i);
+    for (size_t i = 0; i < r.charted_meshes.size(); ++i)
+      if (r.charted_meshes[i]) generated.push_back(i);
     std::string coverage(a.coverage.size(), '0');
     for (size_t i = 0; i < a.coverage.size(); ++i) coverage[i] = char('0' + int(a.coverage[i]));
     index["lightmaps"] = {{"width", a.width},
@@ -203,7 +203,7 @@ std::optional<BakeResult> load_bake(const std::string& dir, const scenes::Scene&
     if (index.value("format", "") != "luxel-bake" || index.value("version", 0) != kBakeFormatVersion) return std::nullopt;
     if (index.value("hash", "") != hex(bake_input_hash(scene, settings))) return std::nullopt;
     BakeResult r;
-    r.generated_uv1.resize(scene.meshes.size());
+    r.charted_meshes.resize(scene.meshes.size());
     if (index.contains("lightmaps")) {
       const json& l = index["lightmaps"];
       LightmapAtlas& a = r.lightmaps;
@@ -224,6 +224,12 @@ std::optional<BakeResult> load_bake(const std::string& dir, const scenes::Scene&
       a.coverage.resize(texels);
       for (size_t i = 0; i < texels; ++i) a.coverage[i] = LuxelCoverage(std::clamp(coverage[i] - '0', 0, 2));
       r.stats.luxels = l.value("luxels", uint64_t(0));
+      // Charts the baker made are made again (a function of what the hash covers).
+      if (!l.value("generated_uv1_meshes", json::array()).empty()) {
+        GeneratedCharts charts = plan_charts(scene, settings);
+        if (charts.atlas_size != a.width) throw std::runtime_error("the charts made again do not fit the stored atlas");
+        r.charted_meshes = std::move(charts.meshes);
+      }
     }
     if (index.contains("volume")) {
       const json& v = index["volume"];

@@ -49,7 +49,9 @@ TEST(BakeLightmaps, WhiteFurnaceGivesTheSkyInTheFlatMapAndTheTiltedPlaneFactorIn
   for (size_t i : luxels) {
     for (int c = 0; c < 3; ++c) {
       EXPECT_NEAR(r.lightmaps.maps[0][i][c], sky[c], 1e-4 * sky[c]) << "flat, texel " << i;
-      const float want = half(float(kBasisSkyFactor * sky[c]));
+      // The tilted-plane sky factor (1 + cos beta) / 2, cos beta = 1/sqrt 3: worked out here, not
+      // read from the library.
+      const float want = half(float((1.0 + 1.0 / std::sqrt(3.0)) / 2.0 * sky[c]));
       for (int k = 1; k < 4; ++k) EXPECT_NEAR(r.lightmaps.maps[size_t(k)][i][c], want, 1e-4 * want) << "basis " << k - 1;
     }
   }

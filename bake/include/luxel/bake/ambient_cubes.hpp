@@ -18,10 +18,11 @@
 // mode (`cubes_all_light`) adds each light's color x falloff x max(0, axis_j . L), unoccluded.
 //
 // Samples inside solid geometry: a sample more than 25 % of whose rays hit back faces is inside
-// something (or under a one-sided floor); it takes the cube of the nearest valid sample (grid
-// distance, ties to the lower index), like vrad's solid leaves that point to the nearest leaf
-// with samples. `valid` says which were computed. With no valid sample at all the cubes are black
-// and the bake warns.
+// something (or under a one-sided floor); it takes the cube of the nearest valid sample in grid
+// steps (a breadth-first fill from all valid samples at once over the 6-neighbourhood, in index
+// order, so ties go the same way every time), like vrad's solid leaves that point to the nearest
+// leaf with samples. `valid` says which were computed. With no valid sample at all the cubes are
+// black and the bake warns.
 
 #include "luxel/scenes/scene.hpp"
 

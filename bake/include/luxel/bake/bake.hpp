@@ -15,12 +15,17 @@
 // (random.hpp); every sum over the atlas is taken per chunk and then over chunks in order. The
 // same scene and settings give the same bytes with any `threads`.
 //
+// Lightmap UVs: each world LightmappedGeneric mesh's uv1, the atlas square, its side read from the
+// uv1 density at the luxel size (the median over triangles of sqrt(world area / uv area) / size);
+// when any such mesh lacks uv1, charts made by the baker for all of them (charts.hpp).
+//
 // Bad input: a scene without lightmapped meshes, lights, sky or emission, degenerate or
 // zero-uv-area triangles, uv1 outside [0, 1] or overlapping, bounces cut by max_bounces: warnings
 // in BakeResult::warnings (the bake goes on). A scene that validate() refuses, a luxel size that
 // is not a positive finite number, an atlas beyond kMaxAtlasSide or the memory cap: BakeError.
 
 #include "luxel/bake/ambient_cubes.hpp"
+#include "luxel/bake/charts.hpp"
 #include "luxel/bake/lightmaps.hpp"
 #include "luxel/bake/settings.hpp"
 #include "luxel/scenes/scene.hpp"
@@ -68,8 +73,9 @@ struct BakeStats {
 struct BakeResult {
   LightmapAtlas lightmaps;             ///< empty (0 x 0) when the scene has no lightmapped mesh
   std::optional<AmbientCubes> cubes;   ///< when the scene has an irradiance volume
-  /// Per mesh: uv1 the baker made (charts.hpp), or empty where the mesh's own uv1 was used.
-  std::vector<std::vector<glm::vec2>> generated_uv1;
+  /// Per mesh: the mesh rebuilt with charts the baker made (charts.hpp: unwelded, with uv1) when
+  /// some lightmapped mesh had no uv1; nullopt where the scene's mesh was used as it is.
+  std::vector<std::optional<scenes::Mesh>> charted_meshes;
   BakeStats stats;
   std::vector<std::string> warnings;   ///< one line each, naming the scene
 };
@@ -77,8 +83,13 @@ struct BakeResult {
 /// Bakes `scene` (unchanged). Throws BakeError (see above).
 BakeResult bake(const scenes::Scene& scene, const BakeSettings& settings, const ProgressFn& progress = {});
 
+/// The charts bake() makes for `scene`: when any world LightmappedGeneric mesh lacks uv1, every
+/// such mesh is charted (one atlas for all; luxel size from the settings, else the scene);
+/// otherwise no mesh (atlas_size 0, all nullopt). Throws BakeError as bake() does.
+GeneratedCharts plan_charts(const scenes::Scene& scene, const BakeSettings& settings);
+
 /// Attaches a bake to its scene: the four maps as linear rgba32f textures and Lightmaps, the
-/// cubes into the irradiance volume, generated uv1 into the meshes.
+/// cubes into the irradiance volume, charted meshes in place of the scene's.
 void attach(scenes::Scene& scene, const BakeResult& result);
 
 }  // namespace luxel::bake
