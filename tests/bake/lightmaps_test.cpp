@@ -59,6 +59,49 @@ TEST(BakeLightmaps, WhiteFurnaceGivesTheSkyInTheFlatMapAndTheTiltedPlaneFactorIn
   EXPECT_EQ(r.stats.bounces, 1);
 }
 
+/// A sky cube in D3D face order whose texels hold max(0, z) of their own direction (the table of
+/// rasterizer/texture.hpp "Cube maps", as the courtyard's sky is built): "how far up".
+int add_upness_sky(scenes::Scene& s, int size) {
+  scenes::Texture t;
+  t.name = "test:upness";
+  t.shape = scenes::TextureShape::cube;
+  t.color_space = scenes::ColorSpace::linear;
+  for (int f = 0; f < 6; ++f) {
+    scenes::PixelImage img;
+    img.width = img.height = size;
+    for (int y = 0; y < size; ++y)
+      for (int x = 0; x < size; ++x) {
+        const float a = 2 * (x + 0.5f) / size - 1, b = 2 * (y + 0.5f) / size - 1;
+        const glm::vec3 dirs[6] = {{1, -b, -a}, {-1, -b, a}, {a, 1, b}, {a, -1, -b}, {a, -b, 1}, {-a, -b, -1}};
+        const float up = std::max(0.0f, glm::normalize(dirs[f]).z);
+        img.rgba32f.insert(img.rgba32f.end(), {up, up, up, 1.0f});
+      }
+    t.faces.push_back(img);
+  }
+  s.textures.push_back(t);
+  return int(s.textures.size()) - 1;
+}
+
+TEST(BakeLightmaps, TheSkyCubeIsReadInTheDirectionTheRayLeaves) {
+  // Facing up, the flat map is (1/pi) integral of cos(theta) cos(theta) over the hemisphere = 2/3;
+  // facing down it sees only texels of downward directions: 0. A face or an axis read the wrong
+  // way round breaks one or the other.
+  for (float facing : {1.0f, -1.0f}) {
+    scenes::Scene s = lone_quad(glm::vec3(0.0f));
+    s.sky_texture = add_upness_sky(s, 64);
+    if (facing < 0)
+      for (auto& p : s.meshes[0].positions) p.y = -p.y;  // mirror: the winding flips, the quad faces down
+    for (auto& n : s.meshes[0].normals) n = {0, 0, facing};
+    const BakeResult r = bake(s, fast(1024));
+    double mean = 0;
+    const auto luxels = covered(r.lightmaps);
+    for (size_t i : luxels) mean += r.lightmaps.maps[0][i].r;
+    mean /= double(luxels.size());
+    if (facing > 0) EXPECT_NEAR(mean, 2.0 / 3.0, 0.01);
+    else EXPECT_EQ(mean, 0.0);
+  }
+}
+
 struct DirectCase {
   glm::vec3 to_light;       // tangent space (also world: the quad's frame is the identity)
   glm::vec4 expected;       // flat, basis 0, 1, 2, per unit light color
