@@ -1,4 +1,4 @@
-// luxel bake --scene SCENE [--out DIR] [--threads N] [--quick] [--force]: bakes the scene's RNM
+// luxel bake --scene SCENE [--out DIR] [--threads N] [--quick] [--force] [--cubes-all-light]: bakes the scene's RNM
 // lightmaps and ambient cubes (bake/bake.hpp) into a folder (bake/storage.hpp), or reuses the bake
 // already there when what it read is unchanged. Default folder: beside a scene file
 // (scene.gltf -> scene.bake/), for built-in scenes $XDG_CACHE_HOME/luxel/bake/NAME (or
@@ -26,7 +26,7 @@ namespace {
 struct BakeOptions {
   std::string scene, out;
   int threads = 0;
-  bool quick = false, force = false;
+  bool quick = false, force = false, cubes_all_light = false;
 };
 
 /// Where a bake goes when --out is not given; empty when there is nowhere to put it.
@@ -81,6 +81,8 @@ Runner add_bake_command(CLI::App& app) {
       ->check(CLI::Range(1, 256));
   cmd->add_flag("--quick", o->quick, "Fewer rays and an earlier stop: a preview in seconds");
   cmd->add_flag("--force", o->force, "Bake even when the folder holds a bake of the same inputs");
+  cmd->add_flag("--cubes-all-light", o->cubes_all_light,
+                "Ambient cubes with the lights' direct light too (for comparisons; the engine adds it itself)");
   return [cmd, o]() -> int {
     if (!cmd->parsed()) return -1;
     std::optional<scenes::Scene> scene;
@@ -109,11 +111,16 @@ Runner add_bake_command(CLI::App& app) {
     }
     bake::BakeSettings settings = o->quick ? bake::BakeSettings::quick() : bake::BakeSettings{};
     settings.threads = o->threads;
+    settings.cubes_all_light = o->cubes_all_light;
     try {
       if (!o->force) {
-        if (const auto old = bake::load_bake(folder, *scene, settings)) {
-          std::printf("%s: up to date in %s (inputs unchanged; --force rebakes)\n", scene->name.c_str(), folder.c_str());
-          return 0;
+        try {
+          if (const auto old = bake::load_bake(folder, *scene, settings)) {
+            std::printf("%s: up to date in %s (inputs unchanged; --force rebakes)\n", scene->name.c_str(), folder.c_str());
+            return 0;
+          }
+        } catch (const std::exception& e) {
+          std::cerr << "luxel bake: warning: " << e.what() << "; baking again\n";  // a damaged bake is replaced
         }
       }
       const bake::BakeResult r = bake::bake(*scene, settings, progress_printer());

@@ -121,9 +121,10 @@ BakeResult bake(const scenes::Scene& original, const BakeSettings& settings, con
 
   LuxelGrid grid;
   if (side > 0) {
-    if (progress) progress({"luxels", 0, 1, 0, 0.0, false});
+    const auto t0 = std::chrono::steady_clock::now();
     grid = make_luxels(scene, in, uvs, side, side, warnings);
-    if (progress) progress({"luxels", 1, 1, 0, 0.0, true});
+    const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    if (progress) progress({"luxels", grid.luxels.size(), grid.luxels.size(), 0, s, true});
   }
   std::vector<char> visible(scene.meshes.size()), occluding(scene.meshes.size());
   for (size_t i = 0; i < scene.meshes.size(); ++i) visible[i] = in.visible(i), occluding[i] = in.occluding(i);

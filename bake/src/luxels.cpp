@@ -47,7 +47,7 @@ int atlas_side_from_uv1(const Scene& scene, const Inputs& in, const MeshUvs& uvs
   std::nth_element(density.begin(), density.begin() + density.size() / 2, density.end());
   const double side = density[density.size() / 2] / double(luxel_size);
   if (!std::isfinite(side)) return 0;
-  return int(std::min(std::max(std::llround(side), 1ll), 1ll << 30));
+  return int(std::clamp(std::round(side), 1.0, double(1 << 30)));  // the caller refuses anything over its limit
 }
 
 LuxelGrid make_luxels(const Scene& scene, const Inputs& in, const MeshUvs& uvs, int width, int height,
@@ -78,13 +78,15 @@ LuxelGrid make_luxels(const Scene& scene, const Inputs& in, const MeshUvs& uvs, 
         continue;
       }
       glm::dvec2 q[3];
-      bool outside = false;
+      bool outside = false, finite = true;
       for (int k = 0; k < 3; ++k) {
         const glm::vec2 u = uv[c.v[k]];
         if (!(u.x >= 0.0f && u.x <= 1.0f && u.y >= 0.0f && u.y <= 1.0f)) outside = true;
+        finite = finite && std::isfinite(u.x) && std::isfinite(u.y);
         q[k] = glm::dvec2(double(u.x) * width, double(u.y) * height);
       }
       if (outside) ++out_of_range;
+      if (!finite) continue;  // counted as outside; nothing of it can be drawn
       const double area2 = (q[1].x - q[0].x) * (q[2].y - q[0].y) - (q[1].y - q[0].y) * (q[2].x - q[0].x);
       if (!(std::abs(area2) > 1e-12)) {
         ++no_uv_area;
@@ -92,8 +94,10 @@ LuxelGrid make_luxels(const Scene& scene, const Inputs& in, const MeshUvs& uvs, 
       }
       const double lo_x = std::min({q[0].x, q[1].x, q[2].x}), hi_x = std::max({q[0].x, q[1].x, q[2].x});
       const double lo_y = std::min({q[0].y, q[1].y, q[2].y}), hi_y = std::max({q[0].y, q[1].y, q[2].y});
-      const int x0 = std::max(0, int(std::floor(lo_x - 0.5))), x1 = std::min(width - 1, int(std::ceil(hi_x - 0.5)));
-      const int y0 = std::max(0, int(std::floor(lo_y - 0.5))), y1 = std::min(height - 1, int(std::ceil(hi_y - 0.5)));
+      // Clamped in double first: uv far outside [0, 1] must not overflow an int.
+      auto texel = [](double v, int size) { return int(std::clamp(v, -1.0, double(size))); };
+      const int x0 = std::max(0, texel(std::floor(lo_x - 0.5), width)), x1 = std::min(width - 1, texel(std::ceil(hi_x - 0.5), width));
+      const int y0 = std::max(0, texel(std::floor(lo_y - 0.5), height)), y1 = std::min(height - 1, texel(std::ceil(hi_y - 0.5), height));
       for (int y = y0; y <= y1; ++y)
         for (int x = x0; x <= x1; ++x) {
           const glm::dvec2 p(x + 0.5, y + 0.5);

@@ -75,6 +75,12 @@ TEST(BakeBadScenes, UvOutOfRangeIsClippedWithAWarning) {
   s.meshes[0].uv1[2] = {1.5f, -0.25f};
   const BakeResult r = bake(s, fast());
   EXPECT_THAT(all(r.warnings), HasSubstr("uv1 outside [0, 1]"));
+  // Far outside (an int overflow if converted unclamped; UBSan watches) and not finite at all.
+  s.meshes[0].uv1[2] = {1e30f, -1e30f};
+  EXPECT_THAT(all(bake(s, fast()).warnings), HasSubstr("uv1 outside [0, 1]"));
+  // NaN on a vertex both triangles share: no triangle has a uv area left, so no lightmap at all.
+  s.meshes[0].uv1[2] = {std::numeric_limits<float>::quiet_NaN(), 0.5f};
+  EXPECT_THAT(all(bake(s, fast()).warnings), HasSubstr("no lightmapped triangle has both area and uv1 area"));
 }
 
 TEST(BakeBadScenes, OverlappingUvIsReported) {
