@@ -86,6 +86,9 @@ void write_map(const std::vector<glm::vec3>& map, int width, int height, const s
   if (!out) throw std::runtime_error(path + ": cannot write EXR (" + OIIO::geterror() + ")");
   OIIO::ImageSpec spec(width, height, 3, OIIO::TypeDesc::HALF);
   spec.attribute("compression", "zip");
+  // OpenImageIO stamps the time of writing into the header unless told a time: a fixed one keeps
+  // the same bake the same bytes on disk too.
+  spec.attribute("DateTime", "1970:01:01 00:00:00");
   if (!out->open(path, spec) || !out->write_image(OIIO::TypeDesc::FLOAT, map.data()) || !out->close())
     throw std::runtime_error(path + ": " + out->geterror());
 }

@@ -13,6 +13,10 @@
 #include <fstream>
 #include <unistd.h>
 
+#include <chrono>
+#include <iterator>
+#include <thread>
+
 namespace luxel::bake::test {
 namespace {
 
@@ -80,6 +84,27 @@ TEST(BakeStorage, ABakeLoadsBackBitForBitWhileItsInputsAreUnchanged) {
   scenes::Scene viewed = s;
   viewed.cameras.push_back({});
   EXPECT_TRUE(load_bake(dir.path(), viewed, fast()));
+}
+
+std::string bytes_of(const std::string& path) {
+  std::ifstream f(path, std::ios::binary);
+  return std::string(std::istreambuf_iterator<char>(f), {});
+}
+
+TEST(BakeStorage, TheSameBakeWrittenTwiceIsTheSameFiles) {
+  // A second apart: a time stamp in the EXR header would show (OpenImageIO writes one unless told).
+  TempDir dir;
+  const scenes::Scene s = lit_box();
+  BakeSettings one = fast(), two = fast();
+  one.threads = 1, two.threads = 2;
+  save_bake(bake(s, one), s, one, dir.path() + "/a");
+  std::this_thread::sleep_for(std::chrono::milliseconds(1100));
+  save_bake(bake(s, two), s, two, dir.path() + "/b");
+  for (const char* f : {"lightmap_flat.exr", "lightmap_basis0.exr", "lightmap_basis1.exr", "lightmap_basis2.exr"}) {
+    const std::string a = bytes_of(dir.path() + "/a/" + f);
+    EXPECT_FALSE(a.empty()) << f;
+    EXPECT_TRUE(a == bytes_of(dir.path() + "/b/" + f)) << f;
+  }
 }
 
 TEST(BakeStorage, ADamagedIndexIsAnErrorNamingTheFile) {
