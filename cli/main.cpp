@@ -1,4 +1,4 @@
-// luxel: render stills, count shader costs, export and describe scenes (see `luxel --help`).
+// luxel: render stills, count shader costs, export and describe scenes, bake lightmaps (see `luxel --help`).
 
 #include "commands.hpp"
 
@@ -13,7 +13,8 @@ int main(int argc, char** argv) {
     return std::string(a->get_name().empty() ? "luxel" : a->get_name()) + ": " + e.what() + " (see --help)\n";
   });
   std::vector<luxel::cli::Runner> runners = {luxel::cli::add_render_command(app), luxel::cli::add_cost_command(app),
-                                            luxel::cli::add_export_command(app), luxel::cli::add_info_command(app)};
+                                            luxel::cli::add_export_command(app), luxel::cli::add_info_command(app),
+                                            luxel::cli::add_bake_command(app)};
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {

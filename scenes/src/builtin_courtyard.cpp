@@ -372,7 +372,8 @@ Scene make_courtyard() {
   const int flame_m = b.material(flame);
 
   // --- World geometry (lightmapped: one chart per rectangle, 8 inches a luxel) ---
-  ChartPacker charts(8.0f);
+  s.lightmap_luxel_size = 8.0f;
+  ChartPacker charts(s.lightmap_luxel_size);
   const int floor_mesh = b.mesh("floor", floor_m, false);
   add_rectangle(s.meshes[floor_mesh], {-512, -512, 0}, {1024, 0, 0}, {0, 1024, 0}, 8, 8, 128, &charts, floor_mesh);
   const int walls = b.mesh("walls", wall_m, false);

@@ -139,8 +139,10 @@ void validate(const Scene& scene) {
   check_texture_index(scene.sky_texture, "the sky");
   for (size_t i = 0; i < scene.cubemap_samples.size(); ++i)
     check_texture_index(scene.cubemap_samples[i].texture, "cube-map sample " + std::to_string(i));
-  if (scene.lightmaps)
+  if (scene.lightmaps) {
+    check_texture_index(scene.lightmaps->flat, "the flat lightmap");
     for (int t : scene.lightmaps->textures) check_texture_index(t, "the lightmaps");
+  }
   if (const auto& v = scene.irradiance_volume) {
     const size_t samples = static_cast<size_t>(std::max(v->counts.x, 0)) * std::max(v->counts.y, 0) * std::max(v->counts.z, 0);
     if (!v->cubes.empty() && v->cubes.size() != samples)

@@ -274,10 +274,14 @@ struct Exposure {
   float bloom_scale = 1.0f;
 };
 
-/// Baked radiosity normal mapping: three directional lightmaps in one atlas per set, addressed by
-/// the meshes' uv1. Attached by `luxel bake` (bake/), or loaded; absent until then.
+/// Baked radiosity normal mapping: the flat (un-bumped) lightmap and three directional lightmaps,
+/// each one atlas of the same size, addressed by the meshes' uv1. Attached by `luxel bake`
+/// (bake/), or loaded; absent until then. Values are linear HDR in the shaders' lightmap unit: a
+/// white Lambertian surface shows the value as its radiance (irradiance / pi), so
+/// diffuse = albedo x lightmap (SOURCE_FACTS 1.3, HDR: lightmap scale factor 1).
 struct Lightmaps {
   int width = 0, height = 0;
+  int flat = -1;                            ///< Scene::textures: irradiance / pi about the surface normal
   std::array<int, 3> textures{-1, -1, -1};  ///< Scene::textures, linear HDR, one per basis direction
 };
 
@@ -298,6 +302,9 @@ struct Scene {
   Exposure exposure;
   int sky_texture = -1;             ///< an HDR cube (Scene::textures) drawn behind everything, or -1
   glm::vec3 background{0.0f};       ///< linear, where there is no sky
+  /// Inches per lightmap luxel (Source's "lightmapscale"; vbsp's DEFAULT_LUXEL_SIZE is 16): the
+  /// density the uv1 charts were laid out for, and the baker's for charts it makes itself.
+  float lightmap_luxel_size = 16.0f;
   std::optional<Lightmaps> lightmaps;
 };
 

@@ -1,0 +1,25 @@
+#pragma once
+// The bake's stages, in the order bake.cpp runs them.
+
+#include "lighting.hpp"
+
+#include "luxel/bake/bake.hpp"
+
+#include <string>
+#include <vector>
+
+namespace luxel::bake::detail {
+
+/// Direct light, bounces until the stopping rule, supersampling, border rings, half rounding.
+LightmapAtlas bake_lightmaps(const Context& c, BakeStats& stats, std::vector<std::string>& warnings);
+
+/// Fills the texels next to covered ones from them, `rings` times (lightmaps.hpp "Borders").
+/// `coverage` is updated (empty -> border).
+void dilate(std::vector<std::vector<glm::vec3>*> maps, std::vector<LuxelCoverage>& coverage, int width, int height,
+            int rings);
+
+/// The ambient cubes of the scene's irradiance volume, with the final lightmaps.
+AmbientCubes bake_ambient_cubes(const Context& c, const LightmapAtlas& atlas, BakeStats& stats,
+                                std::vector<std::string>& warnings);
+
+}  // namespace luxel::bake::detail

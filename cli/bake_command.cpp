@@ -1,0 +1,145 @@
+// luxel bake --scene SCENE [--out DIR] [--threads N] [--quick] [--force] [--cubes-all-light]: bakes the scene's RNM
+// lightmaps and ambient cubes (bake/bake.hpp) into a folder (bake/storage.hpp), or reuses the bake
+// already there when what it read is unchanged. Default folder: beside a scene file
+// (scene.gltf -> scene.bake/), for built-in scenes $XDG_CACHE_HOME/luxel/bake/NAME (or
+// ~/.cache/...). Progress on stderr: a live line on a terminal, one plain line per phase otherwise.
+
+#include "commands.hpp"
+
+#include "luxel/bake/bake.hpp"
+#include "luxel/bake/storage.hpp"
+#include "luxel/scenes/load.hpp"
+
+#include <unistd.h>
+
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <iostream>
+#include <memory>
+#include <string>
+
+namespace luxel::cli {
+
+namespace {
+
+struct BakeOptions {
+  std::string scene, out;
+  int threads = 0;
+  bool quick = false, force = false, cubes_all_light = false;
+};
+
+/// Where a bake goes when --out is not given; empty when there is nowhere to put it.
+std::string default_folder(const std::string& scene) {
+  namespace fs = std::filesystem;
+  if (scene.rfind("builtin:", 0) == 0) {
+    std::string base;
+    if (const char* x = std::getenv("XDG_CACHE_HOME"); x && *x) base = x;
+    else if (const char* h = std::getenv("HOME"); h && *h) base = std::string(h) + "/.cache";
+    else return {};
+    return (fs::path(base) / "luxel" / "bake" / scene.substr(8)).string();
+  }
+  fs::path p(scene);
+  p.replace_extension(".bake");
+  return p.string();
+}
+
+std::string rate(double rays, double seconds) {
+  char b[32];
+  std::snprintf(b, sizeof b, "%.2f Mrays/s", seconds > 0 ? rays / seconds * 1e-6 : 0.0);
+  return b;
+}
+
+/// Progress on stderr: on a terminal one line rewritten in place; otherwise a line per phase.
+bake::ProgressFn progress_printer() {
+  const bool tty = isatty(STDERR_FILENO) != 0;
+  return [tty](const bake::Progress& p) {
+    char line[256];
+    if (tty) {
+      const double left = p.done > 0 && p.done < p.total ? p.seconds * double(p.total - p.done) / double(p.done) : 0.0;
+      std::snprintf(line, sizeof line, "\r\033[Kluxel bake: %.*s: %llu/%llu, %s, %.1f s, %.0f s left", int(p.phase.size()),
+                    p.phase.data(), static_cast<unsigned long long>(p.done), static_cast<unsigned long long>(p.total),
+                    rate(double(p.rays), p.seconds).c_str(), p.seconds, left);
+      std::cerr << line << (p.finished ? "\n" : "") << std::flush;
+    } else if (p.finished) {
+      std::snprintf(line, sizeof line, "luxel bake: %.*s: %llu done, %llu rays in %.2f s (%s)\n", int(p.phase.size()),
+                    p.phase.data(), static_cast<unsigned long long>(p.total), static_cast<unsigned long long>(p.rays),
+                    p.seconds, rate(double(p.rays), p.seconds).c_str());
+      std::cerr << line << std::flush;
+    }
+  };
+}
+
+}  // namespace
+
+Runner add_bake_command(CLI::App& app) {
+  auto o = std::make_shared<BakeOptions>();
+  CLI::App* cmd = app.add_subcommand("bake", "Bake RNM lightmaps and ambient cubes (luxel's vrad)");
+  cmd->add_option("--scene", o->scene, "Scene: FILE.gltf, FILE.glb or builtin:NAME")->required();
+  cmd->add_option("--out", o->out, "Bake folder (default: beside the scene file; built-in scenes: ~/.cache/luxel/bake/NAME)");
+  cmd->add_option("--threads", o->threads, "Worker threads (default: all cores); never changes the result")
+      ->check(CLI::Range(1, 256));
+  cmd->add_flag("--quick", o->quick, "Fewer rays and an earlier stop: a preview in seconds");
+  cmd->add_flag("--force", o->force, "Bake even when the folder holds a bake of the same inputs");
+  cmd->add_flag("--cubes-all-light", o->cubes_all_light,
+                "Ambient cubes with the lights' direct light too (for comparisons; the engine adds it itself)");
+  return [cmd, o]() -> int {
+    if (!cmd->parsed()) return -1;
+    std::optional<scenes::Scene> scene;
+    try {
+      scene = scenes::load_scene(o->scene);
+    } catch (const scenes::SceneArgumentError& e) {
+      std::cerr << "luxel bake: --scene " << e.what() << "\n";
+      return 2;
+    } catch (const std::exception& e) {
+      std::cerr << "luxel bake: " << e.what() << "\n";
+      return 1;
+    }
+    const std::string folder = o->out.empty() ? default_folder(o->scene) : o->out;
+    if (folder.empty()) {
+      std::cerr << "luxel bake: " << o->scene << ": no HOME or XDG_CACHE_HOME to keep the bake in; give --out DIR\n";
+      return 2;
+    }
+    {
+      // The folder first: a bake that cannot be kept is not started.
+      std::error_code ec;
+      std::filesystem::create_directories(folder, ec);
+      if (ec) {
+        std::cerr << "luxel bake: " << folder << ": cannot create the bake folder (" << ec.message() << ")\n";
+        return 1;
+      }
+    }
+    bake::BakeSettings settings = o->quick ? bake::BakeSettings::quick() : bake::BakeSettings{};
+    settings.threads = o->threads;
+    settings.cubes_all_light = o->cubes_all_light;
+    try {
+      if (!o->force) {
+        try {
+          if (const auto old = bake::load_bake(folder, *scene, settings)) {
+            std::printf("%s: up to date in %s (inputs unchanged; --force rebakes)\n", scene->name.c_str(), folder.c_str());
+            return 0;
+          }
+        } catch (const std::exception& e) {
+          std::cerr << "luxel bake: warning: " << e.what() << "; baking again\n";  // a damaged bake is replaced
+        }
+      }
+      const bake::BakeResult r = bake::bake(*scene, settings, progress_printer());
+      for (const std::string& w : r.warnings) std::cerr << "luxel bake: warning: " << w << "\n";
+      bake::save_bake(r, *scene, settings, folder);
+      std::printf("%s: baked in %.2f s: lightmaps %dx%d (%llu luxels, %d bounces), %llu ambient cubes, %llu rays (%s) -> %s\n",
+                  scene->name.c_str(), r.stats.seconds, r.stats.width, r.stats.height,
+                  static_cast<unsigned long long>(r.stats.luxels), r.stats.bounces,
+                  static_cast<unsigned long long>(r.stats.cube_samples), static_cast<unsigned long long>(r.stats.rays),
+                  rate(double(r.stats.rays), r.stats.seconds).c_str(), folder.c_str());
+    } catch (const bake::BakeError& e) {
+      std::cerr << "luxel bake: " << e.what() << "\n";
+      return 1;
+    } catch (const std::exception& e) {
+      std::cerr << "luxel bake: " << e.what() << "\n";
+      return 1;
+    }
+    return 0;
+  };
+}
+
+}  // namespace luxel::cli

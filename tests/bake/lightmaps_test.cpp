@@ -1,0 +1,230 @@
+// RNM lightmaps against answers known in closed form: a white furnace (uniform sky over a lone
+// quad), one distant light from each RNM basis direction and between them, the radiosity of a
+// closed box (the geometric series of bounces), and borders that bilinear filtering may read.
+
+#include "bake_support.hpp"
+
+#include "luxel/bake/rnm_basis.hpp"
+
+#include <glm/gtc/packing.hpp>
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <random>
+
+namespace luxel::bake::test {
+namespace {
+
+float half(float x) { return glm::unpackHalf1x16(glm::packHalf1x16(x)); }
+
+/// One 64 x 64 inch quad at z = 0 facing +Z, tangent +X, 16 x 16 luxels in a one-cell atlas.
+scenes::Scene lone_quad(glm::vec3 albedo, glm::vec4 tangent = {1, 0, 0, 1}) {
+  scenes::Scene s;
+  s.name = "test:quad";
+  s.materials = {lightmapped(albedo)};
+  s.lightmap_luxel_size = 4;
+  scenes::Mesh m = empty_mesh("quad", 0);
+  add_quad(m, {-32, -32, 0}, {64, 0, 0}, {0, 64, 0}, 0, 0, 1, 16);
+  for (glm::vec4& t : m.tangents) t = tangent;
+  s.meshes = {m};
+  return s;
+}
+
+BakeSettings fast(int samples = 64) {
+  BakeSettings b;
+  b.samples = samples;
+  b.cube_samples = samples;
+  b.threads = 2;
+  return b;
+}
+
+TEST(BakeLightmaps, WhiteFurnaceGivesTheSkyInTheFlatMapAndTheTiltedPlaneFactorInTheBasisMaps) {
+  scenes::Scene s = lone_quad(glm::vec3(1.0f));
+  const glm::vec3 sky(0.75f, 0.5f, 1.25f);
+  s.background = sky;
+  const BakeResult r = bake(s, fast());
+  ASSERT_EQ(r.lightmaps.width, 18);
+  const auto luxels = covered(r.lightmaps);
+  ASSERT_EQ(luxels.size(), 256u);
+  for (size_t i : luxels) {
+    for (int c = 0; c < 3; ++c) {
+      EXPECT_NEAR(r.lightmaps.maps[0][i][c], sky[c], 1e-4 * sky[c]) << "flat, texel " << i;
+      // The tilted-plane sky factor (1 + cos beta) / 2, cos beta = 1/sqrt 3: worked out here, not
+      // read from the library.
+      const float want = half(float((1.0 + 1.0 / std::sqrt(3.0)) / 2.0 * sky[c]));
+      for (int k = 1; k < 4; ++k) EXPECT_NEAR(r.lightmaps.maps[size_t(k)][i][c], want, 1e-4 * want) << "basis " << k - 1;
+    }
+  }
+  // A planar quad sees only the sky: one bounce that adds nothing ends the bake.
+  EXPECT_EQ(r.stats.bounces, 1);
+}
+
+/// A sky cube in D3D face order whose texels hold max(0, z) of their own direction (the table of
+/// rasterizer/texture.hpp "Cube maps", as the courtyard's sky is built): "how far up".
+int add_upness_sky(scenes::Scene& s, int size) {
+  scenes::Texture t;
+  t.name = "test:upness";
+  t.shape = scenes::TextureShape::cube;
+  t.color_space = scenes::ColorSpace::linear;
+  for (int f = 0; f < 6; ++f) {
+    scenes::PixelImage img;
+    img.width = img.height = size;
+    for (int y = 0; y < size; ++y)
+      for (int x = 0; x < size; ++x) {
+        const float a = 2 * (x + 0.5f) / size - 1, b = 2 * (y + 0.5f) / size - 1;
+        const glm::vec3 dirs[6] = {{1, -b, -a}, {-1, -b, a}, {a, 1, b}, {a, -1, -b}, {a, -b, 1}, {-a, -b, -1}};
+        const float up = std::max(0.0f, glm::normalize(dirs[f]).z);
+        img.rgba32f.insert(img.rgba32f.end(), {up, up, up, 1.0f});
+      }
+    t.faces.push_back(img);
+  }
+  s.textures.push_back(t);
+  return int(s.textures.size()) - 1;
+}
+
+TEST(BakeLightmaps, TheSkyCubeIsReadInTheDirectionTheRayLeaves) {
+  // Facing up, the flat map is (1/pi) integral of cos(theta) cos(theta) over the hemisphere = 2/3;
+  // facing down it sees only texels of downward directions: 0. A face or an axis read the wrong
+  // way round breaks one or the other.
+  for (float facing : {1.0f, -1.0f}) {
+    scenes::Scene s = lone_quad(glm::vec3(0.0f));
+    s.sky_texture = add_upness_sky(s, 64);
+    if (facing < 0)
+      for (auto& p : s.meshes[0].positions) p.y = -p.y;  // mirror: the winding flips, the quad faces down
+    for (auto& n : s.meshes[0].normals) n = {0, 0, facing};
+    const BakeResult r = bake(s, fast(1024));
+    double mean = 0;
+    const auto luxels = covered(r.lightmaps);
+    for (size_t i : luxels) mean += r.lightmaps.maps[0][i].r;
+    mean /= double(luxels.size());
+    if (facing > 0) EXPECT_NEAR(mean, 2.0 / 3.0, 0.01);
+    else EXPECT_EQ(mean, 0.0);
+  }
+}
+
+struct DirectCase {
+  glm::vec3 to_light;       // tangent space (also world: the quad's frame is the identity)
+  glm::vec4 expected;       // flat, basis 0, 1, 2, per unit light color
+};
+
+TEST(BakeLightmaps, ADistantLightLandsInTheBasisMapsByItsCosinesToTheBasis) {
+  const auto& b = rnm_basis();
+  const float s3 = 1.0f / std::sqrt(3.0f), s2 = 1.0f / std::sqrt(2.0f);
+  const glm::vec3 mid01 = glm::normalize(b[0] + b[1]);
+  const glm::vec3 mid012 = glm::vec3(0, 0, 1);
+  const DirectCase cases[] = {
+      {b[0], {s3, 1, 0, 0}},
+      {b[1], {s3, 0, 1, 0}},
+      {b[2], {s3, 0, 0, 1}},
+      {mid01, {mid01.z, s2, s2, 0}},                                    // between two: 1/sqrt 2 each
+      {mid012, {1, s3, s3, s3}},                                        // the normal: all three equal
+      {glm::normalize(glm::vec3(1, 0, 0.2f)), {0, 0, 0, 0}},            // filled below: see the fix-up
+      {glm::normalize(glm::vec3(0.3f, 0.2f, -0.5f)), {0, 0, 0, 0}},     // from below the surface: nothing
+  };
+  for (DirectCase c : cases) {
+    if (c.expected == glm::vec4(0) && c.to_light.z > 0) {
+      c.expected = {c.to_light.z, std::max(0.0f, glm::dot(b[0], c.to_light)), std::max(0.0f, glm::dot(b[1], c.to_light)),
+                    std::max(0.0f, glm::dot(b[2], c.to_light))};
+    }
+    scenes::Scene s = lone_quad(glm::vec3(0.0f));
+    scenes::Light sun;
+    sun.type = scenes::LightType::directional;
+    sun.direction = -c.to_light;
+    sun.color = glm::vec3(2.0f, 1.0f, 0.5f);
+    s.lights = {sun};
+    const BakeResult r = bake(s, fast(16));
+    for (size_t i : covered(r.lightmaps))
+      for (int k = 0; k < 4; ++k)
+        for (int ch = 0; ch < 3; ++ch) {
+          const float want = c.expected[k] * sun.color[ch];
+          EXPECT_NEAR(r.lightmaps.maps[size_t(k)][i][ch], want, 2e-3f * std::max(want, 1e-3f) + 1e-6f)
+              << "light toward (" << c.to_light.x << ", " << c.to_light.y << ", " << c.to_light.z << "), map " << k;
+        }
+  }
+}
+
+TEST(BakeLightmaps, TheBasisFollowsTheTangentFrame) {
+  // Tangent +Y with handedness -1: bitangent = -cross(n, t) = +X. Basis 0 in world is then
+  // sqrt(2/3) (0, 1, 0) + (0, 0, 1/sqrt 3).
+  scenes::Scene s = lone_quad(glm::vec3(0.0f), {0, 1, 0, -1});
+  const auto& b = rnm_basis();
+  const glm::vec3 t(0, 1, 0), bt(1, 0, 0), n(0, 0, 1);
+  for (int k = 0; k < 3; ++k) {
+    const glm::vec3 world = b[size_t(k)].x * t + b[size_t(k)].y * bt + b[size_t(k)].z * n;
+    scenes::Light sun;
+    sun.type = scenes::LightType::directional;
+    sun.direction = -world;
+    sun.color = glm::vec3(1.0f);
+    s.lights = {sun};
+    const BakeResult r = bake(s, fast(4));
+    for (size_t i : covered(r.lightmaps))
+      for (int j = 0; j < 3; ++j) EXPECT_NEAR(r.lightmaps.maps[size_t(j) + 1][i].r, j == k ? 1.0f : 0.0f, 2e-3f) << k << " " << j;
+  }
+}
+
+/// The mean flat luxel of a closed box, albedo rho, the floor emitting L_e: every luxel has the
+/// same area, so by energy conservation (each bounce's irradiance integral is rho times the one
+/// before, reciprocity) the mean is (A_floor / A) L_e sum_{k=0..K} rho^k, K = bounces done.
+double box_error(int samples, double* mean_out = nullptr, int* bounces = nullptr) {
+  const float rho = 0.5f;
+  const scenes::Scene s = closed_box(64, 16, lightmapped(glm::vec3(rho)), lightmapped(glm::vec3(rho), glm::vec3(1.0f)));
+  BakeSettings settings = fast(samples);
+  settings.stop_fraction = 0.001f;
+  const BakeResult r = bake(s, settings);
+  const auto luxels = covered(r.lightmaps);
+  EXPECT_EQ(luxels.size(), 6u * 256u);
+  double mean = 0;
+  for (size_t i : luxels) mean += r.lightmaps.maps[0][i].g;
+  mean /= double(luxels.size());
+  double series = 0;
+  for (int k = 0; k <= r.stats.bounces; ++k) series += std::pow(double(rho), k);
+  const double want = series / 6.0;
+  if (mean_out) *mean_out = mean;
+  if (bounces) *bounces = r.stats.bounces;
+  return std::abs(mean - want) / want;
+}
+
+TEST(BakeLightmaps, AClosedBoxMatchesTheGeometricSeriesOfBouncesWithinAToleranceThatShrinksWithSamples) {
+  double mean16 = 0, mean256 = 0;
+  int bounces = 0;
+  const double e16 = box_error(16, &mean16, &bounces);
+  const double e256 = box_error(256, &mean256);
+  // rho = 0.5 and a 0.1 % stopping rule: 10 bounces (0.5^10 < 0.001 of the sum).
+  EXPECT_GE(bounces, 9);
+  EXPECT_LE(bounces, 11);
+  // The relative error of the mean over 1536 luxels stays under 0.05 / sqrt(samples) (seen:
+  // 0.0077 at 16 rays, 0.00079 at 256: the self-normalized estimator's bias falls as 1/samples).
+  EXPECT_LT(e16, 0.05 / std::sqrt(16.0)) << mean16;
+  EXPECT_LT(e256, 0.05 / std::sqrt(256.0)) << mean256;
+}
+
+TEST(BakeLightmaps, BilinearFilteringInsideAChartReadsOnlyWrittenLuxels) {
+  const scenes::Scene s = closed_box(64, 16, lightmapped(glm::vec3(0.5f)), lightmapped(glm::vec3(0.5f), glm::vec3(1.0f)));
+  const BakeResult r = bake(s, fast(4));
+  const LightmapAtlas& a = r.lightmaps;
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<float> u01(0.0f, 1.0f);
+  for (const scenes::Mesh& m : s.meshes)
+    for (size_t t = 0; t < m.triangle_count(); ++t) {
+      const glm::vec2 p0 = m.uv1[m.vertex_of_corner(3 * t)], p1 = m.uv1[m.vertex_of_corner(3 * t + 1)],
+                      p2 = m.uv1[m.vertex_of_corner(3 * t + 2)];
+      for (int k = 0; k < 2000; ++k) {
+        float b1 = u01(rng), b2 = u01(rng);
+        if (b1 + b2 > 1) b1 = 1 - b1, b2 = 1 - b2;
+        const glm::vec2 uv = p0 + b1 * (p1 - p0) + b2 * (p2 - p0);
+        // Bilinear taps: the texels around uv * size - 0.5.
+        const float x = uv.x * a.width - 0.5f, y = uv.y * a.height - 0.5f;
+        const int x0 = int(std::floor(x)), y0 = int(std::floor(y));
+        for (int dy = 0; dy <= 1; ++dy)
+          for (int dx = 0; dx <= 1; ++dx) {
+            const int xx = std::clamp(x0 + dx, 0, a.width - 1), yy = std::clamp(y0 + dy, 0, a.height - 1);
+            ASSERT_NE(a.coverage[size_t(yy) * size_t(a.width) + size_t(xx)], LuxelCoverage::empty)
+                << "uv (" << uv.x << ", " << uv.y << ") reads texel (" << xx << ", " << yy << ")";
+            ASSERT_GT(a.maps[0][size_t(yy) * size_t(a.width) + size_t(xx)].r, 0.0f);
+          }
+      }
+    }
+}
+
+}  // namespace
+}  // namespace luxel::bake::test
