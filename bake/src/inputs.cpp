@@ -1,6 +1,8 @@
 // Mesh roles, reflectivity, sky lookup and light falloff (lightmaps.hpp states the rules).
 #include "inputs.hpp"
 
+#include "luxel/rasterizer/srgb.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -11,7 +13,15 @@ namespace {
 
 using namespace scenes;
 
-float srgb_to_linear(float c) { return c <= 0.04045f ? c / 12.92f : std::pow((c + 0.055f) / 1.055f, 2.4f); }
+/// Texel i of an image, linear: float images as they are, 8-bit ones decoded by their color space
+/// (rasterizer/srgb.hpp, the one sRGB decode).
+glm::vec3 linear_texel(const PixelImage& img, ColorSpace space, size_t i) {
+  if (img.is_hdr()) return {img.rgba32f[4 * i], img.rgba32f[4 * i + 1], img.rgba32f[4 * i + 2]};
+  const uint8_t* c = &img.rgba8[4 * i];
+  if (space == ColorSpace::srgb)
+    return {rasterizer::kSrgbToLinear[c[0]], rasterizer::kSrgbToLinear[c[1]], rasterizer::kSrgbToLinear[c[2]]};
+  return glm::vec3(c[0], c[1], c[2]) / 255.0f;
+}
 
 /// The mean color of a texture's first image, linear.
 glm::vec3 mean_color(const Texture& t) {
@@ -20,16 +30,7 @@ glm::vec3 mean_color(const Texture& t) {
   const size_t n = size_t(img.width) * size_t(img.height);
   if (n == 0) return glm::vec3(1.0f);
   glm::dvec3 sum(0.0);
-  for (size_t i = 0; i < n; ++i) {
-    glm::vec3 c;
-    if (img.is_hdr()) {
-      c = {img.rgba32f[4 * i], img.rgba32f[4 * i + 1], img.rgba32f[4 * i + 2]};
-    } else {
-      c = {img.rgba8[4 * i] / 255.0f, img.rgba8[4 * i + 1] / 255.0f, img.rgba8[4 * i + 2] / 255.0f};
-      if (t.color_space == ColorSpace::srgb) c = {srgb_to_linear(c.r), srgb_to_linear(c.g), srgb_to_linear(c.b)};
-    }
-    sum += glm::dvec3(c);
-  }
+  for (size_t i = 0; i < n; ++i) sum += glm::dvec3(linear_texel(img, t.color_space, i));
   return glm::vec3(sum / double(n));
 }
 
@@ -108,11 +109,7 @@ glm::vec3 Inputs::sky(glm::vec3 d) const {
   if (img.width <= 0 || img.height <= 0) return s.background;
   const float u = 0.5f * (s_ / m + 1.0f), v = 0.5f * (t_ / m + 1.0f);
   const int x = std::clamp(int(u * img.width), 0, img.width - 1), y = std::clamp(int(v * img.height), 0, img.height - 1);
-  const size_t i = 4 * (size_t(y) * size_t(img.width) + size_t(x));
-  glm::vec3 c = img.is_hdr() ? glm::vec3(img.rgba32f[i], img.rgba32f[i + 1], img.rgba32f[i + 2])
-                             : glm::vec3(img.rgba8[i], img.rgba8[i + 1], img.rgba8[i + 2]) / 255.0f;
-  if (!img.is_hdr() && t.color_space == ColorSpace::srgb)
-    c = {srgb_to_linear(c.r), srgb_to_linear(c.g), srgb_to_linear(c.b)};
+  const glm::vec3 c = linear_texel(img, t.color_space, size_t(y) * size_t(img.width) + size_t(x));
   return glm::clamp(c, glm::vec3(0.0f), glm::vec3(sky_max));
 }
 
