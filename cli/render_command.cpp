@@ -1,4 +1,5 @@
-// luxel render --scene FILE.gltf|FILE.glb|builtin:NAME [--width --height --msaa --threads --camera N --out FILE --stats]
+// luxel render --scene FILE.gltf|FILE.glb|builtin:NAME [--model ps_2_0|ps_2_b|ps_3_0] [--width --height --msaa
+//   --threads --camera N --out FILE --stats]
 // LUXEL_NO_FASTPATH=name,... (or all) turns rasterizer fast paths off (fast_paths.hpp).
 
 #include "commands.hpp"
@@ -23,6 +24,7 @@ namespace {
 struct RenderOptions {
   std::string scene = "builtin:demo";
   frame::FrameSettings settings;
+  std::string model = "ps_3_0";
   int threads = 0;
   std::string out = "out.png";
   bool stats = false;
@@ -43,6 +45,9 @@ Runner add_render_command(CLI::App& app) {
   cmd->add_option("--camera", options->settings.camera, "Which of the scene's cameras to look through (0 = the first)")
       ->check(CLI::NonNegativeNumber)
       ->capture_default_str();
+  cmd->add_option("--model", options->model, "Pixel-shader model the Source shaders are drawn as")
+      ->check(CLI::IsMember({"ps_2_0", "ps_2_b", "ps_3_0"}))
+      ->capture_default_str();
   cmd->add_option("--threads", options->threads, "Worker threads (0 = one per core)")->check(CLI::Range(0, 256))->capture_default_str();
   cmd->add_option("--out", options->out, "Output image (PNG, TIFF, EXR... by extension)")->capture_default_str();
   cmd->add_flag("--stats", options->stats, "Print what the draws did");
@@ -61,6 +66,7 @@ Runner add_render_command(CLI::App& app) {
     // The scene, then the renderer that reads it: both outlive the frame. A file's camera N is
     // made its first on import (as `luxel info` and `export` do); a built-in's is picked here.
     frame::FrameSettings settings = options->settings;
+    settings.model = shading::parse_pixel_model(options->model);
     scenes::GltfImportOptions gltf;
     const bool file = options->scene.rfind("builtin:", 0) != 0;
     if (file) gltf.camera = std::exchange(settings.camera, 0);

@@ -127,6 +127,8 @@ void check_settings(const FrameSettings& s) {
                                 " is outside 1.." + std::to_string(kMaxTargetSize));
   if (!is_valid_sample_count(s.samples))
     throw std::invalid_argument("msaa " + std::to_string(s.samples) + " is not 1, 2, 4 or 8");
+  if (!shading::caps(s.model).pixel)
+    throw std::invalid_argument("shader model " + std::string(shading::caps(s.model).name) + " is not a pixel-shader model");
 }
 
 const FrameSettings& checked(const scenes::Scene& scene, const FrameSettings& s) {

@@ -23,6 +23,7 @@
 #include "luxel/rasterizer/draw.hpp"
 #include "luxel/rasterizer/image.hpp"
 #include "luxel/scenes/scene.hpp"
+#include "luxel/shading/shader_model.hpp"
 
 #include <glm/mat4x4.hpp>
 
@@ -37,6 +38,8 @@ struct FrameSettings {
   int samples = 4;
   int camera = 0;                   ///< index into Scene::cameras
   std::optional<float> path_time = std::nullopt;  ///< set: the camera of Scene::camera_path at this time, seconds
+  /// The pixel-shader model the Source shaders are drawn as: ps_2_0, ps_2_b or ps_3_0.
+  shading::ShaderModel model = shading::ShaderModel::ps_3_0;
 };
 
 /// The camera a frame with these settings looks through. Throws std::invalid_argument when the
@@ -51,7 +54,8 @@ class Renderer {
  public:
   /// Prepares `scene`, which must outlive the renderer (it reads the meshes in place). Throws
   /// std::invalid_argument naming the problem for an invalid scene (scenes::validate), bad
-  /// settings (size outside 1..kMaxTargetSize, samples not 1, 2, 4 or 8) or a missing camera.
+  /// settings (size outside 1..kMaxTargetSize, samples not 1, 2, 4 or 8, a model that is
+  /// not a pixel-shader model) or a missing camera.
   Renderer(const scenes::Scene& scene, const FrameSettings& settings);
   ~Renderer();
   Renderer(Renderer&&) noexcept;

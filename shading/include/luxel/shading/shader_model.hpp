@@ -25,6 +25,8 @@
 //
 // Limits are the guaranteed minimums (a ps_3_0 card may offer more slots; fxc targets 512).
 
+#include <stdexcept>
+#include <string>
 #include <string_view>
 
 namespace luxel::shading {
@@ -81,5 +83,19 @@ static_assert(caps(ShaderModel::ps_3_0).constants == 224 && caps(ShaderModel::ps
 static_assert(caps(ShaderModel::vs_3_0).model == ShaderModel::vs_3_0, "rows in enum order");
 static_assert(caps(ShaderModel::vs_2_0).total_slots == 256 && caps(ShaderModel::vs_2_0).temps == 12);
 static_assert(caps(ShaderModel::vs_3_0).total_slots == 512 && caps(ShaderModel::vs_3_0).temps == 32);
+
+/// The model named `name` ("ps_2_0", "vs_3_0", ...); throws std::invalid_argument for any other.
+inline ShaderModel parse_model(std::string_view name) {
+  for (const ShaderModelCaps& c : kShaderModels)
+    if (c.name == name) return c.model;
+  throw std::invalid_argument("unknown shader model '" + std::string(name) + "'");
+}
+
+/// The same, for the pixel-shader models only (ps_2_0, ps_2_b, ps_3_0).
+inline ShaderModel parse_pixel_model(std::string_view name) {
+  const ShaderModel m = parse_model(name);
+  if (!caps(m).pixel) throw std::invalid_argument("'" + std::string(name) + "' is not a pixel-shader model");
+  return m;
+}
 
 }  // namespace luxel::shading
