@@ -114,6 +114,7 @@ struct Renderer::State {
   std::optional<SkyVertex> sky;  // when the scene has a sky cube
   Image image;
   DrawStats stats;
+  std::vector<ShaderUse> shader_uses;
 
   State(const scenes::Scene& s, const FrameSettings& f)
       : scene(&s), color(f.width, f.height, f.samples), depth(f.width, f.height, f.samples) {}
@@ -223,5 +224,6 @@ void Renderer::render(Context& ctx) {
 
 const Image& Renderer::image() const { return state_->image; }
 const DrawStats& Renderer::stats() const { return state_->stats; }
+const std::vector<ShaderUse>& Renderer::shader_uses() const { return state_->shader_uses; }
 
 }  // namespace luxel::frame

@@ -28,7 +28,10 @@
 #include <glm/mat4x4.hpp>
 
 #include <memory>
+#include <cstdint>
 #include <optional>
+#include <string>
+#include <vector>
 
 namespace luxel::frame {
 
@@ -40,6 +43,16 @@ struct FrameSettings {
   std::optional<float> path_time = std::nullopt;  ///< set: the camera of Scene::camera_path at this time, seconds
   /// The pixel-shader model the Source shaders are drawn as: ps_2_0, ps_2_b or ps_3_0.
   shading::ShaderModel model = shading::ShaderModel::ps_3_0;
+  /// Count the pixels each shader combo shades (Renderer::shader_uses); off, a frame counts nothing.
+  bool count_shading = false;
+};
+
+/// One shader combo the last frame ran (FrameSettings::count_shading).
+struct ShaderUse {
+  std::string family;   ///< "LightmappedGeneric", "VertexLitGeneric", ...
+  std::string combo;    ///< the combo's name in the shading catalog
+  uint64_t pixels = 0;  ///< pixels it shaded (covered pixels, helper lanes not counted)
+  int slots = 0;        ///< its counted DX9 instruction slots per pixel (arithmetic + texture) on the frame's model
 };
 
 /// The camera a frame with these settings looks through. Throws std::invalid_argument when the
@@ -66,6 +79,9 @@ class Renderer {
   const rasterizer::Image& image() const;
   /// What the draws of the last frame did, summed.
   const rasterizer::DrawStats& stats() const;
+  /// What each shader combo did in the last frame, in a fixed order (first draw first); empty
+  /// unless FrameSettings::count_shading.
+  const std::vector<ShaderUse>& shader_uses() const;
 
  private:
   struct State;
