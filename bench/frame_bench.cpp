@@ -2,12 +2,13 @@
 // llvmpipe peer (../shared/peers/llvmpipe) so both run side by side:
 //   workload=<name> width=W height=H msaa=S threads=T frames=N median_ms=X min_ms=Y
 // A frame is what the peer calls a frame: clear, draw, resolve to a 1-sample image. The scenes are
-// built and the renderer prepared (textures uploaded) before the clock starts, as the peer
-// generates its vertex buffers first.
+// built (demo and courtyard: and baked, quickly) and the renderer prepared (textures uploaded)
+// before the clock starts, as the peer generates its vertex buffers first.
 // stderr gets the CPU, the instruction set and the fast paths turned off (LUXEL_NO_FASTPATH).
 
 #include "machine.hpp"
 
+#include "luxel/bake/bake.hpp"
 #include "luxel/frame/renderer.hpp"
 #include "luxel/rasterizer/fast_paths.hpp"
 #include "luxel/scenes/builtin.hpp"
@@ -62,6 +63,9 @@ int main(int argc, char** argv) {
     std::unique_ptr<luxel::frame::Renderer> renderer;
     try {
       scene = luxel::scenes::make_builtin_scene(name, {settings.width, settings.height});
+      // Scenes that need baked data get a quick bake, before the clock and not timed.
+      if (name == "demo" || name == "courtyard")
+        luxel::bake::attach(scene, luxel::bake::bake(scene, luxel::bake::BakeSettings::quick()));
       renderer = std::make_unique<luxel::frame::Renderer>(scene, settings);
     } catch (const std::exception& e) {
       std::printf("workload=%s skipped reason=\"%s\"\n", name.c_str(), e.what());

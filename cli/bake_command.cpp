@@ -4,13 +4,12 @@
 // (scene.gltf -> scene.bake/), for built-in scenes $XDG_CACHE_HOME/luxel/bake/NAME (or
 // ~/.cache/...). Progress on stderr: a live line on a terminal, one plain line per phase otherwise.
 
+#include "baking.hpp"
 #include "commands.hpp"
 
 #include "luxel/bake/bake.hpp"
 #include "luxel/bake/storage.hpp"
 #include "luxel/scenes/load.hpp"
-
-#include <unistd.h>
 
 #include <cstdio>
 #include <cstdlib>
@@ -28,47 +27,6 @@ struct BakeOptions {
   int threads = 0;
   bool quick = false, force = false, cubes_all_light = false;
 };
-
-/// Where a bake goes when --out is not given; empty when there is nowhere to put it.
-std::string default_folder(const std::string& scene) {
-  namespace fs = std::filesystem;
-  if (scene.rfind("builtin:", 0) == 0) {
-    std::string base;
-    if (const char* x = std::getenv("XDG_CACHE_HOME"); x && *x) base = x;
-    else if (const char* h = std::getenv("HOME"); h && *h) base = std::string(h) + "/.cache";
-    else return {};
-    return (fs::path(base) / "luxel" / "bake" / scene.substr(8)).string();
-  }
-  fs::path p(scene);
-  p.replace_extension(".bake");
-  return p.string();
-}
-
-std::string rate(double rays, double seconds) {
-  char b[32];
-  std::snprintf(b, sizeof b, "%.2f Mrays/s", seconds > 0 ? rays / seconds * 1e-6 : 0.0);
-  return b;
-}
-
-/// Progress on stderr: on a terminal one line rewritten in place; otherwise a line per phase.
-bake::ProgressFn progress_printer() {
-  const bool tty = isatty(STDERR_FILENO) != 0;
-  return [tty](const bake::Progress& p) {
-    char line[256];
-    if (tty) {
-      const double left = p.done > 0 && p.done < p.total ? p.seconds * double(p.total - p.done) / double(p.done) : 0.0;
-      std::snprintf(line, sizeof line, "\r\033[Kluxel bake: %.*s: %llu/%llu, %s, %.1f s, %.0f s left", int(p.phase.size()),
-                    p.phase.data(), static_cast<unsigned long long>(p.done), static_cast<unsigned long long>(p.total),
-                    rate(double(p.rays), p.seconds).c_str(), p.seconds, left);
-      std::cerr << line << (p.finished ? "\n" : "") << std::flush;
-    } else if (p.finished) {
-      std::snprintf(line, sizeof line, "luxel bake: %.*s: %llu done, %llu rays in %.2f s (%s)\n", int(p.phase.size()),
-                    p.phase.data(), static_cast<unsigned long long>(p.total), static_cast<unsigned long long>(p.rays),
-                    p.seconds, rate(double(p.rays), p.seconds).c_str());
-      std::cerr << line << std::flush;
-    }
-  };
-}
 
 }  // namespace
 
@@ -95,7 +53,7 @@ Runner add_bake_command(CLI::App& app) {
       std::cerr << "luxel bake: " << e.what() << "\n";
       return 1;
     }
-    const std::string folder = o->out.empty() ? default_folder(o->scene) : o->out;
+    const std::string folder = o->out.empty() ? default_bake_folder(o->scene) : o->out;
     if (folder.empty()) {
       std::cerr << "luxel bake: " << o->scene << ": no HOME or XDG_CACHE_HOME to keep the bake in; give --out DIR\n";
       return 2;
@@ -123,14 +81,14 @@ Runner add_bake_command(CLI::App& app) {
           std::cerr << "luxel bake: warning: " << e.what() << "; baking again\n";  // a damaged bake is replaced
         }
       }
-      const bake::BakeResult r = bake::bake(*scene, settings, progress_printer());
+      const bake::BakeResult r = bake::bake(*scene, settings, bake_progress_printer());
       for (const std::string& w : r.warnings) std::cerr << "luxel bake: warning: " << w << "\n";
       bake::save_bake(r, *scene, settings, folder);
       std::printf("%s: baked in %.2f s: lightmaps %dx%d (%llu luxels, %d bounces), %llu ambient cubes, %llu rays (%s) -> %s\n",
                   scene->name.c_str(), r.stats.seconds, r.stats.width, r.stats.height,
                   static_cast<unsigned long long>(r.stats.luxels), r.stats.bounces,
                   static_cast<unsigned long long>(r.stats.cube_samples), static_cast<unsigned long long>(r.stats.rays),
-                  rate(double(r.stats.rays), r.stats.seconds).c_str(), folder.c_str());
+                  ray_rate(double(r.stats.rays), r.stats.seconds).c_str(), folder.c_str());
     } catch (const bake::BakeError& e) {
       std::cerr << "luxel bake: " << e.what() << "\n";
       return 1;

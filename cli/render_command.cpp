@@ -2,6 +2,7 @@
 //   --threads --camera N --out FILE --stats]
 // LUXEL_NO_FASTPATH=name,... (or all) turns rasterizer fast paths off (fast_paths.hpp).
 
+#include "baking.hpp"
 #include "commands.hpp"
 
 #include "luxel/frame/renderer.hpp"
@@ -11,7 +12,10 @@
 #include "luxel/scenes/image_io.hpp"
 #include "luxel/scenes/load.hpp"
 
+#include <chrono>
+#include <cstdio>
 #include <cstdlib>
+#include <filesystem>
 
 #include <iostream>
 #include <memory>
@@ -27,6 +31,7 @@ struct RenderOptions {
   std::string model = "ps_3_0";
   int threads = 0;
   std::string out = "out.png";
+  std::string bake = "full";
   bool stats = false;
 };
 }  // namespace
@@ -50,7 +55,11 @@ Runner add_render_command(CLI::App& app) {
       ->capture_default_str();
   cmd->add_option("--threads", options->threads, "Worker threads (0 = one per core)")->check(CLI::Range(0, 256))->capture_default_str();
   cmd->add_option("--out", options->out, "Output image (PNG, TIFF, EXR... by extension)")->capture_default_str();
-  cmd->add_flag("--stats", options->stats, "Print what the draws did");
+  cmd->add_option("--bake", options->bake,
+                  "When the scene needs a bake it lacks (kept as `luxel bake` keeps it): full, or quick (a preview in seconds)")
+      ->check(CLI::IsMember({"full", "quick"}))
+      ->capture_default_str();
+  cmd->add_flag("--stats", options->stats, "Print what the draws did and the pixels each shader combo shaded");
   return [cmd, options]() -> int {
     if (!cmd->parsed()) return -1;
     rasterizer::ContextOptions context_options;
@@ -80,6 +89,34 @@ Runner add_render_command(CLI::App& app) {
       std::cerr << "luxel render: " << e.what() << "\n";
       return 1;
     }
+    // What can fail quickly fails before a bake: the camera, the output folder.
+    try {
+      frame::frame_camera(scene, settings);
+    } catch (const std::invalid_argument& e) {
+      std::cerr << "luxel render: " << e.what() << "\n";
+      return 2;
+    }
+    if (const std::filesystem::path dir = std::filesystem::path(options->out).parent_path();
+        !dir.empty() && !std::filesystem::is_directory(dir)) {
+      std::cerr << "luxel render: " << options->out << ": no such folder to write into\n";
+      return 1;
+    }
+    if (needs_bake(scene)) {
+      const std::string folder = default_bake_folder(options->scene);
+      if (folder.empty()) {
+        std::cerr << "luxel render: " << options->scene << " needs a bake and there is no HOME or XDG_CACHE_HOME to keep it in; run luxel bake --out DIR\n";
+        return 2;
+      }
+      bake::BakeSettings bake_settings = options->bake == "quick" ? bake::BakeSettings::quick() : bake::BakeSettings{};
+      bake_settings.threads = options->threads;
+      try {
+        bake_and_attach(scene, folder, bake_settings, "luxel render");
+      } catch (const std::exception& e) {
+        std::cerr << "luxel render: " << e.what() << "\n";
+        return 1;
+      }
+    }
+    settings.count_shading = options->stats;
     std::unique_ptr<frame::Renderer> renderer;
     try {
       renderer = std::make_unique<frame::Renderer>(scene, settings);
@@ -88,7 +125,9 @@ Runner add_render_command(CLI::App& app) {
       return 2;
     }
     rasterizer::Context ctx(context_options);
+    const auto t0 = std::chrono::steady_clock::now();
     renderer->render(ctx);
+    const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
     try {
       const rasterizer::Image& image = renderer->image();
       scenes::write_image(image.width, image.height, image.rgba, options->out);
@@ -107,7 +146,12 @@ Runner add_render_command(CLI::App& app) {
                 << " stamps_partial=" << s.stamps_partial << " stamps_wide_edges=" << s.stamps_wide_edges
                 << " stamps_shaded=" << s.stamps_shaded
                 << " fast_paths_off=" << rasterizer::fast_paths_off_names(context_options.fast_paths) << "\n";
+      for (const frame::ShaderUse& u : renderer->shader_uses())
+        std::cout << "shader=" << u.family << " combo=" << u.combo << " pixels=" << u.pixels << " slots=" << u.slots << "\n";
     }
+    std::fprintf(stderr, "luxel render: %s as %s, %dx%d, %d samples: %.1f ms, %llu stamps shaded -> %s\n",
+                 scene.name.c_str(), options->model.c_str(), settings.width, settings.height, settings.samples, ms,
+                 static_cast<unsigned long long>(renderer->stats().stamps_shaded), options->out.c_str());
     return 0;
   };
 }

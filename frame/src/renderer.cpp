@@ -1,12 +1,16 @@
 #include "luxel/frame/renderer.hpp"
 
-#include "plain_shaders.hpp"
+#include "model_lighting.hpp"
+#include "source_draws.hpp"
 #include "textures.hpp"
+#include "trivial_unlit.hpp"
 
 #include "luxel/rasterizer/framebuffer.hpp"
 #include "luxel/rasterizer/msaa.hpp"
 #include "luxel/rasterizer/srgb.hpp"
 #include "luxel/scenes/camera_path.hpp"
+#include "luxel/scenes/tangents.hpp"
+#include "luxel/shading/source/normalization_cube.hpp"
 
 #include <glm/ext/matrix_clip_space.hpp>
 #include <glm/ext/matrix_double4x4.hpp>
@@ -68,13 +72,7 @@ glm::mat4 view_projection(const scenes::Camera& c, int width, int height) {
 
 namespace {
 
-/// One mesh, ready to draw: its geometry, its shader's constants and its state.
-struct Draw {
-  Geometry geometry;
-  PipelineState state;
-  std::variant<UnlitVertex, PlainVertex> vertex;
-  PlainPixel pixel{};  // PlainVertex draws only
-};
+using namespace shading::source;
 
 Geometry geometry_of(const scenes::Mesh& m) {
   const auto vertices = static_cast<uint32_t>(m.vertex_count());
@@ -88,36 +86,68 @@ const T* data_or_null(const std::vector<T>& v) {
   return v.empty() ? nullptr : v.data();
 }
 
-bool lit(scenes::ShaderFamily f) { return f != scenes::ShaderFamily::unlit_generic && f != scenes::ShaderFamily::sky; }
+/// The peer workloads' materials (unlit, untextured, no env map, written linear or sRGB, no fog,
+/// exposure 1): UnlitGeneric's base+vertexcolor combo with a white base computes color x vertex
+/// color x 1; the trivial functor computes the same product per vertex (equal up to float
+/// rounding of where the product is taken), and takes the rasterizer's fastest paths.
+bool is_trivial_unlit(const scenes::Material& m, const scenes::Scene& scene, float exposure) {
+  return m.family == scenes::ShaderFamily::unlit_generic && !m.base.bound() && m.envmap == scenes::EnvmapSource::none &&
+         scene.fog.mode == scenes::FogMode::none && exposure == 1.0f && m.alpha == scenes::AlphaMode::opaque &&
+         !m.translucent;
+}
 
-/// The demo's light, with Source's axes: a sun from the upper left, plus a sky-blue ambient that
-/// is brighter facing up.
-PlainLight plain_sun() {
-  PlainLight l;
-  l.ambient = {0.12f, 0.14f, 0.18f};
-  l.ambient_up = {0.10f, 0.13f, 0.20f};
-  l.sun = {1.1f, 1.0f, 0.85f};
-  l.to_sun = {-0.45f, -0.4f, 0.8f};
-  return l;
+glm::vec3 mesh_center(const scenes::Mesh& m) {
+  if (m.positions.empty()) return glm::vec3(0.0f);
+  glm::vec3 lo = m.positions[0], hi = lo;
+  for (const glm::vec3& p : m.positions) {
+    lo = glm::min(lo, p);
+    hi = glm::max(hi, p);
+  }
+  return 0.5f * (lo + hi);
+}
+
+EnvmapMask lightmapped_mask(scenes::EnvmapMask m) {
+  switch (m) {
+    case scenes::EnvmapMask::texture: return EnvmapMask::texture;
+    case scenes::EnvmapMask::base_alpha: return EnvmapMask::base_alpha_inverted;
+    case scenes::EnvmapMask::normal_alpha: return EnvmapMask::normal_alpha;
+    default: return EnvmapMask::none;
+  }
 }
 
 }  // namespace
 
-struct Renderer::State {
+/// Everything a prepared frame holds (FrameState is this).
+struct FrameState {
   const scenes::Scene* scene;
+  FrameSettings settings;
   ColorTarget color;
   DepthStencilTarget depth;
   glm::vec4 clear;
   std::vector<GpuTexture> textures;
   GpuTexture white = white_texture();
-  std::vector<Draw> draws;
-  std::optional<SkyVertex> sky;  // when the scene has a sky cube
+  std::optional<GpuTexture> lightmaps;
+  LightmapPage page;
+  std::optional<GpuTexture> normalization_cube;
+  std::vector<GpuTexture> sky_faces;
+  std::vector<scenes::Mesh> completed_meshes;     // meshes given tangents the frame needed
+  std::vector<std::unique_ptr<VertexSetup>> vertex_setups;
+  std::vector<glm::vec3> sky_positions;
+  std::vector<glm::vec2> sky_uvs;
+  std::vector<UnlitVertex> trivial_vertices;      // the trivial draws' vertex functors
+  struct Pass {
+    std::optional<size_t> trivial;                // index into trivial_vertices, or
+    std::optional<SourceDraw> source;             // a Source shader draw
+    PipelineState state;
+    Geometry geometry;
+  };
+  std::vector<Pass> opaque, sky, translucent;
   Image image;
   DrawStats stats;
   std::vector<ShaderUse> shader_uses;
 
-  State(const scenes::Scene& s, const FrameSettings& f)
-      : scene(&s), color(f.width, f.height, f.samples), depth(f.width, f.height, f.samples) {}
+  FrameState(const scenes::Scene& s, const FrameSettings& f)
+      : scene(&s), settings(f), color(f.width, f.height, f.samples), depth(f.width, f.height, f.samples) {}
 };
 
 namespace {
@@ -130,6 +160,8 @@ void check_settings(const FrameSettings& s) {
     throw std::invalid_argument("msaa " + std::to_string(s.samples) + " is not 1, 2, 4 or 8");
   if (!shading::caps(s.model).pixel)
     throw std::invalid_argument("shader model " + std::string(shading::caps(s.model).name) + " is not a pixel-shader model");
+  if (s.exposure && !(std::isfinite(*s.exposure) && *s.exposure > 0.0f))
+    throw std::invalid_argument("exposure " + std::to_string(*s.exposure) + " is not a positive finite number");
 }
 
 const FrameSettings& checked(const scenes::Scene& scene, const FrameSettings& s) {
@@ -138,58 +170,324 @@ const FrameSettings& checked(const scenes::Scene& scene, const FrameSettings& s)
   return s;
 }
 
+/// Builds the frame's draws: what renderer.hpp promises, one function per family.
+class FrameBuilder {
+ public:
+  FrameBuilder(FrameState& st, const scenes::Camera& camera, const glm::mat4& vp)
+      : st_(st), scene_(*st.scene), model_(st.settings.model), eye_(camera.position), far_(camera.far_plane), vp_(vp) {
+    const scenes::Exposure& e = scene_.exposure;
+    exposure_ = st.settings.exposure ? *st.settings.exposure : std::clamp(1.0f, e.min_scale, e.max_scale);
+    tonemap_ = ToneMapConstants::for_scale(exposure_);
+    if (scene_.fog.mode != scenes::FogMode::none) {
+      fog_settings_.start = scene_.fog.start;
+      fog_settings_.end = scene_.fog.end;
+      fog_settings_.max_density = scene_.fog.max_density;
+      fog_settings_.color = scene_.fog.color;
+      fog_settings_.water_z = scene_.fog.water_z;
+      fog_ = scene_.fog.mode == scenes::FogMode::height ? Fog::height : range_fog_for_model(model_);
+    }
+    fog_constants_ = fog_constants(fog_settings_, eye_, exposure_);
+    lights_ = light_descriptions(scene_);
+    model_of_mesh_.assign(scene_.meshes.size(), -1);
+    for (size_t i = 0; i < scene_.models.size(); ++i)
+      for (int m : scene_.models[i].meshes)
+        if (m >= 0 && m < static_cast<int>(scene_.meshes.size())) model_of_mesh_[static_cast<size_t>(m)] = static_cast<int>(i);
+  }
+
+  void add_mesh(size_t index) {
+    const scenes::Mesh* mesh = &scene_.meshes[index];
+    const scenes::Material& m = mesh->material >= 0 ? scene_.materials[static_cast<size_t>(mesh->material)] : default_material_;
+    FrameState::Pass pass;
+    pass.state = state_of(m);
+    if (is_trivial_unlit(m, scene_, exposure_)) {
+      pass.geometry = geometry_of(*mesh);
+      pass.trivial = st_.trivial_vertices.size();
+      st_.trivial_vertices.push_back(UnlitVertex{mesh->positions.data(), data_or_null(mesh->colors), m.color, vp_});
+      queue(m, *mesh, std::move(pass));
+      return;
+    }
+    if (needs_tangents(m) && mesh->tangents.empty()) mesh = &with_tangents(*mesh);
+    pass.geometry = geometry_of(*mesh);
+    DrawTarget target{pass.state, pass.geometry, vertex_setup(*mesh, m), st_.settings.count_shading};
+    switch (m.family) {
+      case scenes::ShaderFamily::lightmapped_generic: pass.source = lightmapped(*mesh, m, target); break;
+      case scenes::ShaderFamily::vertexlit_generic: pass.source = vertexlit(index, *mesh, m, target); break;
+      case scenes::ShaderFamily::unlit_generic: pass.source = unlit(*mesh, m, target); break;
+      case scenes::ShaderFamily::water:
+      case scenes::ShaderFamily::sky: return;  // water: its passes are not built yet; sky: Scene::sky_texture draws it
+    }
+    queue(m, *mesh, std::move(pass));
+  }
+
+  void add_sky() {
+    if (scene_.sky_texture < 0) return;
+    const scenes::Texture& cube = scene_.textures[static_cast<size_t>(scene_.sky_texture)];
+    if (cube.shape != scenes::TextureShape::cube) return;
+    st_.sky_faces = cube_faces(cube);
+    // Six quads around the eye, each face's texture over the part of the cube map it covers, at
+    // depth 1 (behind everything drawn; only where the clear's depth is left).
+    const float r = 0.5f * far_;  // inside the far plane, corners included
+    st_.sky_positions.clear();
+    st_.sky_uvs.clear();
+    const glm::vec2 corners[4] = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
+    for (int f = 0; f < 6; ++f)
+      for (const glm::vec2& c : corners) {
+        st_.sky_positions.push_back(eye_ + r * rasterizer::cube_direction(static_cast<rasterizer::CubeFace>(f), c.x, c.y));
+        st_.sky_uvs.push_back(c);
+      }
+    for (int f = 0; f < 6; ++f) {
+      FrameState::Pass pass;
+      pass.state.rasterizer.cull = CullMode::None;
+      pass.state.depth_stencil.depth_func = CompareFunc::LessEqual;
+      pass.state.depth_stencil.depth_write = false;
+      pass.state.blend.srgb_write = true;
+      auto setup = std::make_unique<VertexSetup>();
+      setup->positions = st_.sky_positions.data() + 4 * f;
+      setup->uv0 = st_.sky_uvs.data() + 4 * f;
+      setup->view_projection = vp_;
+      setup->at_far_plane = true;
+      static constexpr uint16_t kQuad[6] = {0, 1, 2, 0, 2, 3};
+      pass.geometry = Geometry::indexed(std::span<const uint16_t>(kQuad), 4);
+      SkyParams p;
+      const GpuTexture& face = st_.sky_faces[static_cast<size_t>(f)];
+      p.base = Sampler2D{0, &face.texture, face.sampler};
+      const bool hdr = cube.faces.at(0).is_hdr();
+      p.input_scale = glm::vec4(hdr ? sky_input_scale(SkyFormat::rgba16f) : glm::vec3(1.0f), 1.0f);
+      p.tonemap = tonemap_;
+      DrawTarget target{pass.state, pass.geometry, setup.get(), st_.settings.count_shading};
+      st_.vertex_setups.push_back(std::move(setup));
+      pass.source = sky_draw(model_, target, p);
+      st_.sky.push_back(std::move(pass));
+    }
+  }
+
+  /// The translucent draws with their distances from the eye, in scene order.
+  std::vector<std::pair<float, FrameState::Pass>>& translucent() { return translucent_; }
+
+ private:
+  PipelineState state_of(const scenes::Material& m) const {
+    PipelineState s;
+    s.depth_stencil.depth_func = CompareFunc::Less;
+    s.rasterizer.front_counter_clockwise = true;
+    s.rasterizer.cull = m.double_sided ? CullMode::None : CullMode::CW;
+    s.blend.srgb_write = !m.linear_write;
+    if (m.alpha == scenes::AlphaMode::alpha_test) {
+      s.alpha_test.enable = true;
+      s.alpha_test.func = CompareFunc::GreaterEqual;
+      s.alpha_test.ref = static_cast<uint8_t>(std::lround(std::clamp(m.alpha_cutoff, 0.0f, 1.0f) * 255.0f));
+    }
+    if (translucent(m)) {
+      s.blend.enable = true;
+      s.blend.src = BlendFactor::SrcAlpha;
+      s.blend.dst = BlendFactor::InvSrcAlpha;
+      s.depth_stencil.depth_write = false;
+    }
+    return s;
+  }
+
+  static bool translucent(const scenes::Material& m) { return m.translucent || m.alpha == scenes::AlphaMode::blend; }
+
+  static bool needs_tangents(const scenes::Material& m) {
+    return m.bump.bound() && (m.family == scenes::ShaderFamily::lightmapped_generic || m.family == scenes::ShaderFamily::vertexlit_generic);
+  }
+
+  const scenes::Mesh& with_tangents(const scenes::Mesh& mesh) {
+    scenes::Mesh copy = mesh;
+    try {
+      scenes::generate_tangents(copy);
+    } catch (const std::invalid_argument& e) {
+      throw std::invalid_argument(scene_.name + ": mesh '" + mesh.name + "' has a bump map and " + e.what());
+    }
+    st_.completed_meshes.push_back(std::move(copy));
+    return st_.completed_meshes.back();
+  }
+
+  VertexSetup* vertex_setup(const scenes::Mesh& mesh, const scenes::Material& m) {
+    auto s = std::make_unique<VertexSetup>();
+    s->positions = mesh.positions.data();
+    s->normals = data_or_null(mesh.normals);
+    s->tangents = data_or_null(mesh.tangents);
+    s->uv0 = data_or_null(m.base.uv_set == 1 ? mesh.uv1 : mesh.uv0);
+    s->uv1 = data_or_null(mesh.uv1);
+    s->colors = data_or_null(mesh.colors);
+    s->base_transform = scenes::UvTransform::of(m.base);
+    s->view_projection = vp_;
+    s->fog_c16 = vertex_fog_constant(fog_settings_);
+    st_.vertex_setups.push_back(std::move(s));
+    return st_.vertex_setups.back().get();
+  }
+
+  Sampler2D sampler2d(int slot, const scenes::TextureRef& ref) const {
+    const GpuTexture& t = ref.bound() ? st_.textures[static_cast<size_t>(ref.texture)] : st_.white;
+    return Sampler2D{slot, &t.texture, t.sampler};
+  }
+
+  /// The cube a material reflects (renderer.hpp), or null for none.
+  const GpuTexture* envmap_of(const scenes::Material& m, const scenes::Mesh& mesh) const {
+    auto cube_at = [&](int t) -> const GpuTexture* {
+      if (t < 0 || scene_.textures[static_cast<size_t>(t)].shape != scenes::TextureShape::cube) return nullptr;
+      return &st_.textures[static_cast<size_t>(t)];
+    };
+    switch (m.envmap) {
+      case scenes::EnvmapSource::none: return nullptr;
+      case scenes::EnvmapSource::texture: return cube_at(m.envmap_texture.texture);
+      case scenes::EnvmapSource::nearest_sample: {
+        const glm::vec3 c = mesh_center(mesh);
+        const scenes::CubemapSample* best = nullptr;
+        for (const scenes::CubemapSample& s : scene_.cubemap_samples)
+          if (s.texture >= 0 && (!best || glm::distance(s.position, c) < glm::distance(best->position, c))) best = &s;
+        return best ? cube_at(best->texture) : cube_at(scene_.sky_texture);
+      }
+    }
+    return nullptr;
+  }
+
+  SourceDraw lightmapped(const scenes::Mesh& mesh, const scenes::Material& m, const DrawTarget& target) {
+    if (!st_.lightmaps)
+      throw std::invalid_argument(scene_.name + ": mesh '" + mesh.name +
+                                  "' is LightmappedGeneric and the scene has no baked lightmaps (luxel bake)");
+    if (mesh.uv1.empty())
+      throw std::invalid_argument(scene_.name + ": mesh '" + mesh.name + "' is LightmappedGeneric and has no lightmap coordinates (uv1)");
+    const GpuTexture* env = envmap_of(m, mesh);
+    LightmappedMaterial lm;
+    lm.bump = m.bump.bound();
+    lm.envmap = env != nullptr;
+    lm.mask = lightmapped_mask(m.envmap_mask);
+    if (lm.mask == EnvmapMask::normal_alpha && !lm.bump) lm.mask = EnvmapMask::none;
+    lm.envmap_contrast = m.envmap_contrast;
+    lm.envmap_saturation = m.envmap_saturation;
+    lm.fresnel_reflection = m.fresnel_reflection;
+    lm.selfillum_tint_not_one = m.self_illum && m.self_illum_tint != glm::vec3(1.0f);
+    LightmappedCombo combo = choose_lightmapped_combo(lm);
+    combo.fog = fog_;
+    LightmappedGenericParams p;
+    p.base = sampler2d(0, m.base);
+    p.lightmap = Sampler2D{1, &st_.lightmaps->texture, st_.lightmaps->sampler};
+    if (env) p.envmap = SamplerCube{2, &env->texture, env->sampler};
+    p.bump = sampler2d(4, m.bump);
+    p.envmap_mask = sampler2d(5, m.envmap_mask_texture);
+    p.tint_lightmap_scale = glm::vec4(glm::vec3(m.color) * lightmap_scale_factor(LightmapFormat::hdr_float16), m.color.a);
+    p.envmap_tint = glm::vec4(m.envmap_tint, 0.0f);
+    p.envmap_contrast_saturation = glm::vec4(m.envmap_contrast, m.envmap_saturation, 0.0f, 0.0f);
+    p.fresnel = fresnel_constant(m.fresnel_reflection);
+    p.tonemap = tonemap_;
+    p.fog = fog_constants_;
+    return lightmapped_draw(combo, model_, target, p, st_.page, eye_);
+  }
+
+  SourceDraw vertexlit(size_t index, const scenes::Mesh& mesh, const scenes::Material& m, const DrawTarget& target) {
+    const int model = model_of_mesh_[index];
+    const glm::vec3 centroid = model >= 0 ? scene_.models[static_cast<size_t>(model)].centroid : mesh_center(mesh);
+    const ModelLighting lighting = light_model(scene_, lights_, centroid, m);
+    const bool phong = m.phong && model_ != shading::ShaderModel::ps_2_0;  // Valve's helper turns $phong off on ps_2_0
+    VertexLitCombo wanted;
+    wanted.lights = lighting.kept > 0 ? 2 : 0;
+    wanted.bump = m.bump.bound();
+    wanted.phong = phong;
+    wanted.exponent_texture = phong && m.phong_exponent_texture.bound();
+    wanted.rim = phong && m.rim;
+    wanted.half_lambert = m.half_lambert || phong;
+    wanted.pixel_attenuation = true;
+    wanted.fog = fog_;
+    wanted.normalization_cube = model_ == shading::ShaderModel::ps_2_0;
+    const std::optional<VertexLitCombo> combo = fitting_vertexlit_combo(wanted, model_);
+    if (!combo)
+      throw std::invalid_argument(scene_.name + ": material '" + m.name + "': no VertexLitGeneric combo " + wanted.name() +
+                                  " fits " + std::string(shading::caps(model_).name));
+    VertexLitParams p;
+    p.base = sampler2d(0, m.base);
+    p.bump = sampler2d(3, m.bump);
+    p.phong_exponent = sampler2d(7, m.phong_exponent_texture);
+    p.ambient = lighting.cube;
+    p.lights = lighting.lights;
+    p.eye_position = glm::vec4(eye_, 1.0f);
+    p.modulation = m.color;
+    p.phong_tint_boost = glm::vec4(m.phong_tint, m.phong_boost);
+    p.phong_params = glm::vec4(m.phong_exponent, m.rim_exponent, m.rim_boost, m.rim_mask ? 1.0f : 0.0f);
+    p.fresnel_ranges = encode_fresnel_ranges(m.phong_fresnel_ranges.x, m.phong_fresnel_ranges.y, m.phong_fresnel_ranges.z);
+    p.tonemap = tonemap_;
+    p.fog = fog_constants_;
+    if (combo->normalization_cube) {
+      if (!st_.normalization_cube) st_.normalization_cube = GpuTexture{normalization_cube_map(), normalization_cube_sampler()};
+      p.normalization_cube.texture = &st_.normalization_cube->texture;
+    }
+    target.vertex->lights = lighting.lights;
+    return vertexlit_draw(*combo, model_, target, p);
+  }
+
+  SourceDraw unlit(const scenes::Mesh& mesh, const scenes::Material& m, const DrawTarget& target) {
+    const GpuTexture* env = envmap_of(m, mesh);
+    UnlitCombo combo;
+    combo.envmap = env != nullptr;
+    if (combo.envmap)
+      combo.mask = m.envmap_mask == scenes::EnvmapMask::texture      ? UnlitEnvmapMask::texture
+                   : m.envmap_mask == scenes::EnvmapMask::base_alpha ? UnlitEnvmapMask::base_alpha_inverted
+                                                                     : UnlitEnvmapMask::none;
+    combo.vertex_color = !mesh.colors.empty();
+    combo.fog = fog_;
+    UnlitGenericParams p;
+    p.base = sampler2d(0, m.base);
+    if (env) p.envmap = SamplerCube{1, &env->texture, env->sampler};
+    p.envmap_mask = sampler2d(4, m.envmap_mask_texture);
+    p.envmap_tint = glm::vec4(m.envmap_tint, 0.0f);
+    p.modulation = m.color;
+    p.envmap_contrast = glm::vec4(m.envmap_contrast);
+    p.envmap_saturation = glm::vec4(m.envmap_saturation);
+    p.tonemap = tonemap_;
+    p.fog = fog_constants_;
+    return unlit_draw(combo, model_, target, p, eye_);
+  }
+
+  void queue(const scenes::Material& m, const scenes::Mesh& mesh, FrameState::Pass pass) {
+    if (translucent(m)) {
+      translucent_.emplace_back(glm::distance(mesh_center(mesh), eye_), std::move(pass));
+    } else {
+      st_.opaque.push_back(std::move(pass));
+    }
+  }
+
+  FrameState& st_;
+  const scenes::Scene& scene_;
+  shading::ShaderModel model_;
+  glm::vec3 eye_;
+  float far_;
+  glm::mat4 vp_;
+  float exposure_ = 1.0f;
+  ToneMapConstants tonemap_;
+  FogSettings fog_settings_;
+  Fog fog_ = Fog::none;
+  FogConstants fog_constants_;
+  std::vector<LightDesc> lights_;
+  std::vector<int> model_of_mesh_;
+  const scenes::Material default_material_;
+  std::vector<std::pair<float, FrameState::Pass>> translucent_;
+};
+
 }  // namespace
+
+struct Renderer::State : FrameState {
+  using FrameState::FrameState;
+};
 
 Renderer::Renderer(const scenes::Scene& scene, const FrameSettings& settings)
     : state_(std::make_unique<State>(scene, checked(scene, settings))) {
   State& st = *state_;
   const scenes::Camera camera = frame_camera(scene, settings);
-  const glm::dmat4 vp_d = view_projection_d(camera, settings.width, settings.height);
-  const glm::mat4 vp(vp_d);
+  const glm::mat4 vp(view_projection_d(camera, settings.width, settings.height));
   st.clear = glm::vec4(float(linear_to_srgb(std::clamp(scene.background.r, 0.0f, 1.0f))),
                        float(linear_to_srgb(std::clamp(scene.background.g, 0.0f, 1.0f))),
                        float(linear_to_srgb(std::clamp(scene.background.b, 0.0f, 1.0f))), 1.0f);
   st.textures.reserve(scene.textures.size());
   for (const scenes::Texture& t : scene.textures) st.textures.push_back(upload(t));
-
-  const scenes::Material default_material;
-  for (const scenes::Mesh& mesh : scene.meshes) {
-    const scenes::Material& m = mesh.material >= 0 ? scene.materials[mesh.material] : default_material;
-    Draw d;
-    d.geometry = geometry_of(mesh);
-    d.state.depth_stencil.depth_func = CompareFunc::Less;
-    d.state.rasterizer.front_counter_clockwise = true;
-    d.state.rasterizer.cull = m.double_sided ? CullMode::None : CullMode::CW;
-    d.state.blend.srgb_write = !m.linear_write;
-    if (!lit(m.family) && !m.base.bound()) {
-      d.vertex = UnlitVertex{mesh.positions.data(), data_or_null(mesh.colors), m.color, vp};
-    } else {
-      PlainVertex v{};
-      v.positions = mesh.positions.data();
-      v.normals = data_or_null(mesh.normals);
-      v.uvs = data_or_null(m.base.uv_set == 1 ? mesh.uv1 : mesh.uv0);
-      v.colors = data_or_null(mesh.colors);
-      v.color = m.color;
-      v.uv_transform = scenes::UvTransform::of(m.base);
-      v.view_projection = vp;
-      d.vertex = v;
-      const GpuTexture& t = m.base.bound() ? st.textures[m.base.texture] : st.white;
-      d.pixel = PlainPixel{&t.texture, &t.sampler, lit(m.family) ? plain_sun() : PlainLight{}};
-    }
-    st.draws.push_back(d);
-  }
-  if (scene.sky_texture >= 0 && scene.textures[scene.sky_texture].shape == scenes::TextureShape::cube) {
-    const glm::dmat4 inverse = glm::inverse(vp_d);
-    SkyVertex sky{};
-    const glm::vec2 corners[3] = {{-1, -1}, {3, -1}, {-1, 3}};
-    for (int i = 0; i < 3; ++i) {
-      const glm::dvec4 near_point = inverse * glm::dvec4(corners[i].x, corners[i].y, 0, 1);
-      const glm::dvec4 far_point = inverse * glm::dvec4(corners[i].x, corners[i].y, 1, 1);
-      sky.clip[i] = glm::vec4(corners[i], 1, 1);
-      sky.direction[i] = glm::vec4(glm::vec3(glm::dvec3(far_point) / far_point.w - glm::dvec3(near_point) / near_point.w), 0);
-    }
-    st.sky = sky;
-  }
+  if (scene.lightmaps) st.lightmaps = lightmap_page(scene, st.page);
+  st.completed_meshes.reserve(scene.meshes.size());  // the draws point into it
+  FrameBuilder builder(st, camera, vp);
+  for (size_t i = 0; i < scene.meshes.size(); ++i) builder.add_mesh(i);
+  builder.add_sky();
+  // Translucent draws back to front: the farthest mesh center first, ties in scene order.
+  auto& translucent = builder.translucent();
+  std::stable_sort(translucent.begin(), translucent.end(), [](const auto& a, const auto& b) { return a.first > b.first; });
+  for (auto& [distance, pass] : translucent) st.translucent.push_back(std::move(pass));
 }
 
 Renderer::~Renderer() = default;
@@ -202,24 +500,33 @@ void Renderer::render(Context& ctx) {
   clear_color(ctx, st.color, st.clear);
   clear_depth(ctx, st.depth, 1.0f);  // as the peer: stencil neither cleared nor used
   const Framebuffer fb{&st.color, &st.depth};
-  for (const Draw& d : st.draws) {
-    if (const auto* unlit = std::get_if<UnlitVertex>(&d.vertex))
-      draw(ctx, fb, d.state, d.geometry, *unlit, UnlitPixel{});
-    else
-      draw(ctx, fb, d.state, d.geometry, std::get<PlainVertex>(d.vertex), d.pixel);
-  }
-  if (st.sky) {
-    // Last, where nothing else was drawn: depth is still the clear's 1, the sky's too.
-    PipelineState state;
-    state.rasterizer.cull = CullMode::None;
-    state.depth_stencil.depth_func = CompareFunc::LessEqual;
-    state.depth_stencil.depth_write = false;
-    state.blend.srgb_write = true;
-    const GpuTexture& cube = st.textures[st.scene->sky_texture];
-    draw(ctx, fb, state, Geometry::non_indexed(3), *st.sky, SkyPixel{&cube.texture, &cube.sampler});
-  }
+  // Opaque surfaces in scene order, then the sky where none was drawn, then the translucent
+  // ones back to front.
+  for (auto* passes : {&st.opaque, &st.sky, &st.translucent})
+    for (FrameState::Pass& p : *passes) {
+      if (p.trivial) {
+        draw(ctx, fb, p.state, p.geometry, st.trivial_vertices[*p.trivial], UnlitPixel{});
+      } else {
+        p.source->pixels->store(0, std::memory_order_relaxed);
+        p.source->run(ctx, fb);
+      }
+    }
   resolve_into(ctx, st.color, st.image);
   st.stats = ctx.stats();
+  st.shader_uses.clear();
+  if (st.settings.count_shading) {
+    // One entry per combo, in order of first use.
+    for (auto* passes : {&st.opaque, &st.sky, &st.translucent})
+      for (const FrameState::Pass& p : *passes) {
+        if (!p.source) continue;
+        const uint64_t pixels = p.source->pixels->load(std::memory_order_relaxed);
+        auto it = std::find_if(st.shader_uses.begin(), st.shader_uses.end(), [&](const ShaderUse& u) {
+          return u.family == p.source->family && u.combo == p.source->combo;
+        });
+        if (it == st.shader_uses.end()) st.shader_uses.push_back({p.source->family, p.source->combo, pixels, p.source->slots});
+        else it->pixels += pixels;
+      }
+  }
 }
 
 const Image& Renderer::image() const { return state_->image; }

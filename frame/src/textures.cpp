@@ -2,6 +2,8 @@
 
 #include <glm/vec4.hpp>
 
+#include <stdexcept>
+#include <string>
 #include <vector>
 
 namespace luxel::frame {
@@ -57,6 +59,63 @@ GpuTexture white_texture() {
   const uint8_t white[4] = {255, 255, 255, 255};
   g.texture.upload(0, std::span<const uint8_t>(white));
   return g;
+}
+
+namespace {
+
+/// Texel (x, y) of an image as linear rgba (8-bit images are read as stored: lightmaps and skies
+/// are linear or HDR).
+glm::vec4 texel(const scenes::PixelImage& image, int x, int y) {
+  const size_t i = (static_cast<size_t>(y) * image.width + x) * 4;
+  if (image.is_hdr()) return {image.rgba32f[i], image.rgba32f[i + 1], image.rgba32f[i + 2], image.rgba32f[i + 3]};
+  return glm::vec4(image.rgba8[i], image.rgba8[i + 1], image.rgba8[i + 2], image.rgba8[i + 3]) / 255.0f;
+}
+
+}  // namespace
+
+GpuTexture lightmap_page(const scenes::Scene& scene, shading::source::LightmapPage& page) {
+  const scenes::Lightmaps& maps = scene.lightmaps.value();
+  const int ids[4] = {maps.flat, maps.textures[0], maps.textures[1], maps.textures[2]};
+  const int w = maps.width, h = maps.height;
+  constexpr int kGap = 2;
+  const int page_width = 4 * w + 3 * kGap;
+  std::vector<glm::vec4> texels(static_cast<size_t>(page_width) * h, glm::vec4(0.0f));
+  for (int k = 0; k < 4; ++k) {
+    if (ids[k] < 0 || ids[k] >= static_cast<int>(scene.textures.size()))
+      throw std::invalid_argument(scene.name + ": lightmap " + std::to_string(k) + " is missing");
+    const scenes::PixelImage& image = scene.textures[static_cast<size_t>(ids[k])].faces.at(0);
+    if (image.width != w || image.height != h)
+      throw std::invalid_argument(scene.name + ": lightmap " + std::to_string(k) + " is " + std::to_string(image.width) +
+                                  "x" + std::to_string(image.height) + ", not the atlas's " + std::to_string(w) + "x" +
+                                  std::to_string(h));
+    const int x0 = k * (w + kGap);
+    for (int y = 0; y < h; ++y) {
+      glm::vec4* row = texels.data() + static_cast<size_t>(y) * page_width;
+      for (int x = 0; x < w; ++x) row[x0 + x] = texel(image, x, y);
+      if (k > 0) row[x0 - 1] = row[x0];
+      if (k < 3) row[x0 + w] = row[x0 + w - 1];
+    }
+    page.offset[static_cast<size_t>(k)] = static_cast<float>(x0) / page_width;
+  }
+  page.scale = static_cast<float>(w) / page_width;
+  GpuTexture g{rasterizer::Texture::create_2d(page_width, h, rasterizer::TextureFormat::RGBA16F, 1), {}};
+  g.texture.upload(0, std::span<const glm::vec4>(texels));
+  g.sampler.u = g.sampler.v = rasterizer::Address::Clamp;
+  g.sampler.mag = g.sampler.min = rasterizer::Filter::Linear;
+  g.sampler.mip = rasterizer::MipFilter::None;
+  return g;
+}
+
+std::vector<GpuTexture> cube_faces(const scenes::Texture& cube) {
+  std::vector<GpuTexture> faces;
+  for (int f = 0; f < 6; ++f) {
+    scenes::Texture face = cube;
+    face.shape = scenes::TextureShape::flat;
+    face.faces = {cube.faces.at(static_cast<size_t>(f))};
+    face.wrap_u = face.wrap_v = scenes::Wrap::clamp;
+    faces.push_back(upload(face));
+  }
+  return faces;
 }
 
 }  // namespace luxel::frame

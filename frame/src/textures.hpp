@@ -3,6 +3,9 @@
 
 #include "luxel/rasterizer/texture.hpp"
 #include "luxel/scenes/scene.hpp"
+#include "luxel/shading/source/adapter.hpp"
+
+#include <vector>
 
 namespace luxel::frame {
 
@@ -17,5 +20,16 @@ GpuTexture upload(const scenes::Texture& texture);
 
 /// A 1x1 opaque white texture: what an untextured material samples.
 GpuTexture white_texture();
+
+/// The lightmap page LightmappedGeneric samples: the scene's flat and three RNM lightmaps side by
+/// side (RGBA16F, bilinear, no mips, as Source's lightmap pages), each followed by a copy of its
+/// last column and preceded by a copy of its first, so that bilinear reads near a map's edge
+/// never reach its neighbour. `page` receives where each map sits. Throws std::invalid_argument
+/// when the scene's Lightmaps are incomplete or of different sizes.
+GpuTexture lightmap_page(const scenes::Scene& scene, shading::source::LightmapPage& page);
+
+/// The six faces of a cube texture as 2D textures (D3D face order), for the skybox's six quads:
+/// face f's texel (s, t) is the cube's texel (s, t) of face f. Clamped at the edges.
+std::vector<GpuTexture> cube_faces(const scenes::Texture& cube);
 
 }  // namespace luxel::frame

@@ -1,12 +1,43 @@
 #include "frame/frame_support.hpp"
 
+#include "luxel/bake/bake.hpp"
+
 #include <gtest/gtest.h>
+
+#include <map>
+#include <mutex>
+#include <string>
 
 namespace luxel::frame {
 
+namespace {
+
+/// A bake cheap enough for every test binary, sanitizers included: the frame's tests need baked
+/// data to exist and to be the same every time, not to be converged.
+bake::BakeSettings test_bake_settings() {
+  bake::BakeSettings s = bake::BakeSettings::quick();
+  s.samples = 16;
+  s.cube_samples = 16;
+  s.supersample = 1;
+  s.max_bounces = 2;
+  return s;
+}
+
+}  // namespace
+
+void attach_test_bake(scenes::Scene& scene) {
+  static std::mutex mutex;
+  static std::map<std::string, bake::BakeResult> bakes;  // per scene name: built-ins bake once per binary
+  std::lock_guard lock(mutex);
+  auto it = bakes.find(scene.name);
+  if (it == bakes.end()) it = bakes.emplace(scene.name, bake::bake(scene, test_bake_settings())).first;
+  bake::attach(scene, it->second);
+}
+
 RenderedFrame render_builtin(std::string_view name, const FrameSettings& settings,
                              const rasterizer::ContextOptions& options, int frames) {
-  const scenes::Scene scene = scenes::make_builtin_scene(name, {settings.width, settings.height});
+  scenes::Scene scene = scenes::make_builtin_scene(name, {settings.width, settings.height});
+  if (name == "demo" || name == "courtyard") attach_test_bake(scene);
   Renderer renderer(scene, settings);
   rasterizer::Context ctx(options);
   RenderedFrame f;

@@ -13,7 +13,11 @@ struct RenderedFrame {
   rasterizer::DrawStats stats;
 };
 
-/// Builds builtin:`name` for the settings' size, renders `frames` frames with `options`, and
+/// Attaches a cheap, deterministic bake (lightmaps, ambient cubes) to `scene`, baked once per
+/// scene name and test binary.
+void attach_test_bake(scenes::Scene& scene);
+
+/// Builds builtin:`name` for the settings' size (with attach_test_bake where it needs a bake), renders `frames` frames with `options`, and
 /// returns the last (checking that every frame gave the same bytes).
 RenderedFrame render_builtin(std::string_view name, const FrameSettings& settings,
                              const rasterizer::ContextOptions& options, int frames = 1);

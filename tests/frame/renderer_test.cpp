@@ -1,6 +1,7 @@
 // frame::Renderer's contract (renderer.hpp) on small scenes whose every pixel is known: sRGB
-// decode of base textures and encode on write, the plain lighting formula, $linearwrite, the
-// background, culling and depth order.
+// decode of base textures and encode on write, the Source shaders' lighting from an ambient cube,
+// a light and lightmaps, what differs per shader model, $linearwrite, the background, culling
+// and depth order.
 
 #include "luxel/frame/renderer.hpp"
 
@@ -83,20 +84,153 @@ TEST(Renderer, UnlitBaseTextureRoundTripsThroughSrgb) {
   expect_everywhere(render(s), 0, kSize, {200, 100, 50}, "decoded on read, encoded on write");
 }
 
-TEST(Renderer, LitMaterialsTakeThePlainSunAndSky) {
+/// A scene lit only by an irradiance volume of one sample and one directional light.
+scenes::Scene lit_by_cube_and_sun(bool half_lambert) {
   scenes::Scene s = top_down();
+  scenes::IrradianceVolume v;
+  v.min = v.max = glm::vec3(0.0f);
+  v.counts = {1, 1, 1};
+  v.cubes = {{glm::vec3(9.0f), glm::vec3(9.0f), glm::vec3(9.0f), glm::vec3(9.0f), glm::vec3(0.5f, 0.25f, 0.125f), glm::vec3(9.0f)}};
+  s.irradiance_volume = v;
+  scenes::Light sun;
+  sun.type = scenes::LightType::directional;
+  sun.direction = glm::normalize(glm::vec3(-0.6f, 0.0f, -0.8f));  // arrives from (0.6, 0, 0.8): n.l = 0.8
+  sun.color = {0.5f, 0.375f, 0.25f};
+  s.lights = {sun};
   scenes::Material m;  // VertexLitGeneric, untextured: white
-  m.color = {0.4f, 0.3f, 0.2f, 1.0f};
+  m.color = {0.8f, 0.6f, 0.4f, 1.0f};
+  m.half_lambert = half_lambert;
   s.materials = {m};
   s.meshes = {square(-1, -1, 1, 1, 0, 0)};
-  s.meshes[0].colors.assign(4, {0.5f, 1.0f, 1.0f, 1.0f});
-  // renderer.hpp's formula for a normal facing up: ambient + ambient_up + sun * (n . to_sun), with
-  // the demo's constants and to_sun = (-0.45, -0.4, 0.8).
-  const double light[3] = {0.12 + 0.10 + 1.1 * 0.8, 0.14 + 0.13 + 1.0 * 0.8, 0.18 + 0.20 + 0.85 * 0.8};
-  const double albedo[3] = {0.4 * 0.5, 0.3, 0.2};
-  double expected[3];
-  for (int c = 0; c < 3; ++c) expected[c] = 255 * encode(albedo[c] * light[c]);
-  expect_everywhere(render(s), 0, kSize, expected, "lit");
+  return s;
+}
+
+rasterizer::Image render_as(const scenes::Scene& s, shading::ShaderModel model) {
+  FrameSettings f{kSize, kSize, 4};
+  f.model = model;
+  Renderer r(s, f);
+  rasterizer::Context ctx(2);
+  r.render(ctx);
+  return r.image();
+}
+
+TEST(Renderer, VertexLitTakesTheAmbientCubeAndTheLight) {
+  // Normal +Z: the cube's +Z side, whatever the other five hold; the light by (Half-)Lambert.
+  for (bool half_lambert : {false, true}) {
+    const double term = half_lambert ? 0.9 * 0.9 : 0.8;
+    const double albedo[3] = {0.8, 0.6, 0.4}, cube[3] = {0.5, 0.25, 0.125}, light[3] = {0.5, 0.375, 0.25};
+    double expected[3];
+    for (int c = 0; c < 3; ++c) expected[c] = 255 * encode(albedo[c] * (cube[c] + light[c] * term));
+    const scenes::Scene s = lit_by_cube_and_sun(half_lambert);
+    expect_everywhere(render_as(s, shading::ShaderModel::ps_3_0), 0, kSize, expected, "ps_3_0");
+    expect_everywhere(render_as(s, shading::ShaderModel::ps_2_b), 0, kSize, expected, "ps_2_b");
+  }
+}
+
+TEST(Renderer, Ps20DropsPhongAndTheOtherModelsAgree) {
+  scenes::Scene s = lit_by_cube_and_sun(true);
+  s.materials[0].phong = true;
+  s.materials[0].phong_exponent = 4;
+  s.materials[0].phong_boost = 8;
+  s.cameras[0].projection = scenes::Projection::perspective;  // a view vector that varies
+  s.cameras[0].position = {0.3f, -2.0f, 3.0f};
+  s.cameras[0].vertical_fov = 1.0f;
+  const rasterizer::Image ps30 = render_as(s, shading::ShaderModel::ps_3_0);
+  const rasterizer::Image ps2b = render_as(s, shading::ShaderModel::ps_2_b);
+  const rasterizer::Image ps20 = render_as(s, shading::ShaderModel::ps_2_0);
+  EXPECT_TRUE(ps30.rgba == ps2b.rgba) << "ps_2_b and ps_3_0 run the same combo";
+  EXPECT_FALSE(ps30.rgba == ps20.rgba) << "ps_2_0 has no Phong";
+  s.materials[0].phong = false;
+  const rasterizer::Image plain30 = render_as(s, shading::ShaderModel::ps_3_0);
+  int brighter = 0;
+  for (size_t i = 0; i < ps30.rgba.size(); ++i) brighter += ps30.rgba[i] > plain30.rgba[i];
+  EXPECT_GT(brighter, 0) << "Phong adds light on ps_3_0";
+}
+
+/// Four constant lightmaps (flat, then the three basis maps) attached to `s`.
+void attach_lightmaps(scenes::Scene& s, const glm::vec3& flat, const glm::vec3 (&basis)[3]) {
+  scenes::Lightmaps maps;
+  maps.width = maps.height = 4;
+  auto add = [&](const glm::vec3& c) {
+    scenes::Texture t;
+    t.name = "lightmap";
+    t.color_space = scenes::ColorSpace::linear;
+    scenes::PixelImage image;
+    image.width = image.height = 4;
+    for (int i = 0; i < 16; ++i) image.rgba32f.insert(image.rgba32f.end(), {c.r, c.g, c.b, 1.0f});
+    t.faces = {image};
+    t.mipmaps = false;
+    s.textures.push_back(t);
+    return static_cast<int>(s.textures.size()) - 1;
+  };
+  maps.flat = add(flat);
+  for (int k = 0; k < 3; ++k) maps.textures[static_cast<size_t>(k)] = add(basis[k]);
+  s.lightmaps = maps;
+}
+
+TEST(Renderer, LightmappedReadsTheFlatMapOrWeighsTheBasisMaps) {
+  scenes::Scene s = top_down();
+  const glm::vec3 basis[3] = {{0.3f, 0.1f, 0.2f}, {0.6f, 0.2f, 0.1f}, {0.9f, 0.3f, 0.05f}};
+  attach_lightmaps(s, {0.2f, 0.4f, 0.6f}, basis);
+  scenes::Texture bump;  // a tilted normal: (160, 100, 230) -> n = 2 t - 1
+  bump.name = "bump";
+  bump.color_space = scenes::ColorSpace::linear;
+  scenes::PixelImage image;
+  image.width = image.height = 4;
+  for (int i = 0; i < 16; ++i) image.rgba8.insert(image.rgba8.end(), {160, 100, 230, 255});
+  bump.faces = {image};
+  s.textures.push_back(bump);
+  scenes::Material flat, bumped;
+  flat.family = bumped.family = scenes::ShaderFamily::lightmapped_generic;
+  flat.color = bumped.color = {0.5f, 1.0f, 0.8f, 1.0f};
+  bumped.bump.texture = static_cast<int>(s.textures.size()) - 1;
+  s.materials = {flat, bumped};
+  s.meshes = {square(-1, -1, 0, 1, 0, 0), square(0, -1, 1, 1, 0, 1)};
+  for (scenes::Mesh& m : s.meshes) {
+    m.uv1 = m.uv0;
+    m.tangents.assign(4, {1, 0, 0, 1});
+  }
+  // The SDK's weights, in double: d_i = sat(n . b_i)^2, diffuse = sum d_i L_i / sum d_i.
+  const double n[3] = {2 * 160 / 255.0 - 1, 2 * 100 / 255.0 - 1, 2 * 230 / 255.0 - 1};
+  const double b[3][3] = {{std::sqrt(2.0 / 3), 0, 1 / std::sqrt(3.0)},
+                          {-1 / std::sqrt(6.0), 1 / std::sqrt(2.0), 1 / std::sqrt(3.0)},
+                          {-1 / std::sqrt(6.0), -1 / std::sqrt(2.0), 1 / std::sqrt(3.0)}};
+  double d[3], sum = 0;
+  for (int i = 0; i < 3; ++i) {
+    const double dot = std::clamp(n[0] * b[i][0] + n[1] * b[i][1] + n[2] * b[i][2], 0.0, 1.0);
+    d[i] = dot * dot;
+    sum += d[i];
+  }
+  const double tint[3] = {0.5, 1.0, 0.8}, flat_light[3] = {0.2, 0.4, 0.6};
+  double expected_flat[3], expected_bump[3];
+  for (int c = 0; c < 3; ++c) {
+    expected_flat[c] = 255 * encode(tint[c] * flat_light[c]);
+    double weighted = 0;
+    for (int i = 0; i < 3; ++i) weighted += d[i] * basis[i][c];
+    expected_bump[c] = 255 * encode(tint[c] * weighted / sum);
+  }
+  const rasterizer::Image image30 = render_as(s, shading::ShaderModel::ps_3_0);
+  expect_everywhere(image30, 0, kSize / 2, expected_flat, "flat lightmap");
+  expect_everywhere(image30, kSize / 2, kSize, expected_bump, "RNM");
+  s.lightmaps.reset();
+  EXPECT_THROW(Renderer(s, {kSize, kSize, 4}), std::invalid_argument) << "no lightmaps: refused, not drawn black";
+}
+
+TEST(Renderer, CountsThePixelsEachComboShades) {
+  scenes::Scene s = lit_by_cube_and_sun(true);
+  FrameSettings f{kSize, kSize, 4};
+  f.count_shading = true;
+  Renderer r(s, f);
+  rasterizer::Context ctx(2);
+  r.render(ctx);
+  ASSERT_EQ(r.shader_uses().size(), 1u);
+  EXPECT_EQ(r.shader_uses()[0].family, "VertexLitGeneric");
+  EXPECT_EQ(r.shader_uses()[0].combo, "2 lights");
+  // Every pixel once, and the pixels on the diagonal between the square's two triangles (samples
+  // in both) once per triangle: at most one more per row.
+  EXPECT_GE(r.shader_uses()[0].pixels, uint64_t(kSize) * kSize);
+  EXPECT_LE(r.shader_uses()[0].pixels, uint64_t(kSize) * kSize + kSize);
+  EXPECT_GT(r.shader_uses()[0].slots, 10);
 }
 
 TEST(Renderer, LinearWriteAndTheBackground) {

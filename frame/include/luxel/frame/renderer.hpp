@@ -5,15 +5,38 @@
 // its mips, the camera's view-projection, one draw per mesh) and then renders any number of
 // frames, each what the llvmpipe peer calls a frame: clear, draw, resolve.
 //
-// Until the Source frame (#8) arrives, meshes are drawn with one plain shader:
-//   base texture x material color x vertex color x (sky ambient + a fixed sun's Lambert term)
-// lit for every family but UnlitGeneric and Sky, which take the product unlit. A mesh whose
-// material is unlit with no base texture (vertex colors at most: the peer workloads) is drawn
-// with a trivial pixel functor (rasterizer/draw.hpp), the fastest path there is. Everything is
-// opaque and depth-tested with LESS; single-sided materials cull their back faces (front faces
-// are counter-clockwise, scene.hpp). Colors are sRGB-encoded on write unless the material says
-// $linearwrite; the background clears to Scene::background, sRGB-encoded, and a scene with a sky
-// cube (Scene::sky_texture) shows it wherever no mesh was drawn, unlit.
+// The Source frame: every mesh is drawn with its material's Source shader family, the static
+// combo chosen from what the material and the scene have (shading/source/adapter.hpp feeds it),
+// as the frame's shader model (FrameSettings::model) would run it:
+//  - LightmappedGeneric (world surfaces): the scene's baked lightmaps (Scene::lightmaps, flat +
+//    three RNM maps; a scene without them is refused: `luxel bake`, or `luxel render` which bakes
+//    first), the base and bump textures, the env map of the nearest baked cube-map sample (or the
+//    material's own cube; with none baked yet, the sky cube), masks and Valve's fast-path choice.
+//  - VertexLitGeneric (models, and vertex-lit meshes outside any model): per pixel, the ambient
+//    cube of the irradiance-volume sample nearest the model's centroid, the two most significant
+//    lights, every other light folded into the cube, the hero boost; a scene with no light at all
+//    fullbright (model_lighting.hpp); Phong,
+//    exponent texture, rim and Half-Lambert as the material asks, Phong off on ps_2_0 (as Valve's
+//    helper), the normalization cube map on ps_2_0, attenuation per pixel where the combo fits
+//    the model, per vertex (the SDK's way) where only that fits.
+//  - UnlitGeneric: base x $color (x vertex color), env map as above. A material that is unlit,
+//    untextured, opaque, without env map, in a scene without fog at exposure 1 (the peer
+//    workloads) is drawn with a trivial functor computing the same product, the rasterizer's
+//    fastest path.
+//  - The sky cube (Scene::sky_texture): Sky_HDR on six quads at depth 1, where nothing else was
+//    drawn.
+//  - Fog: the scene's range fog on every shader, the combo each model draws it with (ps_2_0: the
+//    fixed-function vertex fog).
+//  - Every shader ends in the tone-map epilogue with a fixed exposure (FrameSettings::exposure,
+//    else the scene's Exposure clamped around 1) and writes 8-bit RGBA, sRGB-encoded unless the
+//    material says $linearwrite; MSAA resolves to the image.
+// Order: opaque meshes in scene order (depth LESS, single-sided materials cull their back faces,
+// front faces counter-clockwise), alpha-tested ones with D3D9's alpha test (GREATEREQUAL
+// $alphatestreference), then the sky, then translucent meshes back to front by the distance of
+// their centers from the eye (blended, no depth write). The background clears to
+// Scene::background, sRGB-encoded.
+// Not drawn yet: water (its reflection and refraction passes), detail textures, env maps on
+// models, self-illumination; sky-family meshes (the sky is Scene::sky_texture).
 //
 // Conventions: the view is Source's (+Z up, right-handed), projections are Direct3D's (depth in
 // [0, 1]). The view-projection matrix is computed in double and rounded once, so that a camera
@@ -43,6 +66,8 @@ struct FrameSettings {
   std::optional<float> path_time = std::nullopt;  ///< set: the camera of Scene::camera_path at this time, seconds
   /// The pixel-shader model the Source shaders are drawn as: ps_2_0, ps_2_b or ps_3_0.
   shading::ShaderModel model = shading::ShaderModel::ps_3_0;
+  /// The tone-map scale (LINEAR_LIGHT_SCALE); unset: the scene's Exposure clamped around 1.
+  std::optional<float> exposure = std::nullopt;
   /// Count the pixels each shader combo shades (Renderer::shader_uses); off, a frame counts nothing.
   bool count_shading = false;
 };
@@ -68,7 +93,8 @@ class Renderer {
   /// Prepares `scene`, which must outlive the renderer (it reads the meshes in place). Throws
   /// std::invalid_argument naming the problem for an invalid scene (scenes::validate), bad
   /// settings (size outside 1..kMaxTargetSize, samples not 1, 2, 4 or 8, a model that is
-  /// not a pixel-shader model) or a missing camera.
+  /// not a pixel-shader model, an exposure that is not positive and finite), a missing camera,
+  /// or what the scene lacks for its materials (lightmaps, uv1, normals for tangents).
   Renderer(const scenes::Scene& scene, const FrameSettings& settings);
   ~Renderer();
   Renderer(Renderer&&) noexcept;

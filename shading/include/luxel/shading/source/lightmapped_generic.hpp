@@ -70,6 +70,7 @@ struct LightmappedCombo {
   }
   /// ... on model m: the fog type decides (fog.hpp).
   constexpr bool valid(ShaderModel m) const { return valid() && fog_valid(fog, m); }
+  friend constexpr bool operator==(const LightmappedCombo&, const LightmappedCombo&) = default;
   std::string name() const {
     static const char* masks[] = {"", "+basealphamask", "+normalalphamask", "+envmapmask"};
     static const char* paths[] = {"", "+contrast1", "+full"};

@@ -52,6 +52,7 @@ struct UnlitCombo {
   constexpr bool valid() const { return (envmap || mask == UnlitEnvmapMask::none) && !(vertex_color && diffuse_lighting); }
   /// ... on model m: the fog type decides (fog.hpp).
   constexpr bool valid(ShaderModel m) const { return valid() && fog_valid(fog, m); }
+  friend constexpr bool operator==(const UnlitCombo&, const UnlitCombo&) = default;
   std::string name() const {
     static const char* details[] = {"", "+detail_mod2x", "+detail_additive"};
     static const char* masks[] = {"", "+basealphamask", "+envmapmask"};

@@ -79,6 +79,7 @@ struct VertexLitCombo {
     if (sh9_ambient && m != ShaderModel::ps_3_0) return false;
     return true;
   }
+  friend constexpr bool operator==(const VertexLitCombo&, const VertexLitCombo&) = default;
   std::string name() const {
     std::string n = std::to_string(lights) + (lights == 1 ? " light" : " lights");
     if (bump) n += "+bump";

@@ -1,0 +1,34 @@
+#pragma once
+// What `luxel bake` and the commands that render share: where a scene's bake is kept, the
+// progress display, and baking on demand (a render of a scene whose materials need baked data
+// that the scene lacks bakes it first, or loads the bake kept from before).
+
+#include "luxel/bake/bake.hpp"
+#include "luxel/scenes/scene.hpp"
+
+#include <string>
+
+namespace luxel::cli {
+
+/// Where the bake of scene argument `scene` goes when no folder is given: beside a scene file
+/// (scene.gltf -> scene.bake/); for built-in scenes $XDG_CACHE_HOME/luxel/bake/NAME (or
+/// ~/.cache/...). Empty when there is nowhere to put it (no HOME nor XDG_CACHE_HOME).
+std::string default_bake_folder(const std::string& scene);
+
+/// Progress on stderr: on a terminal one line rewritten in place; otherwise a line per phase.
+bake::ProgressFn bake_progress_printer();
+
+/// "1.23 Mrays/s".
+std::string ray_rate(double rays, double seconds);
+
+/// Whether rendering `scene` needs a bake it does not have: LightmappedGeneric meshes without
+/// Scene::lightmaps, or an irradiance volume without cubes while VertexLitGeneric meshes read it.
+bool needs_bake(const scenes::Scene& scene);
+
+/// Loads the bake of `scene` kept in `folder` if it is for these inputs, else bakes (with
+/// progress) and keeps it there; then attaches it. `command` prefixes the messages on stderr.
+/// Throws std::runtime_error (bake::BakeError included) naming the problem.
+void bake_and_attach(scenes::Scene& scene, const std::string& folder, const bake::BakeSettings& settings,
+                     const char* command);
+
+}  // namespace luxel::cli

@@ -1,0 +1,39 @@
+#pragma once
+// Private: what lights a model (SOURCE_FACTS 2.2, 3.4): the ambient cube of the irradiance-volume
+// sample nearest its centroid, its two most significant local lights, every other light folded
+// into that cube on the CPU (shading/source/light_folding.hpp: significance = delivered
+// luminance at the centroid, ties by scene order), then the hero boost where the material asks.
+//
+// Hero boost: a material's hero_boost h > 1 turns on light_folding.hpp's ambient boost with the
+// floor h x its default fraction (the cube is raised until its mean luminance is at least
+// 0.25 h times the kept lights' at the centroid); h <= 1 leaves the cube as it is.
+// Light ranges (scenes::Light::range) are not applied: Source's models see every light.
+// No irradiance volume (a scene not baked, or one without a volume): a black cube, except in a
+// scene with no light at all (no lights, no sky: a glTF model on its own), which is drawn
+// fullbright, a white cube, as Source draws a map that was never lit.
+
+#include "luxel/scenes/scene.hpp"
+#include "luxel/shading/source/light_folding.hpp"
+
+#include <array>
+#include <span>
+#include <vector>
+
+namespace luxel::frame {
+
+struct ModelLighting {
+  shading::source::AmbientCube cube;
+  std::array<shading::source::LocalLight, 4> lights{};  ///< the kept lights first; the rest black
+  int kept = 0;                                          ///< 0, 1 or 2
+};
+
+/// The scene's lights as the shaders' light descriptions, in scene order.
+std::vector<shading::source::LightDesc> light_descriptions(const scenes::Scene& scene);
+
+/// The cube of the volume sample nearest `point` (clamped to the grid), or black / white (above).
+shading::source::AmbientCube nearest_ambient_cube(const scenes::Scene& scene, const glm::vec3& point);
+
+ModelLighting light_model(const scenes::Scene& scene, std::span<const shading::source::LightDesc> lights,
+                          const glm::vec3& centroid, const scenes::Material& material);
+
+}  // namespace luxel::frame

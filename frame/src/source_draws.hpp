@@ -1,0 +1,112 @@
+#pragma once
+// Private: one draw of a Source shader, ready to run: the family's combo chosen, its pixel
+// functor built through the shading adapter (shading/source/adapter.hpp), its vertex stage
+// (source_vertex.hpp) told which attributes to write.
+//
+// Each family compiles the combos the frame can choose (its "combo space", in its own source
+// file, so the families compile in parallel): every combination of the material switches the
+// frame reads, for the fog types a scene can ask, that the SDK's rules allow on some pixel
+// model. A combo outside it is a frame bug (std::logic_error), never a silent substitute.
+
+#include "source_vertex.hpp"
+
+#include "luxel/rasterizer/context.hpp"
+#include "luxel/rasterizer/draw.hpp"
+#include "luxel/shading/shader_model.hpp"
+#include "luxel/shading/source/adapter.hpp"
+
+#include <array>
+#include <atomic>
+#include <cstdint>
+#include <functional>
+#include <memory>
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <utility>
+
+namespace luxel::frame {
+
+/// A draw with its shader, and what it reports (Renderer::shader_uses).
+struct SourceDraw {
+  std::string family;  ///< the catalog's family name
+  std::string combo;   ///< the combo's name
+  int slots = 0;       ///< counted DX9 slots per pixel on the frame's model
+  std::unique_ptr<std::atomic<uint64_t>> pixels = std::make_unique<std::atomic<uint64_t>>(0);
+  std::function<void(rasterizer::Context&, const rasterizer::Framebuffer&)> run;
+};
+
+/// Where a draw goes: its state, its triangles, its vertex stage (whose attribute list the
+/// family functions fill in for the combo).
+struct DrawTarget {
+  rasterizer::PipelineState state;
+  rasterizer::Geometry geometry;
+  VertexSetup* vertex = nullptr;
+  bool count_pixels = false;
+};
+
+SourceDraw lightmapped_draw(const shading::source::LightmappedCombo& combo, shading::ShaderModel model,
+                            const DrawTarget& target, const shading::source::LightmappedGenericParams& params,
+                            const shading::source::LightmapPage& page, const glm::vec3& eye);
+
+/// `wanted` if it exists on `model`, else the same with the SDK's per-vertex attenuation (what
+/// ps_2_0's budget forces), else nothing.
+std::optional<shading::source::VertexLitCombo> fitting_vertexlit_combo(shading::source::VertexLitCombo wanted,
+                                                                       shading::ShaderModel model);
+SourceDraw vertexlit_draw(const shading::source::VertexLitCombo& combo, shading::ShaderModel model,
+                          const DrawTarget& target, const shading::source::VertexLitParams& params);
+
+SourceDraw unlit_draw(const shading::source::UnlitCombo& combo, shading::ShaderModel model, const DrawTarget& target,
+                      const shading::source::UnlitGenericParams& params, const glm::vec3& eye);
+
+SourceDraw sky_draw(shading::ShaderModel model, const DrawTarget& target, const shading::source::SkyParams& params);
+
+namespace detail {
+
+/// Calls fn.template operator()<C>() for the C of kSpace equal to `combo`; false when none is.
+template <auto kSpace, class Combo, class Fn>
+bool with_combo(const Combo& combo, Fn&& fn) {
+  return [&]<size_t... I>(std::index_sequence<I...>) {
+    return ((kSpace[I] == combo ? (fn.template operator()<kSpace[I]>(), true) : false) || ...);
+  }(std::make_index_sequence<kSpace.size()>());
+}
+
+/// A combo space being built at compile time: room for Cap, `count` used.
+template <class Combo, size_t Cap>
+struct ComboList {
+  std::array<Combo, Cap> items{};
+  size_t count = 0;
+  constexpr void add(const Combo& c) { items[count++] = c; }
+};
+
+/// The used part of a ComboList, as an array of exactly that size.
+template <auto kList>
+constexpr auto compact() {
+  std::array<typename decltype(kList.items)::value_type, kList.count> out{};
+  for (size_t i = 0; i < kList.count; ++i) out[i] = kList.items[i];
+  return out;
+}
+
+/// The draw of pixel functor `ps` (its counter wired when counting).
+template <class PS>
+SourceDraw make_source_draw(PS ps, const DrawTarget& target, std::string family, std::string combo, int slots) {
+  SourceDraw d;
+  d.family = std::move(family);
+  d.combo = std::move(combo);
+  d.slots = slots;
+  if (target.count_pixels) ps.pixels = d.pixels.get();
+  target.vertex->attributes = PS::kAttributes;
+  const SourceVertex<PS::kVaryings> vs{target.vertex};
+  d.run = [ps, vs, state = target.state, geometry = target.geometry](rasterizer::Context& ctx,
+                                                                    const rasterizer::Framebuffer& fb) {
+    rasterizer::draw(ctx, fb, state, geometry, vs, ps);
+  };
+  return d;
+}
+
+[[noreturn]] inline void outside_space(const char* family, const std::string& combo) {
+  throw std::logic_error(std::string(family) + " combo " + combo + " is outside the frame's combo space");
+}
+
+}  // namespace detail
+}  // namespace luxel::frame
