@@ -2,6 +2,7 @@
 // A plain row-major RGBA8 image (top row first): the rasterizer's resolve target. Writing it to a
 // file is for scenes/image_io.hpp (the rasterizer knows nothing about files).
 
+#include <cstddef>
 #include <cstdint>
 #include <vector>
 
