@@ -1,0 +1,112 @@
+#include "frame_options.hpp"
+
+#include "baking.hpp"
+
+#include "luxel/rasterizer/fast_paths.hpp"
+#include "luxel/scenes/builtin.hpp"
+#include "luxel/scenes/load.hpp"
+
+#include <cstdlib>
+#include <filesystem>
+#include <iostream>
+#include <stdexcept>
+#include <utility>
+
+namespace luxel::cli {
+
+void FrameOptions::add_to(CLI::App& cmd) {
+  std::string names;
+  for (const std::string& n : scenes::builtin_scene_names()) names += (names.empty() ? "" : ", ") + n;
+  cmd.add_option("--scene", scene, "Scene to render: FILE.gltf, FILE.glb or builtin:NAME (" + names + ")")->capture_default_str();
+  cmd.add_option("--width", settings.width, "Image width in pixels")->check(CLI::Range(1, 8192))->capture_default_str();
+  cmd.add_option("--height", settings.height, "Image height in pixels")->check(CLI::Range(1, 8192))->capture_default_str();
+  cmd.add_option("--msaa", settings.samples, "Samples per pixel: 1, 2, 4 or 8")
+      ->check(CLI::IsMember({1, 2, 4, 8}))
+      ->capture_default_str();
+  cmd.add_option("--camera", settings.camera, "Which of the scene's cameras to look through (0 = the first)")
+      ->check(CLI::NonNegativeNumber)
+      ->capture_default_str();
+  cmd.add_option("--threads", threads, "Worker threads (0 = one per core)")->check(CLI::Range(0, 256))->capture_default_str();
+  cmd.add_option("--bake", bake,
+                 "When the scene needs a bake it lacks (kept as `luxel bake` keeps it): full, or quick (a preview in seconds)")
+      ->check(CLI::IsMember({"full", "quick"}))
+      ->capture_default_str();
+}
+
+std::optional<rasterizer::ContextOptions> FrameOptions::context_options(const std::string& command, int& code) const {
+  rasterizer::ContextOptions options;
+  options.threads = threads;
+  if (const char* off = std::getenv("LUXEL_NO_FASTPATH")) {
+    try {
+      options.fast_paths = rasterizer::parse_fast_paths_off(off);
+    } catch (const std::invalid_argument& e) {
+      std::cerr << "luxel " << command << ": LUXEL_NO_FASTPATH: " << e.what() << "\n";
+      code = 2;
+      return std::nullopt;
+    }
+  }
+  return options;
+}
+
+std::optional<scenes::Scene> FrameOptions::prepare_scene(const std::string& command, frame::FrameSettings& frame_settings,
+                                                         const std::string& out, int& code) const {
+  scenes::GltfImportOptions gltf;
+  if (scene.rfind("builtin:", 0) != 0) gltf.camera = std::exchange(frame_settings.camera, 0);
+  std::optional<scenes::Scene> loaded;
+  try {
+    loaded = scenes::load_scene(scene, gltf, {frame_settings.width, frame_settings.height});
+  } catch (const scenes::SceneArgumentError& e) {
+    std::cerr << "luxel " << command << ": --scene " << e.what() << "\n";
+    code = 2;
+    return std::nullopt;
+  } catch (const std::exception& e) {
+    std::cerr << "luxel " << command << ": " << e.what() << "\n";
+    code = 1;
+    return std::nullopt;
+  }
+  try {
+    frame::frame_camera(*loaded, frame_settings);
+  } catch (const std::invalid_argument& e) {
+    std::cerr << "luxel " << command << ": " << e.what() << "\n";
+    code = 2;
+    return std::nullopt;
+  }
+  if (const std::filesystem::path dir = std::filesystem::path(out).parent_path();
+      !dir.empty() && !std::filesystem::is_directory(dir)) {
+    std::cerr << "luxel " << command << ": " << out << ": no such folder to write into\n";
+    code = 1;
+    return std::nullopt;
+  }
+  if (needs_bake(*loaded)) {
+    const std::string folder = default_bake_folder(scene);
+    if (folder.empty()) {
+      std::cerr << "luxel " << command << ": " << scene
+                << " needs a bake and there is no HOME or XDG_CACHE_HOME to keep it in; run luxel bake --out DIR\n";
+      code = 2;
+      return std::nullopt;
+    }
+    bake::BakeSettings bake_settings = bake == "quick" ? bake::BakeSettings::quick() : bake::BakeSettings{};
+    bake_settings.threads = threads;
+    try {
+      bake_and_attach(*loaded, folder, bake_settings, ("luxel " + command).c_str());
+    } catch (const std::exception& e) {
+      std::cerr << "luxel " << command << ": " << e.what() << "\n";
+      code = 1;
+      return std::nullopt;
+    }
+  }
+  return loaded;
+}
+
+std::unique_ptr<frame::Renderer> make_renderer(const std::string& command, const scenes::Scene& scene,
+                                               const frame::FrameSettings& settings, int& code) {
+  try {
+    return std::make_unique<frame::Renderer>(scene, settings);
+  } catch (const std::invalid_argument& e) {
+    std::cerr << "luxel " << command << ": " << e.what() << "\n";
+    code = 2;
+    return nullptr;
+  }
+}
+
+}  // namespace luxel::cli

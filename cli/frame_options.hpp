@@ -1,0 +1,48 @@
+#pragma once
+// The options of the commands that render frames (`luxel render`, `luxel compare`): the scene, its
+// camera, the image size, MSAA, worker threads and the bake made on demand, the LUXEL_NO_FASTPATH
+// switches, and how each of them is reported when it is bad: one line on stderr naming the
+// argument, exit 2 for an argument (an unknown built-in, a camera the scene lacks, a bad switch),
+// 1 for a file that cannot be read or written.
+
+#include "luxel/frame/renderer.hpp"
+#include "luxel/rasterizer/context.hpp"
+#include "luxel/scenes/scene.hpp"
+
+#include <CLI/CLI.hpp>
+
+#include <memory>
+#include <optional>
+#include <string>
+
+namespace luxel::cli {
+
+struct FrameOptions {
+  std::string scene = "builtin:demo";
+  frame::FrameSettings settings;  ///< size, samples, camera (the model is each command's own)
+  int threads = 0;
+  std::string bake = "full";      ///< the bake made on demand: full or quick
+
+  /// Registers --scene --width --height --msaa --camera --threads --bake on `cmd`.
+  void add_to(CLI::App& cmd);
+
+  /// The rasterizer context's options: the threads and LUXEL_NO_FASTPATH; nullopt after printing
+  /// one line (exit code 2 in `code`).
+  std::optional<rasterizer::ContextOptions> context_options(const std::string& command, int& code) const;
+
+  /// The scene, ready to render with `settings` (a copy of this->settings with the command's own
+  /// fields set): loaded (a file's camera N is made its first on import, as `luxel info` and
+  /// `export` do, and `settings` then looks through camera 0; a built-in is built for the
+  /// settings' size); then what can fail quickly is checked before a bake: the camera, and that
+  /// the folder of `out` (the command's output path or prefix) exists; then the bake it needs and
+  /// lacks is loaded or made (cli/baking.hpp). nullopt after printing one line, with `code` set.
+  std::optional<scenes::Scene> prepare_scene(const std::string& command, frame::FrameSettings& settings,
+                                             const std::string& out, int& code) const;
+};
+
+/// A renderer of `scene` (which must outlive it) with `settings`; nullptr after printing one line
+/// for settings the renderer refuses, exit code 2 in `code`.
+std::unique_ptr<frame::Renderer> make_renderer(const std::string& command, const scenes::Scene& scene,
+                                               const frame::FrameSettings& settings, int& code);
+
+}  // namespace luxel::cli
