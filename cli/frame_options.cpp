@@ -1,10 +1,10 @@
 #include "frame_options.hpp"
 
 #include "baking.hpp"
+#include "scene_argument.hpp"
 
 #include "luxel/rasterizer/fast_paths.hpp"
 #include "luxel/scenes/builtin.hpp"
-#include "luxel/scenes/load.hpp"
 
 #include <cstdlib>
 #include <filesystem>
@@ -52,18 +52,9 @@ std::optional<scenes::Scene> FrameOptions::prepare_scene(const std::string& comm
                                                          const std::string& out, int& code) const {
   scenes::GltfImportOptions gltf;
   if (scene.rfind("builtin:", 0) != 0) gltf.camera = std::exchange(frame_settings.camera, 0);
-  std::optional<scenes::Scene> loaded;
-  try {
-    loaded = scenes::load_scene(scene, gltf, {frame_settings.width, frame_settings.height});
-  } catch (const scenes::SceneArgumentError& e) {
-    std::cerr << "luxel " << command << ": --scene " << e.what() << "\n";
-    code = 2;
-    return std::nullopt;
-  } catch (const std::exception& e) {
-    std::cerr << "luxel " << command << ": " << e.what() << "\n";
-    code = 1;
-    return std::nullopt;
-  }
+  std::optional<scenes::Scene> loaded =
+      load_scene_or_report(command, scene, gltf, {frame_settings.width, frame_settings.height}, code);
+  if (!loaded) return std::nullopt;
   try {
     frame::frame_camera(*loaded, frame_settings);
   } catch (const std::invalid_argument& e) {

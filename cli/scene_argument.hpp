@@ -1,7 +1,7 @@
 #pragma once
-// `--scene SCENE [--camera N]`, shared by the commands that read a scene, and how they report a
-// scene that cannot be read: one line, exit 2 for an argument that names no scene, 1 for a file
-// that cannot be read.
+// `--scene SCENE [--camera N]`, shared by the commands that read a scene (render and compare take
+// theirs from frame_options.hpp), and how they all report a scene that cannot be read: one line,
+// exit 2 for an argument that names no scene, 1 for a file that cannot be read.
 
 #include "luxel/scenes/load.hpp"
 
@@ -12,6 +12,22 @@
 #include <string>
 
 namespace luxel::cli {
+
+/// scenes::load_scene(arg, gltf, builtin), or nullopt after printing one line and setting `code`.
+inline std::optional<scenes::Scene> load_scene_or_report(const std::string& command, const std::string& arg,
+                                                         const scenes::GltfImportOptions& gltf,
+                                                         const scenes::BuiltinOptions& builtin, int& code) {
+  try {
+    return scenes::load_scene(arg, gltf, builtin);
+  } catch (const scenes::SceneArgumentError& e) {
+    std::cerr << "luxel " << command << ": --scene " << e.what() << "\n";
+    code = 2;
+  } catch (const std::exception& e) {
+    std::cerr << "luxel " << command << ": " << e.what() << "\n";
+    code = 1;
+  }
+  return std::nullopt;
+}
 
 struct SceneArgument {
   std::string scene;
@@ -28,16 +44,7 @@ struct SceneArgument {
   std::optional<scenes::Scene> load(const std::string& command, int& code) const {
     scenes::GltfImportOptions options;
     options.camera = camera;
-    try {
-      return scenes::load_scene(scene, options);
-    } catch (const scenes::SceneArgumentError& e) {
-      std::cerr << "luxel " << command << ": --scene " << e.what() << "\n";
-      code = 2;
-    } catch (const std::exception& e) {
-      std::cerr << "luxel " << command << ": " << e.what() << "\n";
-      code = 1;
-    }
-    return std::nullopt;
+    return load_scene_or_report(command, scene, options, {}, code);
   }
 };
 
