@@ -11,6 +11,7 @@ namespace luxel::cli {
 using Runner = std::function<int()>;
 
 Runner add_render_command(CLI::App& app);
+Runner add_compare_command(CLI::App& app);
 Runner add_cost_command(CLI::App& app);
 Runner add_export_command(CLI::App& app);
 Runner add_info_command(CLI::App& app);

@@ -1,4 +1,4 @@
-// luxel: render stills, count shader costs, export and describe scenes, bake lightmaps (see `luxel --help`).
+// luxel: render stills, compare shader models, count shader costs, export and describe scenes, bake lightmaps (see `luxel --help`).
 
 #include "commands.hpp"
 
@@ -12,7 +12,8 @@ int main(int argc, char** argv) {
   app.failure_message([](const CLI::App* a, const CLI::Error& e) {
     return std::string(a->get_name().empty() ? "luxel" : a->get_name()) + ": " + e.what() + " (see --help)\n";
   });
-  std::vector<luxel::cli::Runner> runners = {luxel::cli::add_render_command(app), luxel::cli::add_cost_command(app),
+  std::vector<luxel::cli::Runner> runners = {luxel::cli::add_render_command(app), luxel::cli::add_compare_command(app),
+                                            luxel::cli::add_cost_command(app),
                                             luxel::cli::add_export_command(app), luxel::cli::add_info_command(app),
                                             luxel::cli::add_bake_command(app)};
   try {

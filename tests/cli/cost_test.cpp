@@ -7,13 +7,11 @@
 #include "luxel/shading/source/catalog.hpp"
 #include "luxel/shading/source/common.hpp"
 #include "luxel/shading/source/vertexlit_vertex_shader.hpp"
+#include "cli/run_luxel.hpp"
 
 #include <gtest/gtest.h>
-#include <sys/wait.h>
 
 #include <algorithm>
-#include <array>
-#include <cstdio>
 #include <map>
 #include <set>
 #include <sstream>
@@ -23,22 +21,8 @@
 namespace luxel::shading::source {
 namespace {
 
-struct Process {
-  int exit_code = -1;
-  std::string out;
-};
-
-Process run_luxel(const std::string& args) {
-  Process r;
-  FILE* pipe = popen((std::string(LUXEL_BINARY) + " " + args + " 2>&1").c_str(), "r");
-  if (!pipe) return r;
-  std::array<char, 4096> buf;
-  size_t n;
-  while ((n = std::fread(buf.data(), 1, buf.size(), pipe)) > 0) r.out.append(buf.data(), n);
-  const int status = pclose(pipe);
-  r.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  return r;
-}
+using cli::test::Process;
+using cli::test::run_luxel;
 
 std::string trim(const std::string& s) {
   const size_t a = s.find_first_not_of(' '), b = s.find_last_not_of(' ');
@@ -65,7 +49,7 @@ std::map<std::string, std::vector<std::string>> table_rows(const std::string& ou
 }
 
 TEST(CostCommand, PrintsEveryCatalogVariantOnItsModelsWithTheCountedCost) {
-  const Process run = run_luxel("cost --pixels 64 --repeats 1");
+  const Process run = run_luxel("cost --pixels 64 --repeats 1 2>&1");
   ASSERT_EQ(run.exit_code, 0) << run.out;
   int rows = 0;
   const auto table = table_rows(run.out, rows);
@@ -117,7 +101,7 @@ TEST(CostCommand, PrintsEveryCatalogVariantOnItsModelsWithTheCountedCost) {
 }
 
 TEST(CostCommand, PrintsOnlyTheVertexShaderWhenAskedFor) {
-  const Process run = run_luxel("cost --shader vertexlit_vs --pixels 64 --repeats 1");
+  const Process run = run_luxel("cost --shader vertexlit_vs --pixels 64 --repeats 1 2>&1");
   ASSERT_EQ(run.exit_code, 0) << run.out;
   int rows = 0;
   const auto table = table_rows(run.out, rows);
@@ -132,7 +116,7 @@ TEST(CostCommand, PrintsOnlyTheVertexShaderWhenAskedFor) {
 }
 
 TEST(CostCommand, PrintsTheAmbientCubeCountsAndTheCpu) {
-  const Process run = run_luxel("cost --shader luminance --pixels 64 --repeats 1");
+  const Process run = run_luxel("cost --shader luminance --pixels 64 --repeats 1 2>&1");
   ASSERT_EQ(run.exit_code, 0) << run.out;
   const AmbientCube cube;
   auto body = [&](CountedInputs& in) { return ambient_light<Counted>(in.vector<3>(), cube); };

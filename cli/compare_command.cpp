@@ -1,0 +1,250 @@
+// luxel compare --scene SCENE [--models ps_2_0,ps_2_b,ps_3_0] [--width --height --msaa --threads --camera N
+//   --bake full|quick] [--frames N] --out PREFIX
+// Renders the scene as each shader model and compares every pair (frame/image_difference.hpp) of
+// first frames, the frames `luxel render --model` writes:
+//   PREFIX.png   the frames labelled with their model, then a heat map per pair ("ps_2_0 vs ps_2_b")
+//                and the heat map's legend (compare_sheet.hpp);
+//   PREFIX.json  per model: ms per frame (median of --frames timed frames after one warm-up), the
+//                counted slots per pixel and the shader combos behind them; per pair: PSNR, max and
+//                mean error in 8-bit steps, the share of pixels that differ, each side's ms and
+//                slots per pixel;
+//   stdout       the pair table; stderr: one summary line.
+// Slots per pixel = sum(pixels x slots) / sum(pixels) over the combos the frame ran
+// (frame::Renderer::shader_uses); null in JSON and "n/a" in the table when the frame counted none.
+// A PSNR is null in JSON ("inf" in the table) when the two frames are identical.
+
+#include "commands.hpp"
+#include "compare_sheet.hpp"
+#include "frame_options.hpp"
+
+#include "luxel/frame/image_difference.hpp"
+#include "luxel/frame/renderer.hpp"
+#include "luxel/scenes/image_io.hpp"
+#include "luxel/shading/shader_model.hpp"
+
+#include <nlohmann/json.hpp>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <iostream>
+#include <memory>
+#include <optional>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace luxel::cli {
+
+namespace {
+
+struct CompareOptions {
+  FrameOptions frame;
+  std::string models = "ps_2_0,ps_2_b,ps_3_0";
+  int frames = 5;
+  std::string out;
+};
+
+/// What one model's frame gave.
+struct ModelRun {
+  std::string name;
+  rasterizer::Image image;
+  std::vector<double> ms;  ///< the timed frames, sorted
+  std::vector<frame::ShaderUse> uses;
+
+  double median_ms() const {
+    const size_t n = ms.size();
+    return n % 2 ? ms[n / 2] : (ms[n / 2 - 1] + ms[n / 2]) / 2;
+  }
+  /// sum(pixels x slots) / sum(pixels), or nullopt when the frame counted no shading.
+  std::optional<double> slots_per_pixel() const {
+    double pixels = 0, slots = 0;
+    for (const frame::ShaderUse& u : uses) {
+      pixels += double(u.pixels);
+      slots += double(u.pixels) * u.slots;
+    }
+    if (pixels == 0) return std::nullopt;
+    return slots / pixels;
+  }
+};
+
+/// The models named by --models, in order; nullopt after printing one line (exit 2).
+std::optional<std::vector<shading::ShaderModel>> parse_models(const std::string& list) {
+  std::vector<shading::ShaderModel> models;
+  std::istringstream names(list);
+  std::string name;
+  try {
+    while (std::getline(names, name, ',')) {
+      const shading::ShaderModel m = shading::parse_pixel_model(name);
+      if (std::find(models.begin(), models.end(), m) != models.end())
+        throw std::invalid_argument(name + " is named twice");
+      models.push_back(m);
+    }
+    if (models.size() < 2) throw std::invalid_argument("name at least two models to compare, comma-separated");
+  } catch (const std::invalid_argument& e) {
+    std::cerr << "luxel compare: --models " << list << ": " << e.what() << "\n";
+    return std::nullopt;
+  }
+  return models;
+}
+
+nlohmann::json optional_number(std::optional<double> v) { return v ? nlohmann::json(*v) : nlohmann::json(nullptr); }
+
+std::string fixed(std::optional<double> v, int decimals) {
+  if (!v) return "n/a";
+  if (std::isinf(*v)) return "inf";
+  char b[64];
+  std::snprintf(b, sizeof b, "%.*f", decimals, *v);
+  return b;
+}
+
+struct Pair {
+  const ModelRun* a;
+  const ModelRun* b;
+  frame::ImageDifference difference;
+  rasterizer::Image heat;
+  std::string label() const { return a->name + " vs " + b->name; }
+};
+
+nlohmann::json to_json(const CompareOptions& o, const std::vector<ModelRun>& runs, const std::vector<Pair>& pairs) {
+  nlohmann::json j;
+  j["scene"] = o.frame.scene;
+  j["width"] = o.frame.settings.width;
+  j["height"] = o.frame.settings.height;
+  j["msaa"] = o.frame.settings.samples;
+  j["camera"] = o.frame.settings.camera;
+  j["threads"] = o.frame.threads;
+  j["frames"] = o.frames;
+  j["models"] = nlohmann::json::array();
+  for (const ModelRun& r : runs) {
+    nlohmann::json uses = nlohmann::json::array();
+    for (const frame::ShaderUse& u : r.uses)
+      uses.push_back({{"family", u.family}, {"combo", u.combo}, {"pixels", u.pixels}, {"slots", u.slots}});
+    j["models"].push_back({{"model", r.name},
+                           {"ms_per_frame", r.median_ms()},
+                           {"ms_min", r.ms.front()},
+                           {"ms_max", r.ms.back()},
+                           {"slots_per_pixel", optional_number(r.slots_per_pixel())},
+                           {"shader_uses", uses}});
+  }
+  j["pairs"] = nlohmann::json::array();
+  for (const Pair& p : pairs) {
+    const frame::ImageDifference& d = p.difference;
+    j["pairs"].push_back({{"a", p.a->name},
+                          {"b", p.b->name},
+                          {"psnr_db", d.identical() ? nlohmann::json(nullptr) : nlohmann::json(d.psnr_db)},
+                          {"max_error_steps", d.max_error},
+                          {"mean_error_steps", d.mean_error},
+                          {"differing_pixels", d.differing_pixels},
+                          {"differing_share", d.differing_share()},
+                          {"ms_per_frame", {p.a->median_ms(), p.b->median_ms()}},
+                          {"slots_per_pixel", {optional_number(p.a->slots_per_pixel()), optional_number(p.b->slots_per_pixel())}}});
+  }
+  return j;
+}
+
+void print_table(const std::vector<Pair>& pairs) {
+  std::printf("%-18s %8s %4s %10s %8s %19s %19s\n", "pair", "PSNR dB", "max", "mean steps", "differ", "ms/frame a / b",
+              "slots/pixel a / b");
+  for (const Pair& p : pairs) {
+    const frame::ImageDifference& d = p.difference;
+    const std::string ms = fixed(p.a->median_ms(), 2) + " / " + fixed(p.b->median_ms(), 2);
+    const std::string slots = fixed(p.a->slots_per_pixel(), 1) + " / " + fixed(p.b->slots_per_pixel(), 1);
+    std::printf("%-18s %8s %4d %10.4f %7.3f%% %19s %19s\n", p.label().c_str(), fixed(d.psnr_db, 2).c_str(), d.max_error,
+                d.mean_error, 100 * d.differing_share(), ms.c_str(), slots.c_str());
+  }
+}
+
+/// Renders the scene as `model`: one counted frame for the shader uses, then on a renderer that
+/// does not count, one warm-up frame (the image compared) and `frames` timed ones.
+std::optional<ModelRun> run_model(const scenes::Scene& scene, frame::FrameSettings settings, shading::ShaderModel model,
+                                  int frames, rasterizer::Context& ctx, int& code) {
+  ModelRun run;
+  run.name = std::string(shading::caps(model).name);
+  settings.model = model;
+  settings.count_shading = true;
+  {
+    const std::unique_ptr<frame::Renderer> counted = make_renderer("compare", scene, settings, code);
+    if (!counted) return std::nullopt;
+    counted->render(ctx);
+    run.uses = counted->shader_uses();
+  }
+  settings.count_shading = false;
+  const std::unique_ptr<frame::Renderer> timed = make_renderer("compare", scene, settings, code);
+  if (!timed) return std::nullopt;
+  timed->render(ctx);
+  // The first frame, as `luxel render --model` writes it: a frame carries state into the next
+  // (time-averaged lighting), so a later one would make the numbers depend on --frames.
+  run.image = timed->image();
+  for (int i = 0; i < frames; ++i) {
+    const auto start = std::chrono::steady_clock::now();
+    timed->render(ctx);
+    run.ms.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count());
+  }
+  std::sort(run.ms.begin(), run.ms.end());
+  return run;
+}
+
+}  // namespace
+
+Runner add_compare_command(CLI::App& app) {
+  auto o = std::make_shared<CompareOptions>();
+  CLI::App* cmd = app.add_subcommand("compare", "Render a scene as several shader models and compare the images");
+  o->frame.add_to(*cmd);
+  cmd->add_option("--models", o->models, "Pixel-shader models to compare, comma-separated (at least two)")->capture_default_str();
+  cmd->add_option("--frames", o->frames, "Timed frames per model, after one warm-up (ms per frame is their median)")
+      ->check(CLI::Range(1, 1000))
+      ->capture_default_str();
+  cmd->add_option("--out", o->out, "Writes PREFIX.png (images and heat maps) and PREFIX.json (the numbers)")->required();
+  return [cmd, o]() -> int {
+    if (!cmd->parsed()) return -1;
+    const auto start = std::chrono::steady_clock::now();
+    int code = 0;
+    const auto models = parse_models(o->models);
+    if (!models) return 2;
+    const auto context_options = o->frame.context_options("compare", code);
+    if (!context_options) return code;
+    frame::FrameSettings settings = o->frame.settings;
+    const std::optional<scenes::Scene> scene = o->frame.prepare_scene("compare", settings, o->out, code);
+    if (!scene) return code;
+
+    rasterizer::Context ctx(*context_options);
+    std::vector<ModelRun> runs;
+    for (shading::ShaderModel m : *models) {
+      std::optional<ModelRun> run = run_model(*scene, settings, m, o->frames, ctx, code);
+      if (!run) return code;
+      runs.push_back(std::move(*run));
+    }
+    std::vector<Pair> pairs;
+    for (size_t i = 0; i < runs.size(); ++i)
+      for (size_t k = i + 1; k < runs.size(); ++k)
+        pairs.push_back({&runs[i], &runs[k], frame::image_difference(runs[i].image, runs[k].image),
+                         frame::difference_heat_map(runs[i].image, runs[k].image)});
+
+    const std::string png = o->out + ".png", json = o->out + ".json";
+    try {
+      std::vector<std::vector<SheetCell>> rows(2);
+      for (const ModelRun& r : runs) rows[0].push_back({r.name, &r.image});
+      for (const Pair& p : pairs) rows[1].push_back({p.label(), &p.heat});
+      const rasterizer::Image sheet = compose_sheet(rows);
+      scenes::write_image(sheet.width, sheet.height, sheet.rgba, png);
+      std::ofstream file(json);
+      file << to_json(*o, runs, pairs).dump(2) << "\n";
+      if (!file.flush()) throw std::runtime_error(json + ": cannot write it");
+    } catch (const std::exception& e) {
+      std::cerr << "luxel compare: " << e.what() << "\n";
+      return 1;
+    }
+    print_table(pairs);
+    std::fflush(stdout);  // the table before the summary line, where both go to one terminal
+    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    std::fprintf(stderr, "luxel compare: %s at %dx%d, %dx MSAA: %zu models, %zu pairs, %d timed frames each -> %s, %s (%.1f s)\n",
+                 o->frame.scene.c_str(), o->frame.settings.width, o->frame.settings.height, o->frame.settings.samples,
+                 runs.size(), pairs.size(), o->frames, png.c_str(), json.c_str(), seconds);
+    return 0;
+  };
+}
+
+}  // namespace luxel::cli

@@ -1,0 +1,30 @@
+#pragma once
+// Runs the `luxel` binary under test (LUXEL_BINARY, set by tests/CMakeLists.txt) through the shell.
+
+#include <sys/wait.h>
+
+#include <array>
+#include <cstdio>
+#include <string>
+
+namespace luxel::cli::test {
+
+struct Process {
+  int exit_code = -1;
+  std::string out;  ///< what it printed on stdout (and on stderr when `args` ends in 2>&1)
+};
+
+/// `luxel ARGS`, ARGS being shell words (redirections allowed).
+inline Process run_luxel(const std::string& args) {
+  Process r;
+  FILE* pipe = popen((std::string(LUXEL_BINARY) + " " + args).c_str(), "r");
+  if (!pipe) return r;
+  std::array<char, 4096> buf;
+  size_t n;
+  while ((n = std::fread(buf.data(), 1, buf.size(), pipe)) > 0) r.out.append(buf.data(), n);
+  const int status = pclose(pipe);
+  r.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  return r;
+}
+
+}  // namespace luxel::cli::test
