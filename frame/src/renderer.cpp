@@ -1,8 +1,8 @@
 #include "luxel/frame/renderer.hpp"
 
 #include "plain_shaders.hpp"
-#include "textures.hpp"
 
+#include "luxel/frame/textures.hpp"
 #include "luxel/rasterizer/framebuffer.hpp"
 #include "luxel/rasterizer/msaa.hpp"
 #include "luxel/rasterizer/srgb.hpp"
