@@ -296,32 +296,34 @@ std::pair<glm::ivec2, Hit> center_of(const std::vector<Quad>& qs, int q) {
   return {px, trace(qs, px.x + 0.5, px.y + 0.5)};
 }
 
-TEST(Sponza, BackFacesOfDoubleSidedMaterialsNegateTheNormal) {
+/// Quad q's center pixel as W3 renders the scene, and the hit the definition has there.
+std::pair<glm::ivec3, Hit> rendered_center(const std::vector<Quad>& qs, int q) {
   scenes::test::TempDir dir;
-  const std::vector<Quad> qs = quads();
   const rasterizer::Image image = render(write_scene(dir), 1);
-  const auto [px, hit] = center_of(qs, 1);
+  const auto [px, hit] = center_of(qs, q);
+  return {pixel(image, px.x, px.y), hit};
+}
+
+float steps_apart(glm::ivec3 a, glm::ivec3 b) { return glm::length(glm::vec3(a - b)); }
+
+TEST(Sponza, BackFacesOfDoubleSidedMaterialsNegateTheNormal) {
+  const std::vector<Quad> qs = quads();
+  const auto [got, hit] = rendered_center(qs, 1);
   ASSERT_EQ(hit.quad, 1);
-  const glm::ivec3 got = pixel(image, px.x, px.y), negated = expected_color(qs, hit), kept = expected_color(qs, hit, false);
-  EXPECT_LE(glm::length(glm::vec3(got - negated)), 1.8f) << got.x << " " << got.y << " " << got.z;
+  EXPECT_LE(steps_apart(got, expected_color(qs, hit)), 1.8f) << got.x << " " << got.y << " " << got.z;
   // The rule matters here: the normal as written would light the pixel very differently.
-  EXPECT_GT(glm::length(glm::vec3(got - kept)), 20.0f);
+  EXPECT_GT(steps_apart(got, expected_color(qs, hit, false)), 20.0f);
 }
 
 TEST(Sponza, MissingNormalReadsPlusY) {
-  scenes::test::TempDir dir;
   const std::vector<Quad> qs = quads();
-  const rasterizer::Image image = render(write_scene(dir), 1);
-  const auto [px, hit] = center_of(qs, 3);
+  const auto [got, hit] = rendered_center(qs, 3);
   ASSERT_EQ(hit.quad, 3);
-  const glm::ivec3 got = pixel(image, px.x, px.y), want = expected_color(qs, hit);
-  EXPECT_LE(glm::length(glm::vec3(got - want)), 1.8f) << got.x << " " << got.y << " " << got.z;
+  EXPECT_LE(steps_apart(got, expected_color(qs, hit)), 1.8f) << got.x << " " << got.y << " " << got.z;
   // Facing the camera (+Z) would be another color: the ambient cube's +Z face and other light.
-  Quad facing = qs[3];
-  facing.normals = std::array<dvec3, 4>{dvec3(0, 0, 1), dvec3(0, 0, 1), dvec3(0, 0, 1), dvec3(0, 0, 1)};
-  std::vector<Quad> alt = qs;
-  alt[3] = facing;
-  EXPECT_GT(glm::length(glm::vec3(got - expected_color(alt, hit))), 10.0f);
+  std::vector<Quad> facing = qs;
+  facing[3].normals = std::array<dvec3, 4>{dvec3(0, 0, 1), dvec3(0, 0, 1), dvec3(0, 0, 1), dvec3(0, 0, 1)};
+  EXPECT_GT(steps_apart(got, expected_color(facing, hit)), 10.0f);
 }
 
 TEST(Sponza, SameBytesForOneAndTwoThreads) {
