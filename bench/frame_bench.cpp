@@ -1,12 +1,16 @@
-// Whole-frame benchmark of the built-in workloads, printing exactly the line format of the
-// llvmpipe peer (../shared/peers/llvmpipe) so both run side by side:
+// Whole-frame benchmark of the llvmpipe peer's workloads (../shared/peers/llvmpipe), printing
+// exactly its line format so both run side by side:
 //   workload=<name> width=W height=H msaa=S threads=T frames=N median_ms=X min_ms=Y
+// or `workload=sponza skipped reason="..."` when W3's glTF file is missing (exit 0, as the peer).
 // A frame is what the peer calls a frame: clear, draw, resolve to a 1-sample image. The scenes are
-// built (demo and courtyard: and baked, quickly) and the renderer prepared (textures uploaded)
-// before the clock starts, as the peer generates its vertex buffers first.
+// built (demo and courtyard: and baked, quickly) and the frame prepared (textures uploaded) before
+// the clock starts, as the peer generates its vertex buffers first. W1 `fill` and W2 `tris` (and
+// `demo`, `courtyard`) are built-in scenes drawn by frame::Renderer; W3 `sponza` is any glTF file
+// drawn by workloads/sponza.hpp with the peer's arguments (--sponza PATH --eye X,Y,Z --target X,Y,Z).
 // stderr gets the CPU, the instruction set and the fast paths turned off (LUXEL_NO_FASTPATH).
 
 #include "machine.hpp"
+#include "sponza.hpp"
 
 #include "luxel/bake/bake.hpp"
 #include "luxel/frame/renderer.hpp"
@@ -21,10 +25,20 @@
 #include <cstdlib>
 #include <cstdio>
 #include <filesystem>
+#include <functional>
 #include <iostream>
 #include <memory>
 #include <string>
+#include <tuple>
 #include <vector>
+
+namespace {
+
+/// Where the peer looks for Sponza (its ../../assets, relative to its folder), from luxel's.
+constexpr const char* kSponzaDefaults[2] = {"../shared/assets/sponza/Sponza.gltf",
+                                            "../shared/assets/gltf/sponza/glTF/Sponza.gltf"};
+
+}  // namespace
 
 int main(int argc, char** argv) {
   CLI::App app{"luxel frame benchmark (same workloads and output format as the llvmpipe peer)"};
@@ -33,6 +47,7 @@ int main(int argc, char** argv) {
   bool print_frames = false;
   std::string out;
   std::vector<std::string> workloads;
+  std::string sponza_path, eye_text, target_text;
   app.add_option("--width", settings.width)->check(CLI::Range(1, 8192));
   app.add_option("--height", settings.height)->check(CLI::Range(1, 8192));
   app.add_option("--msaa", settings.samples)->check(CLI::IsMember({1, 2, 4, 8}));
@@ -41,9 +56,35 @@ int main(int argc, char** argv) {
   app.add_option("--warmup", warmup)->check(CLI::Range(0, 100000));
   app.add_option("--out", out, "Directory for the final frame of each workload as PNG");
   app.add_flag("--print-frames", print_frames, "Print every frame time to stderr");
-  app.add_option("workloads", workloads, "Built-in scenes: fill, tris (default: both), demo, courtyard");
+  app.add_option("--sponza", sponza_path, "glTF file for the sponza workload (default: the first that exists of " +
+                                             std::string(kSponzaDefaults[0]) + " and " + kSponzaDefaults[1] + ")");
+  app.add_option("--eye", eye_text, "Sponza camera position X,Y,Z in glTF space (with --target)");
+  app.add_option("--target", target_text, "Sponza camera target X,Y,Z in glTF space (with --eye)");
+  app.add_option("workloads", workloads,
+                 "fill, tris, sponza (default: the three, as the peer), or a built-in scene: demo, courtyard");
   CLI11_PARSE(app, argc, argv);
-  if (workloads.empty()) workloads = {"fill", "tris"};
+  if (workloads.empty()) workloads = {"fill", "tris", "sponza"};
+  luxel::bench::SponzaView view;
+  for (auto [text, name, value] : {std::tuple{&eye_text, "--eye", &view.eye}, std::tuple{&target_text, "--target", &view.target}}) {
+    if (text->empty()) continue;
+    const std::optional<glm::vec3> v = luxel::bench::parse_vec3(*text);
+    if (!v) {
+      std::fprintf(stderr, "luxel_frame_bench: %s expects X,Y,Z, got '%s'\n", name, text->c_str());
+      return 2;
+    }
+    *value = *v;
+  }
+  if (eye_text.empty() != target_text.empty()) {
+    std::fprintf(stderr, "luxel_frame_bench: --eye and --target must be given together\n");
+    return 2;
+  }
+  std::string sponza_also_tried;
+  if (sponza_path.empty()) {
+    sponza_path = kSponzaDefaults[0];
+    sponza_also_tried = kSponzaDefaults[1];
+    if (!std::filesystem::is_regular_file(sponza_path) && std::filesystem::is_regular_file(sponza_also_tried))
+      std::swap(sponza_path, sponza_also_tried);
+  }
 
   luxel::rasterizer::ContextOptions options;
   options.threads = threads;
@@ -58,24 +99,52 @@ int main(int argc, char** argv) {
   std::fprintf(stderr, "%s fast_paths_off=%s\n", luxel::bench::machine_line().c_str(),
                luxel::rasterizer::fast_paths_off_names(options.fast_paths).c_str());
   luxel::rasterizer::Context ctx(options);
+  int status = 0;
   for (const std::string& name : workloads) {
     luxel::scenes::Scene scene;
     std::unique_ptr<luxel::frame::Renderer> renderer;
-    try {
-      scene = luxel::scenes::make_builtin_scene(name, {settings.width, settings.height});
-      // Scenes that need baked data get a quick bake, before the clock and not timed.
-      if (name == "demo" || name == "courtyard")
-        luxel::bake::attach(scene, luxel::bake::bake(scene, luxel::bake::BakeSettings::quick()));
-      renderer = std::make_unique<luxel::frame::Renderer>(scene, settings);
-    } catch (const std::exception& e) {
-      std::printf("workload=%s skipped reason=\"%s\"\n", name.c_str(), e.what());
-      continue;
+    std::unique_ptr<luxel::bench::SponzaFrame> sponza;
+    if (name == "sponza") {
+      if (!std::filesystem::is_regular_file(sponza_path)) {
+        std::printf("workload=sponza skipped reason=\"glTF file not found: %s%s (place the Sponza glTF there or pass --sponza PATH)\"\n",
+                    sponza_path.c_str(), sponza_also_tried.empty() ? "" : (" nor " + sponza_also_tried).c_str());
+        std::fflush(stdout);
+        continue;
+      }
+      try {
+        const auto t0 = std::chrono::steady_clock::now();
+        scene = luxel::bench::load_sponza_scene(sponza_path);
+        const auto t1 = std::chrono::steady_clock::now();
+        sponza = std::make_unique<luxel::bench::SponzaFrame>(scene, view, settings.width, settings.height, settings.samples);
+        const auto t2 = std::chrono::steady_clock::now();
+        std::fprintf(stderr, "sponza: %zu draws, %llu triangles, %zu textures; load %.2f s, prepare %.2f s\n",
+                     scene.meshes.size(), static_cast<unsigned long long>(sponza->triangles()), scene.textures.size(),
+                     std::chrono::duration<double>(t1 - t0).count(), std::chrono::duration<double>(t2 - t1).count());
+        std::fprintf(stderr, "sponza: camera eye (%.4f, %.4f, %.4f) target (%.4f, %.4f, %.4f) in glTF space\n", view.eye.x,
+                     view.eye.y, view.eye.z, view.target.x, view.target.y, view.target.z);
+      } catch (const std::exception& e) {
+        std::fprintf(stderr, "luxel_frame_bench: sponza: %s\n", e.what());
+        status = 1;
+        continue;
+      }
+    } else {
+      try {
+        scene = luxel::scenes::make_builtin_scene(name, {settings.width, settings.height});
+        // Scenes that need baked data get a quick bake, before the clock and not timed.
+        if (name == "demo" || name == "courtyard")
+          luxel::bake::attach(scene, luxel::bake::bake(scene, luxel::bake::BakeSettings::quick()));
+        renderer = std::make_unique<luxel::frame::Renderer>(scene, settings);
+      } catch (const std::exception& e) {
+        std::printf("workload=%s skipped reason=\"%s\"\n", name.c_str(), e.what());
+        continue;
+      }
     }
-    for (int i = 0; i < warmup; ++i) renderer->render(ctx);
+    const std::function<void()> render = [&] { renderer ? renderer->render(ctx) : sponza->render(ctx); };
+    for (int i = 0; i < warmup; ++i) render();
     std::vector<double> ms;
     for (int i = 0; i < frames; ++i) {
       const auto t0 = std::chrono::steady_clock::now();
-      renderer->render(ctx);
+      render();
       const auto t1 = std::chrono::steady_clock::now();
       ms.push_back(std::chrono::duration<double, std::milli>(t1 - t0).count());
       if (print_frames) std::fprintf(stderr, "%s frame %d: %.3f ms\n", name.c_str(), i, ms.back());
@@ -93,7 +162,7 @@ int main(int argc, char** argv) {
                                std::to_string(threads) + ".png";
       try {
         std::filesystem::create_directories(out);  // as the peer harness does
-        const luxel::rasterizer::Image& image = renderer->image();
+        const luxel::rasterizer::Image& image = renderer ? renderer->image() : sponza->image();
         luxel::scenes::write_image(image.width, image.height, image.rgba, path);
       } catch (const std::exception& e) {
         std::fprintf(stderr, "luxel_frame_bench: %s: %s\n", path.c_str(), e.what());
@@ -101,5 +170,5 @@ int main(int argc, char** argv) {
       }
     }
   }
-  return 0;
+  return status;
 }

@@ -2,9 +2,9 @@
 
 #include "model_lighting.hpp"
 #include "source_draws.hpp"
-#include "textures.hpp"
 #include "trivial_unlit.hpp"
 
+#include "luxel/frame/textures.hpp"
 #include "luxel/rasterizer/framebuffer.hpp"
 #include "luxel/rasterizer/msaa.hpp"
 #include "luxel/rasterizer/srgb.hpp"

@@ -1,4 +1,4 @@
-#include "textures.hpp"
+#include "luxel/frame/textures.hpp"
 
 #include <glm/vec4.hpp>
 

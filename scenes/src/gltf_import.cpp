@@ -504,10 +504,10 @@ class Importer {
                                    : glm::vec3(glm::dvec3(world * glm::dvec4(local, 1.0)));
       if (!finite(glm::dvec3(mesh.positions[v]))) fail(where + " position " + std::to_string(v) + " is not finite in world space");
     }
-    if (nrm) {
+    if (nrm || options_.missing_normal) {
       mesh.normals.resize(n);
       for (size_t v = 0; v < n; ++v) {
-        const glm::vec3 local(nrm->at(v)[0], nrm->at(v)[1], nrm->at(v)[2]);
+        const glm::vec3 local = nrm ? glm::vec3(nrm->at(v)[0], nrm->at(v)[1], nrm->at(v)[2]) : *options_.missing_normal;
         if (identity) {
           mesh.normals[v] = local;
         } else {
@@ -548,7 +548,7 @@ class Importer {
 
     // An unlit material (KHR_materials_unlit) reads no normal, so it gets none.
     const bool unlit = mesh.material >= 0 && scene_.materials[size_t(mesh.material)].family == ShaderFamily::unlit_generic;
-    if (!nrm && !unlit) {
+    if (mesh.normals.empty() && !unlit) {
       // Flat normals: every triangle gets vertices of its own.
       Mesh flat;
       flat.material = mesh.material;

@@ -26,7 +26,8 @@
 //   COLOR_0 (VEC3 gets alpha 1), with the component types the specification allows (normalized
 //   unsigned bytes and shorts for TEXCOORD and COLOR), sparse accessors applied.
 // - Without NORMAL, flat normals (each triangle gets its own three vertices), as the specification
-//   asks, except under an unlit material (KHR_materials_unlit, UnlitGeneric), which reads none. Without TANGENT but with normals and uv0, tangents are generated (tangents.hpp).
+//   asks, except under an unlit material (KHR_materials_unlit, UnlitGeneric), which reads none
+//   (GltfImportOptions::missing_normal asks for a constant normal instead). Without TANGENT but with normals and uv0, tangents are generated (tangents.hpp).
 // - Each node with a mesh becomes a Model (a VertexLitGeneric object) holding the meshes of its
 //   primitives whose material is VertexLitGeneric; its centroid is the node's
 //   extras.luxel.centroid (written by save_gltf) or else the mean of their world positions. Primitives with other families (LightmappedGeneric, Water, ...) are world geometry.
@@ -98,7 +99,10 @@
 
 #include "luxel/scenes/scene.hpp"
 
+#include <glm/vec3.hpp>
+
 #include <cstdint>
+#include <optional>
 #include <stdexcept>
 #include <string>
 
@@ -121,6 +125,11 @@ struct GltfImportOptions {
   bool default_camera = true;       ///< add a framing camera when the file has none
   bool default_lights = true;       ///< add a key and a fill light when the file has none
   bool generate_tangents = true;    ///< MikkTSpace tangents where TANGENT is missing
+  /// Set: a primitive without NORMAL gets this object-space normal at every vertex, transformed by
+  /// its node like any normal, instead of flat normals (the way OpenGL's constant vertex attribute
+  /// reads a missing array, which the llvmpipe peer's W3 workload relies on). Unlit materials get
+  /// it too.
+  std::optional<glm::vec3> missing_normal = std::nullopt;
 };
 
 /// Reads a .gltf or .glb file (told apart by its first bytes). Scene::name is `path`.

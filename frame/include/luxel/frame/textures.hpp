@@ -1,5 +1,6 @@
 #pragma once
-// Private: a scenes::Texture as the rasterizer samples it: uploaded once, mips generated.
+// A scenes::Texture as the rasterizer samples it: uploaded once, mips generated. Public so that
+// draws outside the renderer (the benchmark workloads) upload textures the same way.
 
 #include "luxel/rasterizer/texture.hpp"
 #include "luxel/scenes/scene.hpp"
