@@ -35,7 +35,9 @@ Runner add_render_command(CLI::App& app) {
       ->check(CLI::IsMember({"ps_2_0", "ps_2_b", "ps_3_0"}))
       ->capture_default_str();
   cmd->add_option("--out", options->out, "Output image (PNG, TIFF, EXR... by extension)")->capture_default_str();
-  cmd->add_flag("--stats", options->stats, "Print what the draws did and the pixels each shader combo shaded");
+  cmd->add_flag("--stats", options->stats,
+                "Print what the draws did, the pixels and counted slots x pixels of each shader combo, and ms per pass "
+                "(each pass then runs to its end before the next, a little slower)");
   return [cmd, options]() -> int {
     if (!cmd->parsed()) return -1;
     int code = 0;
@@ -45,6 +47,7 @@ Runner add_render_command(CLI::App& app) {
     frame::FrameSettings settings = options->frame.settings;
     settings.model = shading::parse_pixel_model(options->model);
     settings.count_shading = options->stats;
+    settings.time_passes = options->stats;
     const std::optional<scenes::Scene> scene = options->frame.prepare_scene("render", settings, options->out, code);
     if (!scene) return code;
     const std::unique_ptr<frame::Renderer> renderer = make_renderer("render", *scene, settings, code);
@@ -72,7 +75,10 @@ Runner add_render_command(CLI::App& app) {
                 << " stamps_shaded=" << s.stamps_shaded
                 << " fast_paths_off=" << rasterizer::fast_paths_off_names(context_options->fast_paths) << "\n";
       for (const frame::ShaderUse& u : renderer->shader_uses())
-        std::cout << "shader=" << u.family << " combo=" << u.combo << " pixels=" << u.pixels << " slots=" << u.slots << "\n";
+        std::cout << "shader=" << u.family << " combo=" << u.combo << " pixels=" << u.pixels << " slots=" << u.slots
+                  << " slot_pixels=" << u.pixels * static_cast<uint64_t>(u.slots) << "\n";
+      for (const frame::PassTime& p : renderer->pass_times())
+        std::cout << "pass=" << p.pass << " draws=" << p.draws << " ms=" << p.ms << "\n";
     }
     std::fprintf(stderr, "luxel render: %s as %s, %dx%d, %d samples: %.1f ms, %llu stamps shaded -> %s\n",
                  scene->name.c_str(), options->model.c_str(), settings.width, settings.height, settings.samples, ms,

@@ -20,9 +20,11 @@
 #include <glm/matrix.hpp>
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <stdexcept>
 #include <string>
+#include <utility>
 #include <variant>
 #include <vector>
 
@@ -145,6 +147,7 @@ struct FrameState {
   Image image;
   DrawStats stats;
   std::vector<ShaderUse> shader_uses;
+  std::vector<PassTime> pass_times;
 
   FrameState(const scenes::Scene& s, const FrameSettings& f)
       : scene(&s), settings(f), color(f.width, f.height, f.samples), depth(f.width, f.height, f.samples) {}
@@ -500,18 +503,36 @@ void Renderer::render(Context& ctx) {
   clear_color(ctx, st.color, st.clear);
   clear_depth(ctx, st.depth, 1.0f);  // as the peer: stencil neither cleared nor used
   const Framebuffer fb{&st.color, &st.depth};
+  st.pass_times.clear();
+  // Runs one pass; timed, it runs to its end before the clock stops.
+  const auto run_pass = [&](const char* name, int draws, auto&& run) {
+    if (!st.settings.time_passes) return run();
+    const auto start = std::chrono::steady_clock::now();
+    run();
+    ctx.flush();
+    st.pass_times.push_back({name, std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count(), draws});
+  };
   // Opaque surfaces in scene order, then the sky where none was drawn, then the translucent
   // ones back to front.
-  for (auto* passes : {&st.opaque, &st.sky, &st.translucent})
-    for (FrameState::Pass& p : *passes) {
-      if (p.trivial) {
-        draw(ctx, fb, p.state, p.geometry, st.trivial_vertices[*p.trivial], UnlitPixel{});
-      } else {
-        p.source->pixels->store(0, std::memory_order_relaxed);
-        p.source->run(ctx, fb);
+  const std::pair<const char*, std::vector<FrameState::Pass>*> passes[] = {
+      {"opaque", &st.opaque}, {"sky", &st.sky}, {"translucent", &st.translucent}};
+  for (const auto& [name, draws] : passes) {
+    if (draws->empty()) continue;
+    run_pass(name, static_cast<int>(draws->size()), [&] {
+      for (FrameState::Pass& p : *draws) {
+        if (p.trivial) {
+          draw(ctx, fb, p.state, p.geometry, st.trivial_vertices[*p.trivial], UnlitPixel{});
+        } else {
+          p.source->pixels->store(0, std::memory_order_relaxed);
+          p.source->run(ctx, fb);
+        }
       }
-    }
-  resolve_into(ctx, st.color, st.image);
+    });
+  }
+  run_pass("resolve", 0, [&] { resolve_into(ctx, st.color, st.image); });
+  // The target's alpha holds what the shaders wrote there (base alpha, blend results), which the
+  // screen never shows: the image is what is shown, opaque.
+  for (size_t i = 3; i < st.image.rgba.size(); i += 4) st.image.rgba[i] = 255;
   st.stats = ctx.stats();
   st.shader_uses.clear();
   if (st.settings.count_shading) {
@@ -532,5 +553,6 @@ void Renderer::render(Context& ctx) {
 const Image& Renderer::image() const { return state_->image; }
 const DrawStats& Renderer::stats() const { return state_->stats; }
 const std::vector<ShaderUse>& Renderer::shader_uses() const { return state_->shader_uses; }
+const std::vector<PassTime>& Renderer::pass_times() const { return state_->pass_times; }
 
 }  // namespace luxel::frame

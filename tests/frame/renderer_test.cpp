@@ -233,6 +233,25 @@ TEST(Renderer, CountsThePixelsEachComboShades) {
   EXPECT_GT(r.shader_uses()[0].slots, 10);
 }
 
+TEST(Renderer, TimesThePassesTheSceneHas) {
+  scenes::Scene s = lit_by_cube_and_sun(true);
+  FrameSettings f{kSize, kSize, 4};
+  rasterizer::Context ctx(2);
+  Renderer untimed(s, f);
+  untimed.render(ctx);
+  EXPECT_TRUE(untimed.pass_times().empty());
+  f.time_passes = true;
+  Renderer timed(s, f);
+  timed.render(ctx);
+  // One opaque mesh, no sky, nothing translucent: two passes, the image the same bytes.
+  ASSERT_EQ(timed.pass_times().size(), 2u);
+  EXPECT_EQ(timed.pass_times()[0].pass, "opaque");
+  EXPECT_EQ(timed.pass_times()[0].draws, 1);
+  EXPECT_EQ(timed.pass_times()[1].pass, "resolve");
+  for (const PassTime& p : timed.pass_times()) EXPECT_GE(p.ms, 0.0);
+  EXPECT_TRUE(timed.image().rgba == untimed.image().rgba);
+}
+
 TEST(Renderer, LinearWriteAndTheBackground) {
   scenes::Scene s = top_down();
   s.background = {0.2f, 0.05f, 0.6f};

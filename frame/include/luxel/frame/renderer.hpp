@@ -29,7 +29,8 @@
 //    fixed-function vertex fog).
 //  - Every shader ends in the tone-map epilogue with a fixed exposure (FrameSettings::exposure,
 //    else the scene's Exposure clamped around 1) and writes 8-bit RGBA, sRGB-encoded unless the
-//    material says $linearwrite; MSAA resolves to the image.
+//    material says $linearwrite; MSAA resolves to the image, whose alpha is 255 (the target's
+//    alpha holds what shaders and blending left there, which a screen never shows).
 // Order: opaque meshes in scene order (depth LESS, single-sided materials cull their back faces,
 // front faces counter-clockwise), alpha-tested ones with D3D9's alpha test (GREATEREQUAL
 // $alphatestreference), then the sky, then translucent meshes back to front by the distance of
@@ -70,6 +71,16 @@ struct FrameSettings {
   std::optional<float> exposure = std::nullopt;
   /// Count the pixels each shader combo shades (Renderer::shader_uses); off, a frame counts nothing.
   bool count_shading = false;
+  /// Time each pass (Renderer::pass_times). The rasterizer then runs each pass over all tiles
+  /// before the next instead of all passes tile by tile, so a timed frame is a little slower.
+  bool time_passes = false;
+};
+
+/// One pass of the last frame and its wall time (FrameSettings::time_passes).
+struct PassTime {
+  std::string pass;  ///< "opaque", "sky", "translucent", "resolve"
+  double ms = 0.0;
+  int draws = 0;
 };
 
 /// One shader combo the last frame ran (FrameSettings::count_shading).
@@ -108,6 +119,9 @@ class Renderer {
   /// What each shader combo did in the last frame, in a fixed order (first draw first); empty
   /// unless FrameSettings::count_shading.
   const std::vector<ShaderUse>& shader_uses() const;
+  /// The last frame's passes in the order they ran, the ones the scene has; empty unless
+  /// FrameSettings::time_passes.
+  const std::vector<PassTime>& pass_times() const;
 
  private:
   struct State;

@@ -17,6 +17,10 @@
 // (fixed_function_fog). The output is the linear FinalOutput color; the output merger encodes it
 // (sRGB write on, BlendState::srgb_write).
 //
+// Lanes: each functor's `shade` computes a pixel's color from its attributes on any lane: the
+// SIMD stamp (operator(), what draws run) or the float lane, one pixel at a time (ScalarReference
+// below, the scalar reference that tests hold the stamps to).
+//
 // Counting: when `pixels` is set, each invocation adds its covered lanes to it (relaxed atomics:
 // the sum is the same whatever the thread count; off by default, it costs a contended add per
 // stamp).
@@ -81,34 +85,51 @@ inline constexpr void add_fog(AttributeList& l, Fog fog) {
   if (fog == Fog::vertex_range) l.add(Attribute::fog_visibility);
 }
 
-/// Attribute A of a stamp, read from the varyings at its place in L.
-template <AttributeList L, Attribute A, int N>
-LUXEL_INLINE simd::Float read(const rasterizer::PixelInput<N>& in) {
-  constexpr int i = L.index_of(A);
-  static_assert(i >= 0, "the combo's attribute list does not hold this attribute");
-  const simd::Float4& v = in.varyings[i / 4];
-  if constexpr (i % 4 == 0) return v.x;
-  else if constexpr (i % 4 == 1) return v.y;
-  else if constexpr (i % 4 == 2) return v.z;
-  else return v.w;
-}
+/// A stamp's attributes (SIMD lanes), each read from the varyings at its place in L.
+template <AttributeList L, int N>
+struct StampAttributes {
+  using Lane = simd::Float;
+  const rasterizer::PixelInput<N>& in;
 
-template <AttributeList L, Attribute X, Attribute Y, Attribute Z, int N>
-LUXEL_INLINE float3<simd::Float> read3(const rasterizer::PixelInput<N>& in) {
-  return float3<simd::Float>(read<L, X>(in), read<L, Y>(in), read<L, Z>(in));
-}
-
-/// The shader's color as the rasterizer's output, after the fixed-function fog of ps_2_0.
-template <Fog F, AttributeList L, int N>
-LUXEL_INLINE void write(const float4<simd::Float>& c, const rasterizer::PixelInput<N>& in, const FogConstants& fog,
-                        rasterizer::PixelOutput& out) {
-  if constexpr (F == Fog::vertex_range) {
-    const float4<simd::Float> f = fixed_function_fog(c, read<L, Attribute::fog_visibility>(in), fog);
-    out.color = {f.x, f.y, f.z, f.w};
-  } else {
-    out.color = {c.x, c.y, c.z, c.w};
+  template <Attribute A>
+  LUXEL_INLINE simd::Float get() const {
+    constexpr int i = L.index_of(A);
+    static_assert(i >= 0, "the combo's attribute list does not hold this attribute");
+    const simd::Float4& v = in.varyings[i / 4];
+    if constexpr (i % 4 == 0) return v.x;
+    else if constexpr (i % 4 == 1) return v.y;
+    else if constexpr (i % 4 == 2) return v.z;
+    else return v.w;
   }
+};
+
+/// One pixel's attributes (the float lane), in L's order.
+template <AttributeList L>
+struct PixelAttributes {
+  using Lane = float;
+  std::array<float, kAttributeKinds> values{};
+
+  template <Attribute A>
+  float get() const {
+    constexpr int i = L.index_of(A);
+    static_assert(i >= 0, "the combo's attribute list does not hold this attribute");
+    return values[static_cast<size_t>(i)];
+  }
+};
+
+template <Attribute X, Attribute Y, Attribute Z, class A>
+LUXEL_INLINE float3<typename A::Lane> get3(const A& a) {
+  return float3<typename A::Lane>(a.template get<X>(), a.template get<Y>(), a.template get<Z>());
 }
+
+/// The shader's color after the fixed-function fog of ps_2_0.
+template <Fog F, class A>
+LUXEL_INLINE float4<typename A::Lane> fogged(const float4<typename A::Lane>& c, const A& a, const FogConstants& fog) {
+  if constexpr (F == Fog::vertex_range) return fixed_function_fog(c, a.template get<Attribute::fog_visibility>(), fog);
+  else return c;
+}
+
+LUXEL_INLINE void write(const float4<simd::Float>& c, rasterizer::PixelOutput& out) { out.color = {c.x, c.y, c.z, c.w}; }
 
 LUXEL_INLINE void count(std::atomic<uint64_t>* pixels, simd::LaneBits live) {
   if (pixels) pixels->fetch_add(static_cast<uint64_t>(std::popcount(live)), std::memory_order_relaxed);
@@ -149,28 +170,32 @@ struct LightmappedPixelShader {
   glm::vec3 eye{0.0f};
   std::atomic<uint64_t>* pixels = nullptr;
 
-  void operator()(const rasterizer::PixelInput<kVaryings>& in, rasterizer::PixelOutput& out) const {
-    using F = simd::Float;
-    constexpr AttributeList L = kAttributes;
-    detail::count(pixels, in.live);
+  template <class A>
+  LUXEL_INLINE float4<typename A::Lane> shade(const A& a) const {
+    using F = typename A::Lane;
     LightmappedInputs<F> i;
-    i.base_uv = float2<F>(detail::read<L, Attribute::base_u>(in), detail::read<L, Attribute::base_v>(in));
-    const F lu = detail::read<L, Attribute::lightmap_u>(in) * page.scale;
-    const F lv = detail::read<L, Attribute::lightmap_v>(in);
+    i.base_uv = float2<F>(a.template get<Attribute::base_u>(), a.template get<Attribute::base_v>());
+    const F lu = a.template get<Attribute::lightmap_u>() * page.scale;
+    const F lv = a.template get<Attribute::lightmap_v>();
     i.lightmap_uv0 = float2<F>(lu + page.offset[0], lv);
     i.lightmap_uv12 = float4<F>(lu + page.offset[1], lv, lu + page.offset[2], lv);
     i.lightmap_uv3 = float2<F>(lu + page.offset[3], lv);
     if constexpr (C.envmap) {
-      i.normal = detail::read3<L, Attribute::normal_x, Attribute::normal_y, Attribute::normal_z>(in);
+      i.normal = detail::get3<Attribute::normal_x, Attribute::normal_y, Attribute::normal_z>(a);
       if constexpr (C.bump) {
-        i.tangent = detail::read3<L, Attribute::tangent_x, Attribute::tangent_y, Attribute::tangent_z>(in);
-        i.binormal = detail::read3<L, Attribute::binormal_x, Attribute::binormal_y, Attribute::binormal_z>(in);
+        i.tangent = detail::get3<Attribute::tangent_x, Attribute::tangent_y, Attribute::tangent_z>(a);
+        i.binormal = detail::get3<Attribute::binormal_x, Attribute::binormal_y, Attribute::binormal_z>(a);
       }
-      i.eye_vector = constant<F>(eye) - detail::read3<L, Attribute::world_x, Attribute::world_y, Attribute::world_z>(in);
+      i.eye_vector = constant<F>(eye) - detail::get3<Attribute::world_x, Attribute::world_y, Attribute::world_z>(a);
     }
     if constexpr (C.fog == Fog::range || C.fog == Fog::height)
-      i.fog = FogInputs<F>{detail::read<L, Attribute::world_z>(in), detail::read<L, Attribute::proj_z>(in)};
-    detail::write<C.fog, L>(lightmapped_generic<C>(i, params), in, params.fog, out);
+      i.fog = FogInputs<F>{a.template get<Attribute::world_z>(), a.template get<Attribute::proj_z>()};
+    return detail::fogged<C.fog>(lightmapped_generic<C>(i, params), a, params.fog);
+  }
+
+  void operator()(const rasterizer::PixelInput<kVaryings>& in, rasterizer::PixelOutput& out) const {
+    detail::count(pixels, in.live);
+    detail::write(shade(detail::StampAttributes<kAttributes, kVaryings>{in}), out);
   }
 };
 
@@ -197,23 +222,27 @@ struct VertexLitPixelShader {
   VertexLitParams params;
   std::atomic<uint64_t>* pixels = nullptr;
 
-  void operator()(const rasterizer::PixelInput<kVaryings>& in, rasterizer::PixelOutput& out) const {
-    using F = simd::Float;
-    constexpr AttributeList L = kAttributes;
-    detail::count(pixels, in.live);
+  template <class A>
+  LUXEL_INLINE float4<typename A::Lane> shade(const A& a) const {
+    using F = typename A::Lane;
     VertexLitInputs<F> i;
-    i.uv = float2<F>(detail::read<L, Attribute::base_u>(in), detail::read<L, Attribute::base_v>(in));
-    i.world_pos = detail::read3<L, Attribute::world_x, Attribute::world_y, Attribute::world_z>(in);
-    i.normal = detail::read3<L, Attribute::normal_x, Attribute::normal_y, Attribute::normal_z>(in);
+    i.uv = float2<F>(a.template get<Attribute::base_u>(), a.template get<Attribute::base_v>());
+    i.world_pos = detail::get3<Attribute::world_x, Attribute::world_y, Attribute::world_z>(a);
+    i.normal = detail::get3<Attribute::normal_x, Attribute::normal_y, Attribute::normal_z>(a);
     if constexpr (C.bump) {
-      i.tangent = detail::read3<L, Attribute::tangent_x, Attribute::tangent_y, Attribute::tangent_z>(in);
-      i.binormal = detail::read3<L, Attribute::binormal_x, Attribute::binormal_y, Attribute::binormal_z>(in);
+      i.tangent = detail::get3<Attribute::tangent_x, Attribute::tangent_y, Attribute::tangent_z>(a);
+      i.binormal = detail::get3<Attribute::binormal_x, Attribute::binormal_y, Attribute::binormal_z>(a);
     }
     if constexpr (!C.pixel_attenuation && C.lights > 0)
-      i.attenuation = float4<F>(detail::read<L, Attribute::attenuation_0>(in), detail::read<L, Attribute::attenuation_1>(in),
-                                detail::read<L, Attribute::attenuation_2>(in), detail::read<L, Attribute::attenuation_3>(in));
-    if constexpr (C.fog == Fog::range || C.fog == Fog::height) i.proj_z = detail::read<L, Attribute::proj_z>(in);
-    detail::write<C.fog, L>(vertexlit_generic<C>(i, params), in, params.fog, out);
+      i.attenuation = float4<F>(a.template get<Attribute::attenuation_0>(), a.template get<Attribute::attenuation_1>(),
+                                a.template get<Attribute::attenuation_2>(), a.template get<Attribute::attenuation_3>());
+    if constexpr (C.fog == Fog::range || C.fog == Fog::height) i.proj_z = a.template get<Attribute::proj_z>();
+    return detail::fogged<C.fog>(vertexlit_generic<C>(i, params), a, params.fog);
+  }
+
+  void operator()(const rasterizer::PixelInput<kVaryings>& in, rasterizer::PixelOutput& out) const {
+    detail::count(pixels, in.live);
+    detail::write(shade(detail::StampAttributes<kAttributes, kVaryings>{in}), out);
   }
 };
 
@@ -243,22 +272,26 @@ struct UnlitPixelShader {
   glm::vec3 eye{0.0f};
   std::atomic<uint64_t>* pixels = nullptr;
 
-  void operator()(const rasterizer::PixelInput<kVaryings>& in, rasterizer::PixelOutput& out) const {
-    using F = simd::Float;
-    constexpr AttributeList L = kAttributes;
-    detail::count(pixels, in.live);
+  template <class A>
+  LUXEL_INLINE float4<typename A::Lane> shade(const A& a) const {
+    using F = typename A::Lane;
     UnlitInputs<F> i;
-    i.base_uv = float2<F>(detail::read<L, Attribute::base_u>(in), detail::read<L, Attribute::base_v>(in));
+    i.base_uv = float2<F>(a.template get<Attribute::base_u>(), a.template get<Attribute::base_v>());
     if constexpr (C.vertex_color)
-      i.vertex_color = float4<F>(detail::read<L, Attribute::color_r>(in), detail::read<L, Attribute::color_g>(in),
-                                 detail::read<L, Attribute::color_b>(in), detail::read<L, Attribute::color_a>(in));
+      i.vertex_color = float4<F>(a.template get<Attribute::color_r>(), a.template get<Attribute::color_g>(),
+                                 a.template get<Attribute::color_b>(), a.template get<Attribute::color_a>());
     if constexpr (C.envmap) {
-      i.normal = detail::read3<L, Attribute::normal_x, Attribute::normal_y, Attribute::normal_z>(in);
-      i.eye_vector = constant<F>(eye) - detail::read3<L, Attribute::world_x, Attribute::world_y, Attribute::world_z>(in);
+      i.normal = detail::get3<Attribute::normal_x, Attribute::normal_y, Attribute::normal_z>(a);
+      i.eye_vector = constant<F>(eye) - detail::get3<Attribute::world_x, Attribute::world_y, Attribute::world_z>(a);
     }
     if constexpr (C.fog == Fog::range || C.fog == Fog::height)
-      i.fog = FogInputs<F>{detail::read<L, Attribute::world_z>(in), detail::read<L, Attribute::proj_z>(in)};
-    detail::write<C.fog, L>(unlit_generic<C>(i, params), in, params.fog, out);
+      i.fog = FogInputs<F>{a.template get<Attribute::world_z>(), a.template get<Attribute::proj_z>()};
+    return detail::fogged<C.fog>(unlit_generic<C>(i, params), a, params.fog);
+  }
+
+  void operator()(const rasterizer::PixelInput<kVaryings>& in, rasterizer::PixelOutput& out) const {
+    detail::count(pixels, in.live);
+    detail::write(shade(detail::StampAttributes<kAttributes, kVaryings>{in}), out);
   }
 };
 
@@ -280,13 +313,56 @@ struct SkyPixelShader {
   SkyParams params;
   std::atomic<uint64_t>* pixels = nullptr;
 
-  void operator()(const rasterizer::PixelInput<kVaryings>& in, rasterizer::PixelOutput& out) const {
-    using F = simd::Float;
-    constexpr AttributeList L = kAttributes;
-    detail::count(pixels, in.live);
+  template <class A>
+  LUXEL_INLINE float4<typename A::Lane> shade(const A& a) const {
+    using F = typename A::Lane;
     SkyInputs<F> i;
-    i.uv = float2<F>(detail::read<L, Attribute::base_u>(in), detail::read<L, Attribute::base_v>(in));
-    detail::write<Fog::none, L>(sky<kCombo>(i, params), in, FogConstants{}, out);
+    i.uv = float2<F>(a.template get<Attribute::base_u>(), a.template get<Attribute::base_v>());
+    return sky<kCombo>(i, params);
+  }
+
+  void operator()(const rasterizer::PixelInput<kVaryings>& in, rasterizer::PixelOutput& out) const {
+    detail::count(pixels, in.live);
+    detail::write(shade(detail::StampAttributes<kAttributes, kVaryings>{in}), out);
+  }
+};
+
+// ---- The scalar reference -----------------------------------------------------------------------
+
+/// Any functor above computed one covered pixel at a time on the float lane: the scalar reference
+/// of the same draw, which tests hold the SIMD stamps to. Each live lane's attributes are read out
+/// of the stamp and shaded alone; helper lanes output 0. Textures are sampled with the texture
+/// module's scalar reference at level 0 (the float lane has no neighbours for derivatives, and
+/// this functor supplies none): exact only for textures without mips.
+template <class PS>
+struct ScalarReference {
+  static constexpr AttributeList kAttributes = PS::kAttributes;
+  static constexpr int kVaryings = PS::kVaryings;
+  static constexpr bool kCanDiscard = false, kWritesDepth = false;
+
+  PS shader;
+
+  void operator()(const rasterizer::PixelInput<kVaryings>& in, rasterizer::PixelOutput& out) const {
+    alignas(64) float attributes[4 * (kVaryings > 0 ? kVaryings : 1)][simd::kLanes];
+    for (int v = 0; v < kVaryings; ++v) {
+      in.varyings[v].x.store_aligned(attributes[4 * v]);
+      in.varyings[v].y.store_aligned(attributes[4 * v + 1]);
+      in.varyings[v].z.store_aligned(attributes[4 * v + 2]);
+      in.varyings[v].w.store_aligned(attributes[4 * v + 3]);
+    }
+    alignas(64) float color[4][simd::kLanes] = {};
+    for (int lane = 0; lane < simd::kLanes; ++lane) {
+      if (!((in.live >> lane) & 1u)) continue;
+      detail::PixelAttributes<kAttributes> a;
+      for (int i = 0; i < kAttributes.count; ++i) a.values[static_cast<size_t>(i)] = attributes[i][lane];
+      const float4<float> c = shader.shade(a);
+      color[0][lane] = c.x;
+      color[1][lane] = c.y;
+      color[2][lane] = c.z;
+      color[3][lane] = c.w;
+    }
+    out.color = {simd::Float::load_aligned(color[0]), simd::Float::load_aligned(color[1]),
+                 simd::Float::load_aligned(color[2]), simd::Float::load_aligned(color[3])};
   }
 };
 
