@@ -9,6 +9,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <iostream>
+#include <map>
 #include <stdexcept>
 #include <utility>
 
@@ -31,6 +32,12 @@ void FrameOptions::add_to(CLI::App& cmd) {
                  "When the scene needs a bake it lacks (kept as `luxel bake` keeps it): full, or quick (a preview in seconds)")
       ->check(CLI::IsMember({"full", "quick"}))
       ->capture_default_str();
+  const std::map<std::string, frame::AmbientSampling> ambient{{"nearest", frame::AmbientSampling::nearest},
+                                                               {"trilinear", frame::AmbientSampling::trilinear}};
+  cmd.add_option("--ambient", settings.ambient,
+                 "A model's ambient cube from the irradiance volume: nearest (the nearest sample's, the default) or "
+                 "trilinear (blended from the eight samples around it)")
+      ->transform(CLI::CheckedTransformer(ambient, CLI::ignore_case));
 }
 
 std::optional<rasterizer::ContextOptions> FrameOptions::context_options(const std::string& command, int& code) const {

@@ -19,11 +19,11 @@ namespace luxel::cli {
 
 struct FrameOptions {
   std::string scene = "builtin:demo";
-  frame::FrameSettings settings;  ///< size, samples, camera (the model is each command's own)
+  frame::FrameSettings settings;  ///< size, samples, camera, ambient (the model is each command's own)
   int threads = 0;
   std::string bake = "full";      ///< the bake made on demand: full or quick
 
-  /// Registers --scene --width --height --msaa --camera --threads --bake on `cmd`.
+  /// Registers --scene --width --height --msaa --camera --threads --bake --ambient on `cmd`.
   void add_to(CLI::App& cmd);
 
   /// The rasterizer context's options: the threads and LUXEL_NO_FASTPATH; nullopt after printing

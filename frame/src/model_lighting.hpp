@@ -1,7 +1,7 @@
 #pragma once
 // Private: what lights a model (SOURCE_FACTS 2.2, 3.4): the ambient cube of the irradiance-volume
-// sample nearest its centroid, its two most significant local lights, every other light folded
-// into that cube on the CPU (shading/source/light_folding.hpp: significance = delivered
+// sample nearest its centroid (or the trilinear blend of the eight around it), its two most
+// significant local lights, every other light folded into that cube on the CPU (shading/source/light_folding.hpp: significance = delivered
 // luminance at the centroid, ties by scene order), then the hero boost where the material asks.
 //
 // Hero boost: a material's hero_boost h > 1 turns on light_folding.hpp's ambient boost with the
@@ -12,6 +12,7 @@
 // scene with no light at all (no lights, no sky: a glTF model on its own), which is drawn
 // fullbright, a white cube, as Source draws a map that was never lit.
 
+#include "luxel/frame/renderer.hpp"
 #include "luxel/scenes/scene.hpp"
 #include "luxel/shading/source/light_folding.hpp"
 
@@ -30,10 +31,11 @@ struct ModelLighting {
 /// The scene's lights as the shaders' light descriptions, in scene order.
 std::vector<shading::source::LightDesc> light_descriptions(const scenes::Scene& scene);
 
-/// The cube of the volume sample nearest `point` (clamped to the grid), or black / white (above).
-shading::source::AmbientCube nearest_ambient_cube(const scenes::Scene& scene, const glm::vec3& point);
+/// The volume's cube at `point` (clamped to the grid): the nearest sample's, or the trilinear
+/// blend of the eight around it; black / white (above) without a volume.
+shading::source::AmbientCube ambient_cube(const scenes::Scene& scene, const glm::vec3& point, AmbientSampling sampling);
 
 ModelLighting light_model(const scenes::Scene& scene, std::span<const shading::source::LightDesc> lights,
-                          const glm::vec3& centroid, const scenes::Material& material);
+                          const glm::vec3& centroid, const scenes::Material& material, AmbientSampling sampling);
 
 }  // namespace luxel::frame

@@ -381,7 +381,7 @@ class FrameBuilder {
   SourceDraw vertexlit(size_t index, const scenes::Mesh& mesh, const scenes::Material& m, const DrawTarget& target) {
     const int model = model_of_mesh_[index];
     const glm::vec3 centroid = model >= 0 ? scene_.models[static_cast<size_t>(model)].centroid : mesh_center(mesh);
-    const ModelLighting lighting = light_model(scene_, lights_, centroid, m);
+    const ModelLighting lighting = light_model(scene_, lights_, centroid, m, st_.settings.ambient);
     const bool phong = m.phong && model_ != shading::ShaderModel::ps_2_0;  // Valve's helper turns $phong off on ps_2_0
     VertexLitCombo wanted;
     wanted.lights = lighting.kept > 0 ? 2 : 0;

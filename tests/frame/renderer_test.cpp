@@ -127,6 +127,49 @@ TEST(Renderer, VertexLitTakesTheAmbientCubeAndTheLight) {
   }
 }
 
+TEST(Renderer, AmbientFromTheNearestSampleOrTrilinear) {
+  // A 2x3x2 volume whose samples differ on their +Z side only; the square's center (0, 0, 0) sits
+  // at grid coordinates (0.25, 0.6, 0.3): nearest is sample (0, 1, 0), trilinear weighs all
+  // eight around it. No light: the pixel is albedo x the cube's +Z side.
+  scenes::Scene s = lit_by_cube_and_sun(false);
+  s.lights.clear();
+  scenes::IrradianceVolume v;
+  v.min = {-0.5f, -1.2f, -0.6f};
+  v.spacing = glm::vec3(2.0f);
+  v.counts = {2, 3, 2};
+  v.max = v.min + v.spacing * glm::vec3(v.counts - 1);
+  for (int z = 0; z < 2; ++z)
+    for (int y = 0; y < 3; ++y)
+      for (int x = 0; x < 2; ++x) {
+        scenes::AmbientCube c;
+        c.fill(glm::vec3(9.0f));
+        c[4] = glm::vec3(0.1f + 0.3f * x, 0.05f + 0.2f * y, 0.1f + 0.5f * z);
+        v.cubes.push_back(c);
+      }
+  s.irradiance_volume = v;
+  const double albedo[3] = {0.8, 0.6, 0.4}, g[3] = {0.25, 0.6, 0.3};
+  // The +Z side of sample (x, y, z), channel c, as built above.
+  const auto side = [](int x, int y, int z, int c) { return c == 0 ? 0.1 + 0.3 * x : c == 1 ? 0.05 + 0.2 * y : 0.1 + 0.5 * z; };
+  double nearest[3], trilinear[3];
+  for (int c = 0; c < 3; ++c) {
+    nearest[c] = 255 * encode(albedo[c] * side(0, 1, 0, c));
+    double sum = 0;
+    for (int z = 0; z < 2; ++z)
+      for (int y = 0; y < 2; ++y)
+        for (int x = 0; x < 2; ++x)
+          sum += (x ? g[0] : 1 - g[0]) * (y ? g[1] : 1 - g[1]) * (z ? g[2] : 1 - g[2]) * side(x, y, z, c);
+    trilinear[c] = 255 * encode(albedo[c] * sum);
+  }
+  expect_everywhere(render(s), 0, kSize, nearest, "nearest sample");
+  FrameSettings f{kSize, kSize, 4};
+  f.ambient = AmbientSampling::trilinear;
+  Renderer r(s, f);
+  rasterizer::Context ctx(2);
+  r.render(ctx);
+  expect_everywhere(r.image(), 0, kSize, trilinear, "trilinear");
+  EXPECT_GT(std::abs(nearest[1] - trilinear[1]), 3.0) << "the two must differ for the test to mean anything";
+}
+
 TEST(Renderer, Ps20DropsPhongAndTheOtherModelsAgree) {
   scenes::Scene s = lit_by_cube_and_sun(true);
   s.materials[0].phong = true;

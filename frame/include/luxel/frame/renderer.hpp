@@ -13,7 +13,8 @@
 //    first), the base and bump textures, the env map of the nearest baked cube-map sample (or the
 //    material's own cube; with none baked yet, the sky cube), masks and Valve's fast-path choice.
 //  - VertexLitGeneric (models, and vertex-lit meshes outside any model): per pixel, the ambient
-//    cube of the irradiance-volume sample nearest the model's centroid, the two most significant
+//    cube of the irradiance-volume sample nearest the model's centroid (or blended trilinearly
+//    from the eight around it, FrameSettings::ambient), the two most significant
 //    lights, every other light folded into the cube, the hero boost; a scene with no light at all
 //    fullbright (model_lighting.hpp); Phong,
 //    exponent texture, rim and Half-Lambert as the material asks, Phong off on ps_2_0 (as Valve's
@@ -59,6 +60,12 @@
 
 namespace luxel::frame {
 
+/// How a model's ambient cube is read from the irradiance volume at its centroid.
+enum class AmbientSampling : uint8_t {
+  nearest,    ///< the nearest sample's cube (a model's light changes in steps as it moves)
+  trilinear,  ///< the eight samples around the centroid, blended trilinearly per cube side
+};
+
 struct FrameSettings {
   int width = 1280;
   int height = 720;
@@ -67,6 +74,7 @@ struct FrameSettings {
   std::optional<float> path_time = std::nullopt;  ///< set: the camera of Scene::camera_path at this time, seconds
   /// The pixel-shader model the Source shaders are drawn as: ps_2_0, ps_2_b or ps_3_0.
   shading::ShaderModel model = shading::ShaderModel::ps_3_0;
+  AmbientSampling ambient = AmbientSampling::nearest;
   /// The tone-map scale (LINEAR_LIGHT_SCALE); unset: the scene's Exposure clamped around 1.
   std::optional<float> exposure = std::nullopt;
   /// Count the pixels each shader combo shades (Renderer::shader_uses); off, a frame counts nothing.
