@@ -17,6 +17,7 @@
 #include "luxel/rasterizer/fast_paths.hpp"
 #include "luxel/scenes/builtin.hpp"
 #include "luxel/scenes/image_io.hpp"
+#include "luxel/shading/shader_model.hpp"
 
 #include <CLI/CLI.hpp>
 
@@ -30,6 +31,7 @@
 #include <memory>
 #include <string>
 #include <tuple>
+#include <utility>
 #include <vector>
 
 namespace {
@@ -38,14 +40,20 @@ namespace {
 constexpr const char* kSponzaDefaults[2] = {"../shared/assets/sponza/Sponza.gltf",
                                             "../shared/assets/gltf/sponza/glTF/Sponza.gltf"};
 
+double median_of(std::vector<double> v) {
+  std::sort(v.begin(), v.end());
+  const size_t n = v.size();
+  return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
   CLI::App app{"luxel frame benchmark (same workloads and output format as the llvmpipe peer)"};
   luxel::frame::FrameSettings settings;
   int threads = 2, frames = 30, warmup = 5;
-  bool print_frames = false;
-  std::string out;
+  bool print_frames = false, passes = false;
+  std::string out, model = "ps_3_0";
   std::vector<std::string> workloads;
   std::string sponza_path, eye_text, target_text;
   app.add_option("--width", settings.width)->check(CLI::Range(1, 8192));
@@ -56,6 +64,11 @@ int main(int argc, char** argv) {
   app.add_option("--warmup", warmup)->check(CLI::Range(0, 100000));
   app.add_option("--out", out, "Directory for the final frame of each workload as PNG");
   app.add_flag("--print-frames", print_frames, "Print every frame time to stderr");
+  app.add_option("--model", model, "Shader model of the Source frame (demo, courtyard): ps_2_0, ps_2_b or ps_3_0")
+      ->check(CLI::IsMember({"ps_2_0", "ps_2_b", "ps_3_0"}));
+  app.add_flag("--passes", passes,
+               "Then time each pass of the built-in scenes' frames (stderr: median ms per pass, each pass run to its end "
+               "before the next, so their sum exceeds the frame's time)");
   app.add_option("--sponza", sponza_path, "glTF file for the sponza workload (default: the first that exists of " +
                                              std::string(kSponzaDefaults[0]) + " and " + kSponzaDefaults[1] + ")");
   app.add_option("--eye", eye_text, "Sponza camera position X,Y,Z in glTF space (with --target)");
@@ -64,6 +77,7 @@ int main(int argc, char** argv) {
                  "fill, tris, sponza (default: the three, as the peer), or a built-in scene: demo, courtyard");
   CLI11_PARSE(app, argc, argv);
   if (workloads.empty()) workloads = {"fill", "tris", "sponza"};
+  settings.model = luxel::shading::parse_pixel_model(model);
   luxel::bench::SponzaView view;
   for (auto [text, name, value] : {std::tuple{&eye_text, "--eye", &view.eye}, std::tuple{&target_text, "--target", &view.target}}) {
     if (text->empty()) continue;
@@ -151,11 +165,27 @@ int main(int argc, char** argv) {
     }
     std::vector<double> sorted = ms;
     std::sort(sorted.begin(), sorted.end());
-    const size_t n = sorted.size();
-    const double median = n % 2 ? sorted[n / 2] : 0.5 * (sorted[n / 2 - 1] + sorted[n / 2]);
     std::printf("workload=%s width=%d height=%d msaa=%d threads=%d frames=%d median_ms=%.3f min_ms=%.3f\n",
-                name.c_str(), settings.width, settings.height, settings.samples, threads, frames, median, sorted[0]);
+                name.c_str(), settings.width, settings.height, settings.samples, threads, frames, median_of(ms), sorted[0]);
     std::fflush(stdout);
+    if (passes && renderer) {
+      luxel::frame::FrameSettings timed = settings;
+      timed.time_passes = true;
+      luxel::frame::Renderer per_pass(scene, timed);
+      std::vector<std::pair<std::string, std::vector<double>>> pass_ms;
+      for (int i = 0; i < warmup + frames; ++i) {
+        per_pass.render(ctx);
+        if (i < warmup) continue;
+        for (const luxel::frame::PassTime& p : per_pass.pass_times()) {
+          auto it = std::find_if(pass_ms.begin(), pass_ms.end(), [&](const auto& e) { return e.first == p.pass; });
+          if (it == pass_ms.end()) it = pass_ms.insert(pass_ms.end(), {p.pass, {}});
+          it->second.push_back(p.ms);
+        }
+      }
+      std::fprintf(stderr, "%s %s passes median_ms:", name.c_str(), model.c_str());
+      for (const auto& [pass, times] : pass_ms) std::fprintf(stderr, " %s=%.3f", pass.c_str(), median_of(times));
+      std::fprintf(stderr, "\n");
+    }
     if (!out.empty()) {
       const std::string path = out + "/" + name + "_" + std::to_string(settings.width) + "x" +
                                std::to_string(settings.height) + "_msaa" + std::to_string(settings.samples) + "_t" +
