@@ -151,34 +151,38 @@ TEST(Cubemaps, TheMergeMatchesAFloatRenderOfTheSameFaces) {
   const scenes::Scene scene = baked_courtyard();
   rasterizer::Context ctx(2);
   constexpr int n = 16;
-  const glm::vec3 at = scene.cubemap_samples.at(0).position;
   const auto textures = std::make_shared<const SceneTextures>(scene);
   for (float stops : {2.0f, 4.0f}) {
     const std::vector<float> exposures = exposure_bracket(scene, stops);
     ASSERT_GE(exposures.size(), 3u);
-    const scenes::Texture cube = bake_cubemap(scene, at, n, exposures, shading::ShaderModel::ps_3_0, ctx, "test", textures);
+    // Every face of every sample of the scene.
     std::vector<std::vector<glm::vec4>> merged, reference, one_exposure, undivided;
-    for (int f = 0; f < 6; ++f) {
-      reference.push_back(capture_face_float(scene, at, CubeFace(f), n, shading::ShaderModel::ps_3_0, ctx, textures));
-      std::vector<glm::vec4> m;
-      for (size_t i = 0; i < size_t(n) * n; ++i)
-        m.emplace_back(cube.faces[size_t(f)].rgba32f[4 * i], cube.faces[size_t(f)].rgba32f[4 * i + 1],
-                       cube.faces[size_t(f)].rgba32f[4 * i + 2], 1.0f);
-      merged.push_back(m);
-      // Wrong merges the bound must catch: the middle exposure alone, and no division by the exposure.
-      std::vector<rasterizer::Image> images;
-      for (float e : exposures)
-        images.push_back(capture_face(scene, at, CubeFace(f), n, e, shading::ShaderModel::ps_3_0, ctx, textures));
-      const size_t mid = exposures.size() / 2;
-      one_exposure.push_back(merge_exposures(std::span(&images[mid], 1), std::span(&exposures[mid], 1)));
-      const std::vector<float> ones(exposures.size(), 1.0f);
-      undivided.push_back(merge_exposures(images, ones));
+    for (const scenes::CubemapSample& sample : scene.cubemap_samples) {
+      const glm::vec3 at = sample.position;
+      const scenes::Texture cube = bake_cubemap(scene, at, n, exposures, shading::ShaderModel::ps_3_0, ctx, "test", textures);
+      for (int f = 0; f < 6; ++f) {
+        reference.push_back(capture_face_float(scene, at, CubeFace(f), n, shading::ShaderModel::ps_3_0, ctx, textures));
+        std::vector<glm::vec4> m;
+        for (size_t i = 0; i < size_t(n) * n; ++i)
+          m.emplace_back(cube.faces[size_t(f)].rgba32f[4 * i], cube.faces[size_t(f)].rgba32f[4 * i + 1],
+                         cube.faces[size_t(f)].rgba32f[4 * i + 2], 1.0f);
+        merged.push_back(m);
+        // Wrong merges the bound must catch: the middle exposure alone, and no division by the exposure.
+        std::vector<rasterizer::Image> images;
+        for (float e : exposures)
+          images.push_back(capture_face(scene, at, CubeFace(f), n, e, shading::ShaderModel::ps_3_0, ctx, textures));
+        const size_t mid = exposures.size() / 2;
+        one_exposure.push_back(merge_exposures(std::span(&images[mid], 1), std::span(&exposures[mid], 1)));
+        const std::vector<float> ones(exposures.size(), 1.0f);
+        undivided.push_back(merge_exposures(images, ones));
+      }
     }
     // Texels some exposure sees above the dark floor.
     const float floor = rasterizer::kSrgbToLinear[kDarkCode + 1] / exposures.back();
     const StopError e = stop_error(merged, reference, floor);
-    std::printf("[ measure  ] %.0f stops apart, %zu exposures: %zu channels over %.1f stops, merge error max %.4f, p99 %.4f stops\n",
-                stops, exposures.size(), e.count, e.range, e.max, e.p99);
+    std::printf("[ measure  ] %.0f stops apart, %zu exposures, %dx%d faces: %zu channels over %.1f stops, "
+                "merge error max %.4f, p99 %.4f stops\n",
+                stops, exposures.size(), n, n, e.count, e.range, e.max, e.p99);
     EXPECT_GT(e.range, 10.0) << "the courtyard's faces span the sky's sun to shaded walls";
     const double max_bound = stops <= 2.0f ? 0.03 : 0.05, p99_bound = stops <= 2.0f ? 0.02 : 0.035;
     EXPECT_LE(e.max, max_bound);

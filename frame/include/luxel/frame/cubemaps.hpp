@@ -19,7 +19,8 @@
 // materials' emission) under 0.9 (code 243: not clipped); the brightest puts the dimmest surface
 // worth reflecting (a dark albedo, kDarkAlbedo, under the 1st-percentile flat lightmap value) at
 // 0.25 (code 137: half a step is 0.8 % of it); in between, exposures `stops_apart` stops apart.
-// Two stops leave every value of the range at code 137 or above in some exposure; four, at 65.
+// Some exposure puts every value of the range within `stops_apart` stops under 0.9: two stops
+// apart, at code 131 or above; four, at 67 or above.
 //
 // Capture without MSAA: a face texel is one pixel sample, as the float reference must be.
 
