@@ -1,9 +1,13 @@
 #include "baking.hpp"
 
+#include "luxel/bake/cubemap_storage.hpp"
 #include "luxel/bake/storage.hpp"
 
 #include <unistd.h>
 
+#include <algorithm>
+
+#include <chrono>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
@@ -62,11 +66,13 @@ bool needs_bake(const scenes::Scene& scene) {
     vertexlit = vertexlit || f == scenes::ShaderFamily::vertexlit_generic;
   }
   const bool volume_empty = scene.irradiance_volume && scene.irradiance_volume->cubes.empty();
-  return (lightmapped && !scene.lightmaps) || (vertexlit && volume_empty);
+  const bool cube_missing = std::any_of(scene.cubemap_samples.begin(), scene.cubemap_samples.end(),
+                                        [](const scenes::CubemapSample& s) { return s.texture < 0; });
+  return (lightmapped && !scene.lightmaps) || (vertexlit && volume_empty) || cube_missing;
 }
 
 void bake_and_attach(scenes::Scene& scene, const std::string& folder, const bake::BakeSettings& settings,
-                     const char* command) {
+                     const frame::CubemapSettings& cube_settings, const char* command) {
   std::optional<bake::BakeResult> result;
   try {
     result = bake::load_bake(folder, scene, settings);
@@ -80,6 +86,39 @@ void bake_and_attach(scenes::Scene& scene, const std::string& folder, const bake
     bake::save_bake(*result, scene, settings, folder);
   }
   bake::attach(scene, *result);
+  bake_and_attach_cubemaps(scene, folder, cube_settings, settings.threads, command);
+}
+
+bool bake_and_attach_cubemaps(scenes::Scene& scene, const std::string& folder, const frame::CubemapSettings& settings,
+                              int threads, const char* command, bool force) {
+  if (scene.cubemap_samples.empty()) return false;
+  const uint64_t hash = frame::cubemap_input_hash(scene, settings);
+  std::optional<bake::StoredCubemaps> stored;
+  if (!force) {
+    try {
+      stored = bake::load_cubemaps(folder, hash);
+    } catch (const std::exception& e) {
+      std::cerr << command << ": warning: " << e.what() << "; baking them again\n";  // damaged cubes are replaced
+    }
+  }
+  const bool render = !stored;
+  if (render) {
+    const bool tty = isatty(STDERR_FILENO) != 0;
+    const auto start = std::chrono::steady_clock::now();
+    auto seconds = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(); };
+    stored.emplace();
+    stored->exposures = frame::exposure_bracket(scene, settings.stops_apart);
+    rasterizer::Context ctx(threads);
+    stored->cubes = frame::bake_cubemaps(scene, settings, ctx, [&](int done, int total) {
+      if (tty) std::fprintf(stderr, "\r\033[Kluxel bake: cube maps: %d/%d, %.1f s", done, total, seconds());
+    });
+    std::fprintf(stderr, "%sluxel bake: cube maps: %zu done (%d exposures, %s faces) in %.2f s\n", tty ? "\r\033[K" : "", stored->cubes.size(),
+                 int(stored->exposures.size()),
+                 settings.face_size > 0 ? (std::to_string(settings.face_size) + "-texel").c_str() : "sample-size", seconds());
+    bake::save_cubemaps(*stored, hash, folder);
+  }
+  frame::attach_cubemaps(scene, std::move(stored->cubes));
+  return render;
 }
 
 }  // namespace luxel::cli

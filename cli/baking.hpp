@@ -4,6 +4,7 @@
 // that the scene lacks bakes it first, or loads the bake kept from before).
 
 #include "luxel/bake/bake.hpp"
+#include "luxel/frame/cubemaps.hpp"
 #include "luxel/scenes/scene.hpp"
 
 #include <string>
@@ -22,13 +23,23 @@ bake::ProgressFn bake_progress_printer();
 std::string ray_rate(double rays, double seconds);
 
 /// Whether rendering `scene` needs a bake it does not have: LightmappedGeneric meshes without
-/// Scene::lightmaps, or an irradiance volume without cubes while VertexLitGeneric meshes read it.
+/// Scene::lightmaps, an irradiance volume without cubes while VertexLitGeneric meshes read it, or
+/// cube-map samples without their cube.
 bool needs_bake(const scenes::Scene& scene);
 
 /// Loads the bake of `scene` kept in `folder` if it is for these inputs, else bakes (with
-/// progress) and keeps it there; then attaches it. `command` prefixes the messages on stderr.
-/// Throws std::runtime_error (bake::BakeError included) naming the problem.
+/// progress) and keeps it there; then attaches it, and then its cube maps the same way
+/// (bake_and_attach_cubemaps). `command` prefixes the messages on stderr. Throws
+/// std::runtime_error (bake::BakeError included) naming the problem.
 void bake_and_attach(scenes::Scene& scene, const std::string& folder, const bake::BakeSettings& settings,
-                     const char* command);
+                     const frame::CubemapSettings& cube_settings, const char* command);
+
+/// The cube maps of `scene`'s cube-map samples (frame/cubemaps.hpp), rendered from the scene as it
+/// is (its lightmaps attached): loaded from `folder` when kept there for these inputs (unless
+/// `force`), else rendered with progress on `threads` threads and kept there; then attached.
+/// Nothing for a scene without samples. Returns whether they were rendered. Throws
+/// std::runtime_error or std::invalid_argument naming the problem.
+bool bake_and_attach_cubemaps(scenes::Scene& scene, const std::string& folder, const frame::CubemapSettings& settings,
+                              int threads, const char* command, bool force = false);
 
 }  // namespace luxel::cli

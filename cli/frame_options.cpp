@@ -86,7 +86,8 @@ std::optional<scenes::Scene> FrameOptions::prepare_scene(const std::string& comm
     bake::BakeSettings bake_settings = bake == "quick" ? bake::BakeSettings::quick() : bake::BakeSettings{};
     bake_settings.threads = threads;
     try {
-      bake_and_attach(*loaded, folder, bake_settings, ("luxel " + command).c_str());
+      const frame::CubemapSettings cube_settings = bake == "quick" ? frame::CubemapSettings::quick() : frame::CubemapSettings{};
+      bake_and_attach(*loaded, folder, bake_settings, cube_settings, ("luxel " + command).c_str());
     } catch (const std::exception& e) {
       std::cerr << "luxel " << command << ": " << e.what() << "\n";
       code = 1;

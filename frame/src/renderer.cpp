@@ -20,6 +20,7 @@
 #include <glm/matrix.hpp>
 
 #include <algorithm>
+#include <bit>
 #include <chrono>
 #include <cmath>
 #include <stdexcept>
@@ -33,6 +34,7 @@ namespace luxel::frame {
 using namespace rasterizer;
 
 scenes::Camera frame_camera(const scenes::Scene& scene, const FrameSettings& settings) {
+  if (settings.view) return *settings.view;
   if (settings.path_time) return scenes::camera_at(scene.camera_path, *settings.path_time);
   if (settings.camera < 0 || settings.camera >= static_cast<int>(scene.cameras.size()))
     throw std::invalid_argument((scene.name.empty() ? std::string("scene") : scene.name) + " has no camera " +
@@ -126,10 +128,11 @@ struct FrameState {
   ColorTarget color;
   DepthStencilTarget depth;
   glm::vec4 clear;
-  std::vector<GpuTexture> textures;
+  std::shared_ptr<const SceneTextures> prepared;  // possibly shared with other renderers of the scene
+  const std::vector<GpuTexture>& textures = prepared->textures;
   GpuTexture white = white_texture();
-  std::optional<GpuTexture> lightmaps;
-  LightmapPage page;
+  const std::optional<GpuTexture>& lightmaps = prepared->lightmaps;
+  const LightmapPage& page = prepared->page;
   std::optional<GpuTexture> normalization_cube;
   std::vector<GpuTexture> sky_faces;
   std::vector<scenes::Mesh> completed_meshes;     // meshes given tangents the frame needed
@@ -149,8 +152,8 @@ struct FrameState {
   std::vector<ShaderUse> shader_uses;
   std::vector<PassTime> pass_times;
 
-  FrameState(const scenes::Scene& s, const FrameSettings& f)
-      : scene(&s), settings(f), color(f.width, f.height, f.samples), depth(f.width, f.height, f.samples) {}
+  FrameState(const scenes::Scene& s, const FrameSettings& f, std::shared_ptr<const SceneTextures> t)
+      : scene(&s), settings(f), color(f.width, f.height, f.samples), depth(f.width, f.height, f.samples), prepared(std::move(t)) {}
 };
 
 namespace {
@@ -173,6 +176,17 @@ const FrameSettings& checked(const scenes::Scene& scene, const FrameSettings& s)
   return s;
 }
 
+/// The scene's textures, checked to be its own or prepared here, once the scene and settings passed.
+std::shared_ptr<const SceneTextures> prepared(const scenes::Scene& scene, const FrameSettings& s,
+                                              std::shared_ptr<const SceneTextures> textures) {
+  checked(scene, s);
+  if (!textures) return std::make_shared<const SceneTextures>(scene);
+  if (textures->textures.size() != scene.textures.size())
+    throw std::invalid_argument(scene.name + ": the prepared textures are not the scene's (" +
+                                std::to_string(textures->textures.size()) + " for " + std::to_string(scene.textures.size()) + ")");
+  return textures;
+}
+
 /// Builds the frame's draws: what renderer.hpp promises, one function per family.
 class FrameBuilder {
  public:
@@ -181,7 +195,7 @@ class FrameBuilder {
     const scenes::Exposure& e = scene_.exposure;
     exposure_ = st.settings.exposure ? *st.settings.exposure : std::clamp(1.0f, e.min_scale, e.max_scale);
     tonemap_ = ToneMapConstants::for_scale(exposure_);
-    if (scene_.fog.mode != scenes::FogMode::none) {
+    if (scene_.fog.mode != scenes::FogMode::none && !st.settings.cubemap_capture) {
       fog_settings_.start = scene_.fog.start;
       fog_settings_.end = scene_.fog.end;
       fog_settings_.max_density = scene_.fog.max_density;
@@ -200,9 +214,11 @@ class FrameBuilder {
   void add_mesh(size_t index) {
     const scenes::Mesh* mesh = &scene_.meshes[index];
     const scenes::Material& m = mesh->material >= 0 ? scene_.materials[static_cast<size_t>(mesh->material)] : default_material_;
+    if (st_.settings.cubemap_capture && !captured(index, m)) return;
     FrameState::Pass pass;
     pass.state = state_of(m);
-    if (is_trivial_unlit(m, scene_, exposure_)) {
+    // (A capture is rendered to floats too, which only Source draws can: render_float.)
+    if (is_trivial_unlit(m, scene_, exposure_) && !st_.settings.cubemap_capture) {
       pass.geometry = geometry_of(*mesh);
       pass.trivial = st_.trivial_vertices.size();
       st_.trivial_vertices.push_back(UnlitVertex{mesh->positions.data(), data_or_null(mesh->colors), m.color, vp_});
@@ -290,6 +306,11 @@ class FrameBuilder {
 
   static bool translucent(const scenes::Material& m) { return m.translucent || m.alpha == scenes::AlphaMode::blend; }
 
+  /// Whether a cube-map capture draws mesh `index` (renderer.hpp): world, not blended, not water.
+  bool captured(size_t index, const scenes::Material& m) const {
+    return model_of_mesh_[index] < 0 && !translucent(m) && m.family != scenes::ShaderFamily::water;
+  }
+
   static bool needs_tangents(const scenes::Material& m) {
     return m.bump.bound() && (m.family == scenes::ShaderFamily::lightmapped_generic || m.family == scenes::ShaderFamily::vertexlit_generic);
   }
@@ -338,7 +359,9 @@ class FrameBuilder {
         const glm::vec3 c = mesh_center(mesh);
         const scenes::CubemapSample* best = nullptr;
         for (const scenes::CubemapSample& s : scene_.cubemap_samples)
-          if (s.texture >= 0 && (!best || glm::distance(s.position, c) < glm::distance(best->position, c))) best = &s;
+          if (s.texture >= 0 && !st_.settings.cubemap_capture &&
+              (!best || glm::distance(s.position, c) < glm::distance(best->position, c)))
+            best = &s;
         return best ? cube_at(best->texture) : cube_at(scene_.sky_texture);
       }
     }
@@ -472,17 +495,16 @@ struct Renderer::State : FrameState {
   using FrameState::FrameState;
 };
 
-Renderer::Renderer(const scenes::Scene& scene, const FrameSettings& settings)
-    : state_(std::make_unique<State>(scene, checked(scene, settings))) {
+Renderer::Renderer(const scenes::Scene& scene, const FrameSettings& settings, std::shared_ptr<const SceneTextures> textures)
+    : state_(std::make_unique<State>(scene, settings, prepared(scene, settings, std::move(textures)))) {
   State& st = *state_;
   const scenes::Camera camera = frame_camera(scene, settings);
   const glm::mat4 vp(view_projection_d(camera, settings.width, settings.height));
-  st.clear = glm::vec4(float(linear_to_srgb(std::clamp(scene.background.r, 0.0f, 1.0f))),
-                       float(linear_to_srgb(std::clamp(scene.background.g, 0.0f, 1.0f))),
-                       float(linear_to_srgb(std::clamp(scene.background.b, 0.0f, 1.0f))), 1.0f);
-  st.textures.reserve(scene.textures.size());
-  for (const scenes::Texture& t : scene.textures) st.textures.push_back(upload(t));
-  if (scene.lightmaps) st.lightmaps = lightmap_page(scene, st.page);
+  // A capture's background is exposed as its surfaces are (renderer.hpp).
+  const glm::vec3 background = scene.background * (settings.cubemap_capture ? settings.exposure.value_or(1.0f) : 1.0f);
+  st.clear = glm::vec4(float(linear_to_srgb(std::clamp(background.r, 0.0f, 1.0f))),
+                       float(linear_to_srgb(std::clamp(background.g, 0.0f, 1.0f))),
+                       float(linear_to_srgb(std::clamp(background.b, 0.0f, 1.0f))), 1.0f);
   st.completed_meshes.reserve(scene.meshes.size());  // the draws point into it
   FrameBuilder builder(st, camera, vp);
   for (size_t i = 0; i < scene.meshes.size(); ++i) builder.add_mesh(i);
@@ -548,6 +570,31 @@ void Renderer::render(Context& ctx) {
         else it->pixels += pixels;
       }
   }
+}
+
+std::vector<glm::vec4> Renderer::render_float(Context& ctx) {
+  State& st = *state_;
+  if (!st.settings.cubemap_capture || st.settings.samples != 1 || !st.translucent.empty())
+    throw std::invalid_argument("a float frame is rendered only for a cube-map capture without MSAA");
+  const glm::vec3 background = st.scene->background;
+  std::vector<uint32_t> bits(static_cast<size_t>(st.settings.width) * st.settings.height * 3, 0);
+  const Framebuffer fb{&st.color, &st.depth};
+  for (int byte = 0; byte < 4; ++byte) {
+    auto byte_of = [byte](float v) { return float((std::bit_cast<uint32_t>(v) >> (8 * byte)) & 255u) / 255.0f; };
+    ctx.reset_stats();
+    clear_color(ctx, st.color, glm::vec4(byte_of(background.r), byte_of(background.g), byte_of(background.b), 1.0f));
+    clear_depth(ctx, st.depth, 1.0f);
+    for (auto* passes : {&st.opaque, &st.sky}) {
+      for (FrameState::Pass& p : *passes) p.source->run_float_byte(ctx, fb, byte);
+    }
+    resolve_into(ctx, st.color, st.image);
+    for (size_t i = 0; i < bits.size(); ++i) bits[i] |= uint32_t(st.image.rgba[i / 3 * 4 + i % 3]) << (8 * byte);
+  }
+  st.stats = ctx.stats();
+  std::vector<glm::vec4> out(bits.size() / 3);
+  for (size_t i = 0; i < out.size(); ++i)
+    out[i] = {std::bit_cast<float>(bits[3 * i]), std::bit_cast<float>(bits[3 * i + 1]), std::bit_cast<float>(bits[3 * i + 2]), 1.0f};
+  return out;
 }
 
 const Image& Renderer::image() const { return state_->image; }

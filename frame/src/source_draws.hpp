@@ -34,6 +34,9 @@ struct SourceDraw {
   int slots = 0;       ///< counted DX9 slots per pixel on the frame's model
   std::unique_ptr<std::atomic<uint64_t>> pixels = std::make_unique<std::atomic<uint64_t>>(0);
   std::function<void(rasterizer::Context&, const rasterizer::Framebuffer&)> run;
+  /// The same draw writing byte `byte` (0 lowest) of each rgb channel's float bits as that
+  /// channel's 8-bit value, linear, unblended (Renderer::render_float).
+  std::function<void(rasterizer::Context&, const rasterizer::Framebuffer&, int byte)> run_float_byte;
 };
 
 /// Where a draw goes: its state, its triangles, its vertex stage (whose attribute list the
@@ -87,6 +90,32 @@ constexpr auto compact() {
   return out;
 }
 
+/// Pixel functor `PS`, its rgb replaced by one byte of their float bits when `byte` >= 0 (alpha
+/// kept: the alpha test still sees the shader's). One functor type for both uses, so that a
+/// combo's draw is compiled once.
+template <class PS>
+struct FloatBytes {
+  static constexpr bool kCanDiscard = PS::kCanDiscard;
+  static constexpr bool kWritesDepth = PS::kWritesDepth;
+  PS ps;
+  int byte = -1;
+
+  template <class In>
+  void operator()(const In& in, rasterizer::PixelOutput& out) const {
+    ps(in, out);
+    if (byte < 0) return;
+    const int shift = 8 * byte;
+    auto to_byte = [shift](const rasterizer::simd::Float& c) {
+      const auto bits = xsimd::bitwise_cast<rasterizer::simd::UInt>(c);
+      return xsimd::to_float(xsimd::bitwise_cast<rasterizer::simd::Int>((bits >> shift) & rasterizer::simd::UInt(255))) *
+             rasterizer::simd::Float(1.0f / 255.0f);
+    };
+    out.color.x = to_byte(out.color.x);
+    out.color.y = to_byte(out.color.y);
+    out.color.z = to_byte(out.color.z);
+  }
+};
+
 /// The draw of pixel functor `ps` (its counter wired when counting).
 template <class PS>
 SourceDraw make_source_draw(PS ps, const DrawTarget& target, std::string family, std::string combo, int slots) {
@@ -97,9 +126,19 @@ SourceDraw make_source_draw(PS ps, const DrawTarget& target, std::string family,
   if (target.count_pixels) ps.pixels = d.pixels.get();
   target.vertex->attributes = PS::kAttributes;
   const SourceVertex<PS::kVaryings> vs{target.vertex};
-  d.run = [ps, vs, state = target.state, geometry = target.geometry](rasterizer::Context& ctx,
-                                                                    const rasterizer::Framebuffer& fb) {
-    rasterizer::draw(ctx, fb, state, geometry, vs, ps);
+  const FloatBytes<PS> shader{ps};
+  d.run = [shader, vs, state = target.state, geometry = target.geometry](rasterizer::Context& ctx,
+                                                                        const rasterizer::Framebuffer& fb) {
+    rasterizer::draw(ctx, fb, state, geometry, vs, shader);
+  };
+  d.run_float_byte = [shader, vs, state = target.state, geometry = target.geometry](
+                         rasterizer::Context& ctx, const rasterizer::Framebuffer& fb, int byte) {
+    rasterizer::PipelineState linear = state;
+    linear.blend.srgb_write = false;
+    linear.blend.enable = false;
+    FloatBytes<PS> bytes = shader;
+    bytes.byte = byte;
+    rasterizer::draw(ctx, fb, linear, geometry, vs, bytes);
   };
   return d;
 }

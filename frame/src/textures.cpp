@@ -106,6 +106,12 @@ GpuTexture lightmap_page(const scenes::Scene& scene, shading::source::LightmapPa
   return g;
 }
 
+SceneTextures::SceneTextures(const scenes::Scene& scene) {
+  textures.reserve(scene.textures.size());
+  for (const scenes::Texture& t : scene.textures) textures.push_back(upload(t));
+  if (scene.lightmaps) lightmaps = lightmap_page(scene, page);
+}
+
 std::vector<GpuTexture> cube_faces(const scenes::Texture& cube) {
   std::vector<GpuTexture> faces;
   for (int f = 0; f < 6; ++f) {

@@ -37,6 +37,14 @@
 // $alphatestreference), then the sky, then translucent meshes back to front by the distance of
 // their centers from the eye (blended, no depth write). The background clears to
 // Scene::background, sRGB-encoded.
+// A cube-map capture (FrameSettings::cubemap_capture, frame/cubemaps.hpp) draws what Source's
+// buildcubemaps draws, the world: meshes in no Scene::model, opaque or alpha-tested, not water,
+// and the sky; no fog (the surface that reflects the cube fogs its own result, and fog blended
+// after the tone map would not scale with the exposure a capture is taken at); env maps from the
+// material's own cube or the sky cube, never from a cube-map sample (a capture never sees another
+// capture: the result does not depend on the order samples are baked in, nor on cubes attached
+// before); the background scaled by the exposure as the surfaces are (Source scales its clear
+// color by the tone-map scale, SOURCE_FACTS 6.3), so that every exposure sees the same radiance.
 // Not drawn yet: water (its reflection and refraction passes), detail textures, env maps on
 // models, self-illumination; sky-family meshes (the sky is Scene::sky_texture).
 //
@@ -51,6 +59,7 @@
 #include "luxel/shading/shader_model.hpp"
 
 #include <glm/mat4x4.hpp>
+#include <glm/vec4.hpp>
 
 #include <memory>
 #include <cstdint>
@@ -65,6 +74,8 @@ enum class AmbientSampling : uint8_t {
   nearest,    ///< the nearest sample's cube (a model's light changes in steps as it moves)
   trilinear,  ///< the eight samples around the centroid, blended trilinearly per cube side
 };
+
+struct SceneTextures;  // textures.hpp
 
 struct FrameSettings {
   int width = 1280;
@@ -82,6 +93,10 @@ struct FrameSettings {
   /// Time each pass (Renderer::pass_times). The rasterizer then runs each pass over all tiles
   /// before the next instead of all passes tile by tile, so a timed frame is a little slower.
   bool time_passes = false;
+  /// Set: the frame looks through this camera, not `camera` nor `path_time` (a cube-map face).
+  std::optional<scenes::Camera> view = std::nullopt;
+  /// Draw what a cube-map capture draws (above): the world and the sky, unfogged.
+  bool cubemap_capture = false;
 };
 
 /// One pass of the last frame and its wall time (FrameSettings::time_passes).
@@ -99,8 +114,9 @@ struct ShaderUse {
   int slots = 0;        ///< its counted DX9 instruction slots per pixel (arithmetic + texture) on the frame's model
 };
 
-/// The camera a frame with these settings looks through. Throws std::invalid_argument when the
-/// scene has no such camera (an index out of range, a path time without a path).
+/// The camera a frame with these settings looks through (FrameSettings::view when set). Throws
+/// std::invalid_argument when the scene has no such camera (an index out of range, a path time
+/// without a path).
 scenes::Camera frame_camera(const scenes::Scene& scene, const FrameSettings& settings);
 
 /// World (inches, +Z up) to Direct3D clip space for `camera` drawn into a width x height image
@@ -114,7 +130,9 @@ class Renderer {
   /// settings (size outside 1..kMaxTargetSize, samples not 1, 2, 4 or 8, a model that is
   /// not a pixel-shader model, an exposure that is not positive and finite), a missing camera,
   /// or what the scene lacks for its materials (lightmaps, uv1, normals for tangents).
-  Renderer(const scenes::Scene& scene, const FrameSettings& settings);
+  /// `textures`: the scene's textures prepared before (textures.hpp: renderers of one scene
+  /// share them); null: prepared here.
+  Renderer(const scenes::Scene& scene, const FrameSettings& settings, std::shared_ptr<const SceneTextures> textures = nullptr);
   ~Renderer();
   Renderer(Renderer&&) noexcept;
   Renderer& operator=(Renderer&&) noexcept;
@@ -122,6 +140,13 @@ class Renderer {
   /// Renders one frame and resolves it into image().
   void render(rasterizer::Context& ctx);
   const rasterizer::Image& image() const;
+  /// Renders the frame as HDR_TYPE_FLOAT's float target holds it: per pixel, the linear color the
+  /// pixel shader wrote (after the tone-map scale, before any clamp or sRGB encode), alpha 1;
+  /// where nothing was drawn, Scene::background. Row-major, top row first. The 8-bit target
+  /// carries it exactly: four frames, each writing one byte of every channel's float bits
+  /// (linear write, no blending). Only a cube-map capture without MSAA can be rendered so (no
+  /// blended draws, no samples averaged); otherwise throws std::invalid_argument.
+  std::vector<glm::vec4> render_float(rasterizer::Context& ctx);
   /// What the draws of the last frame did, summed.
   const rasterizer::DrawStats& stats() const;
   /// What each shader combo did in the last frame, in a fixed order (first draw first); empty

@@ -6,6 +6,7 @@
 #include "luxel/scenes/scene.hpp"
 #include "luxel/shading/source/adapter.hpp"
 
+#include <optional>
 #include <vector>
 
 namespace luxel::frame {
@@ -28,6 +29,18 @@ GpuTexture white_texture();
 /// never reach its neighbour. `page` receives where each map sits. Throws std::invalid_argument
 /// when the scene's Lightmaps are incomplete or of different sizes.
 GpuTexture lightmap_page(const scenes::Scene& scene, shading::source::LightmapPage& page);
+
+/// A scene's textures as every frame of it samples them: each scenes::Texture uploaded (upload,
+/// in scene order) and, when the scene has lightmaps, its lightmap page. Preparing them is most
+/// of what constructing a Renderer costs: renderers of one scene with different settings (the
+/// faces and exposures of a cube-map capture) share one. Throws as lightmap_page does.
+struct SceneTextures {
+  std::vector<GpuTexture> textures;
+  std::optional<GpuTexture> lightmaps;
+  shading::source::LightmapPage page;
+
+  explicit SceneTextures(const scenes::Scene& scene);
+};
 
 /// The six faces of a cube texture as 2D textures (D3D face order), for the skybox's six quads:
 /// face f's texel (s, t) is the cube's texel (s, t) of face f. Clamped at the edges.
