@@ -20,12 +20,19 @@
 // Counting: when `pixels` is set, each invocation adds its covered lanes to it (relaxed atomics:
 // the sum is the same whatever the thread count; off by default, it costs a contended add per
 // stamp).
+//
+// Water fog to destination alpha: the world families' height-fog combos (the view through the
+// water, the refraction view) write the fog factor to alpha when `water_fog_to_alpha` is set, as
+// the SDK's WRITEWATERFOGTODESTALPHA (lightmappedgeneric_dx9_helper.cpp and vertexlitgeneric's:
+// set with height fog for fully opaque materials; the others keep their alpha). The water shader
+// reads it back as the water's depth (water.hpp).
 
 #include "luxel/rasterizer/draw.hpp"
 #include "luxel/shading/source/lightmapped_generic.hpp"
 #include "luxel/shading/source/sky.hpp"
 #include "luxel/shading/source/unlit_generic.hpp"
 #include "luxel/shading/source/vertexlit_generic.hpp"
+#include "luxel/shading/source/water.hpp"
 
 #include <array>
 #include <atomic>
@@ -110,6 +117,17 @@ LUXEL_INLINE void write(const float4<simd::Float>& c, const rasterizer::PixelInp
   }
 }
 
+/// WRITEWATERFOGTODESTALPHA: alpha = the height fog factor (Fog::height combos only).
+template <Fog F, AttributeList L, int N>
+LUXEL_INLINE void write_water_fog_alpha(bool enabled, const rasterizer::PixelInput<N>& in, const FogConstants& fog,
+                                        rasterizer::PixelOutput& out) {
+  if constexpr (F == Fog::height) {
+    if (enabled)
+      out.color.w = pixel_fog_factor<Fog::height>(
+          FogInputs<simd::Float>{read<L, Attribute::world_z>(in), read<L, Attribute::proj_z>(in)}, fog);
+  }
+}
+
 LUXEL_INLINE void count(std::atomic<uint64_t>* pixels, simd::LaneBits live) {
   if (pixels) pixels->fetch_add(static_cast<uint64_t>(std::popcount(live)), std::memory_order_relaxed);
 }
@@ -148,6 +166,7 @@ struct LightmappedPixelShader {
   LightmapPage page;
   glm::vec3 eye{0.0f};
   std::atomic<uint64_t>* pixels = nullptr;
+  bool water_fog_to_alpha = false;
 
   void operator()(const rasterizer::PixelInput<kVaryings>& in, rasterizer::PixelOutput& out) const {
     using F = simd::Float;
@@ -171,6 +190,7 @@ struct LightmappedPixelShader {
     if constexpr (C.fog == Fog::range || C.fog == Fog::height)
       i.fog = FogInputs<F>{detail::read<L, Attribute::world_z>(in), detail::read<L, Attribute::proj_z>(in)};
     detail::write<C.fog, L>(lightmapped_generic<C>(i, params), in, params.fog, out);
+    detail::write_water_fog_alpha<C.fog, L>(water_fog_to_alpha, in, params.fog, out);
   }
 };
 
@@ -196,6 +216,7 @@ struct VertexLitPixelShader {
 
   VertexLitParams params;
   std::atomic<uint64_t>* pixels = nullptr;
+  bool water_fog_to_alpha = false;
 
   void operator()(const rasterizer::PixelInput<kVaryings>& in, rasterizer::PixelOutput& out) const {
     using F = simd::Float;
@@ -214,6 +235,7 @@ struct VertexLitPixelShader {
                                 detail::read<L, Attribute::attenuation_2>(in), detail::read<L, Attribute::attenuation_3>(in));
     if constexpr (C.fog == Fog::range || C.fog == Fog::height) i.proj_z = detail::read<L, Attribute::proj_z>(in);
     detail::write<C.fog, L>(vertexlit_generic<C>(i, params), in, params.fog, out);
+    detail::write_water_fog_alpha<C.fog, L>(water_fog_to_alpha, in, params.fog, out);
   }
 };
 
@@ -242,6 +264,7 @@ struct UnlitPixelShader {
   UnlitGenericParams params;
   glm::vec3 eye{0.0f};
   std::atomic<uint64_t>* pixels = nullptr;
+  bool water_fog_to_alpha = false;
 
   void operator()(const rasterizer::PixelInput<kVaryings>& in, rasterizer::PixelOutput& out) const {
     using F = simd::Float;
@@ -259,6 +282,7 @@ struct UnlitPixelShader {
     if constexpr (C.fog == Fog::range || C.fog == Fog::height)
       i.fog = FogInputs<F>{detail::read<L, Attribute::world_z>(in), detail::read<L, Attribute::proj_z>(in)};
     detail::write<C.fog, L>(unlit_generic<C>(i, params), in, params.fog, out);
+    detail::write_water_fog_alpha<C.fog, L>(water_fog_to_alpha, in, params.fog, out);
   }
 };
 
@@ -287,6 +311,74 @@ struct SkyPixelShader {
     SkyInputs<F> i;
     i.uv = float2<F>(detail::read<L, Attribute::base_u>(in), detail::read<L, Attribute::base_v>(in));
     detail::write<Fog::none, L>(sky<kCombo>(i, params), in, FogConstants{}, out);
+  }
+};
+
+// ---- Water --------------------------------------------------------------------------------------
+
+constexpr AttributeList water_attributes(const WaterCombo& c) {
+  AttributeList l;
+  l.add({Attribute::base_u, Attribute::base_v});
+  detail::add_world(l);
+  detail::add_normal(l);
+  detail::add_tangent_frame(l);
+  if (!c.above_water) l.add(Attribute::proj_z);
+  detail::add_fog(l, c.fog);
+  return l;
+}
+
+/// What water_vs20 computes from constants, per pixel here (affine in the interpolants, or the
+/// pixel's place on screen).
+struct WaterVertexConstants {
+  /// cBumpTexCoordTransform ($bumptransform): bump u = dot((u, v, 1), bump_u), v likewise, of
+  /// the mesh's uv0.
+  glm::vec3 bump_u{1.0f, 0.0f, 0.0f}, bump_v{0.0f, 1.0f, 0.0f};
+  /// TexOffsets: time x ($scroll1.xy, $scroll2.xy), the MULTITEXTURE reads' offsets.
+  glm::vec4 scroll_offsets{0.0f};
+  /// 1 / the frame's width and height. The vertex shader's projective coordinate of a target
+  /// ((x, -y) + w) / 2 divided by w is the pixel's place on screen, which the rasterizer gives:
+  /// the shader is fed that, with w = 1. The reflection view is mirrored (water_passes.hpp), so
+  /// both targets are read at the pixel's own place.
+  glm::vec2 inverse_size{1.0f};
+};
+
+/// Water_ps2x on a water surface, its reflection and refraction bound as textures.
+template <WaterCombo C>
+struct WaterPixelShader {
+  static constexpr AttributeList kAttributes = water_attributes(C);
+  static constexpr int kVaryings = kAttributes.varyings();
+  static constexpr bool kCanDiscard = false, kWritesDepth = false;
+
+  WaterParams params;
+  WaterVertexConstants constants;
+  glm::vec3 eye{0.0f};
+  std::atomic<uint64_t>* pixels = nullptr;
+
+  void operator()(const rasterizer::PixelInput<kVaryings>& in, rasterizer::PixelOutput& out) const {
+    using F = simd::Float;
+    constexpr AttributeList L = kAttributes;
+    detail::count(pixels, in.live);
+    const F u = detail::read<L, Attribute::base_u>(in), v = detail::read<L, Attribute::base_v>(in);
+    WaterInputs<F> i;
+    const float3<F> uv1(u, v, F(1.0f));
+    i.bump_uv = float2<F>(dot(uv1, constant<F>(constants.bump_u)), dot(uv1, constant<F>(constants.bump_v)));
+    if constexpr (C.multitexture) {
+      const glm::vec4& o = constants.scroll_offsets;
+      i.extra_bump_uv = float4<F>((u + v) * 0.1f + o.x, (v - u) * 0.1f + o.y, v * 0.45f + o.z, u * 0.45f + o.w);
+    }
+    const float3<F> eye_vector =
+        constant<F>(eye) - detail::read3<L, Attribute::world_x, Attribute::world_y, Attribute::world_z>(in);
+    const float3<F> t = detail::read3<L, Attribute::tangent_x, Attribute::tangent_y, Attribute::tangent_z>(in);
+    const float3<F> b = detail::read3<L, Attribute::binormal_x, Attribute::binormal_y, Attribute::binormal_z>(in);
+    const float3<F> n = detail::read3<L, Attribute::normal_x, Attribute::normal_y, Attribute::normal_z>(in);
+    i.tangent_eye = float3<F>(dot(eye_vector, t), dot(eye_vector, b), dot(eye_vector, n));
+    const F sx = in.x * constants.inverse_size.x, sy = in.y * constants.inverse_size.y;
+    i.reflect_refract = float4<F>(sx, sy, sy, sx);
+    i.w = F(1.0f);
+    if constexpr (!C.above_water || C.fog == Fog::range || C.fog == Fog::height)
+      i.proj_z = detail::read<L, Attribute::proj_z>(in);
+    if constexpr (C.fog == Fog::height) i.world_z = detail::read<L, Attribute::world_z>(in);
+    detail::write<C.fog, L>(water<C>(i, params), in, params.pixel_fog, out);
   }
 };
 
