@@ -251,6 +251,7 @@ class FrameBuilder {
       }
     for (int f = 0; f < 6; ++f) {
       Pass pass;
+      pass.state.scissor = view_.scissor;
       pass.state.rasterizer.cull = CullMode::None;
       pass.state.depth_stencil.depth_func = CompareFunc::LessEqual;
       pass.state.depth_stencil.depth_write = false;
@@ -277,6 +278,7 @@ class FrameBuilder {
 
   PipelineState state_of(const scenes::Material& m) const {
     PipelineState s;
+    s.scissor = view_.scissor;
     s.depth_stencil.depth_func = CompareFunc::Less;
     // Back faces turn clockwise on screen; in a mirrored view, counter-clockwise.
     s.rasterizer.front_counter_clockwise = !view_.mirrored;

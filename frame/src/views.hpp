@@ -61,6 +61,8 @@ struct ViewSpec {
   /// Set: the water's height fog instead of the scene's fog, and opaque materials write its
   /// factor to destination alpha (the refraction view, water_passes.hpp).
   std::optional<shading::source::FogSettings> water_fog;
+  /// The pixels drawn (the water's views: only what the water can read).
+  rasterizer::Scissor scissor;
   bool sky = true;              ///< the sky cube
   bool water = true;            ///< water meshes (the water's own views never draw water)
 };

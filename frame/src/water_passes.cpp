@@ -9,7 +9,9 @@
 #include "luxel/shading/source/water.hpp"
 
 #include <glm/common.hpp>
+#include <glm/ext/vector_double2.hpp>
 #include <glm/ext/vector_double4.hpp>
+#include <glm/ext/vector_int2.hpp>
 #include <glm/geometric.hpp>
 #include <glm/matrix.hpp>
 
@@ -92,6 +94,56 @@ bool may_be_visible(const scenes::Mesh& mesh, const glm::mat4& vp) {
 
 bool reflects(const scenes::Material& m) { return m.reflect_tint != glm::vec3(0.0f); }
 
+/// The largest offset, in screen units, that water material `m` can add to a lookup: the
+/// normal map's largest |2 texel - 1| in x and y, times its largest alpha, times the larger amount
+/// (water.hpp: offset = n.xy x n.a x amount x depth, depth <= 1). Filtering and MULTITEXTURE's
+/// 0.33 x (three reads) stay within the texels' range, but for 0.33 x 3 = 0.99 moving 2x - 1 by
+/// up to 0.02.
+double largest_offset(const scenes::Material& m, const scenes::Texture& normal_map) {
+  double xy = 0.0, alpha = 0.0;
+  for (const scenes::PixelImage& image : normal_map.faces) {
+    const size_t texels = static_cast<size_t>(image.width) * image.height;
+    for (size_t i = 0; i < texels; ++i) {
+      auto channel = [&](int c) {
+        return image.is_hdr() ? double(image.rgba32f[4 * i + c]) : image.rgba8[4 * i + c] / 255.0;
+      };
+      xy = std::max({xy, std::abs(2 * channel(0) - 1), std::abs(2 * channel(1) - 1)});
+      alpha = std::max(alpha, channel(3));
+    }
+  }
+  const double amount = std::max(std::abs(double(m.reflect_amount)), std::abs(double(m.refract_amount)));
+  return (xy + 0.02) * alpha * amount;
+}
+
+/// The pixels of a width x height frame that `mesh` covers through `vp`, widened by `margin`
+/// pixels: its bounding box's corners projected, the whole frame when one lies behind the eye.
+rasterizer::Scissor screen_rectangle(const scenes::Mesh& mesh, const glm::mat4& vp, int width, int height,
+                                     const glm::ivec2& margin) {
+  rasterizer::Scissor r{true, 0, 0, width, height};
+  glm::vec3 lo = mesh.positions[0], hi = lo;
+  for (const glm::vec3& p : mesh.positions) lo = glm::min(lo, p), hi = glm::max(hi, p);
+  glm::dvec2 min_px(1e300), max_px(-1e300);
+  for (int i = 0; i < 8; ++i) {
+    const glm::vec4 c = vp * glm::vec4(i & 1 ? hi.x : lo.x, i & 2 ? hi.y : lo.y, i & 4 ? hi.z : lo.z, 1.0f);
+    if (!(c.w > 0.0f)) return r;
+    const glm::dvec2 px((double(c.x) / c.w + 1) * 0.5 * width, (1 - double(c.y) / c.w) * 0.5 * height);
+    min_px = glm::min(min_px, px);
+    max_px = glm::max(max_px, px);
+  }
+  auto clamp_to = [](double v, int hi) { return static_cast<int>(std::clamp(v, 0.0, double(hi))); };
+  r.x0 = clamp_to(std::floor(min_px.x) - margin.x, width);
+  r.y0 = clamp_to(std::floor(min_px.y) - margin.y, height);
+  r.x1 = clamp_to(std::ceil(max_px.x) + margin.x, width);
+  r.y1 = clamp_to(std::ceil(max_px.y) + margin.y, height);
+  return r;
+}
+
+/// The smallest rectangle holding both.
+rasterizer::Scissor united(const rasterizer::Scissor& a, const rasterizer::Scissor& b) {
+  if (!a.enable) return b;
+  return {true, std::min(a.x0, b.x0), std::min(a.y0, b.y0), std::max(a.x1, b.x1), std::max(a.y1, b.y1)};
+}
+
 WaterMaterial water_material(const scenes::Material& m) {
   WaterMaterial w;
   w.reflect_tint = m.reflect_tint;
@@ -124,6 +176,7 @@ glm::vec4 encoded_clear(const glm::vec3& linear, float alpha) {
 struct WaterPasses::Plane {
   float height = 0.0f;
   bool reflect = false;
+  rasterizer::Scissor pixels_read;  ///< what its water can read of its views
   PassList reflection, refraction;
   std::optional<GpuTexture> reflection_texture, refraction_texture;  // set when the view is drawn
   glm::vec4 reflection_clear{0.0f}, refraction_clear{0.0f};
@@ -153,6 +206,11 @@ WaterPasses::WaterPasses(const scenes::Scene& scene, const FrameSettings& settin
     }
     (*same)->reflect = (*same)->reflect || reflects(m);
     plane_of_mesh_[i] = static_cast<int>(same - planes_.begin());
+    const double offset = largest_offset(m, scene.textures[static_cast<size_t>(m.water_normal.texture)]);
+    const glm::ivec2 margin(static_cast<int>(std::ceil(offset * settings.width)) + 1,
+                            static_cast<int>(std::ceil(offset * settings.height)) + 1);
+    (*same)->pixels_read = united((*same)->pixels_read,
+                                  screen_rectangle(mesh, camera_view.view_projection, settings.width, settings.height, margin));
   }
 
   const float scale = camera_view.exposure;
@@ -161,6 +219,7 @@ WaterPasses::WaterPasses(const scenes::Scene& scene, const FrameSettings& settin
     const double spread = std::min(double(kSpread), 0.5 * (double(eye.z) - h));
     ViewSpec base = camera_view;
     base.water = false;
+    base.scissor = plane->pixels_read;
     if (plane->reflect) {
       glm::dmat4 mirror(1.0);  // z -> 2h - z
       mirror[2][2] = -1.0;

@@ -18,7 +18,10 @@
 //    eye-to-point segment under the water times its projected depth over the fog range, is the
 //    "depth" water.hpp reads: 0 at the waterline, 1 where the water's fog is full; a pixel where
 //    nothing is drawn keeps the clear's alpha, 1. No sky.
-// Neither view draws water. The clip plane sits 2 inches past the water plane into the kept side
+// Neither view draws water, nor any pixel the water cannot read: each view is scissored to the
+// screen rectangle of its plane's meshes, widened by the largest offset their normal maps can
+// add to a lookup (|2 texel - 1| x alpha x the larger of $reflectamount and $refractamount, the
+// depth being at most 1), plus a texel for the bilinear read. The clip plane sits 2 inches past the water plane into the kept side
 // (CBaseWorldView::PushView's "spread", which hides seams at the waterline; less when the eye is
 // closer than that), and is the projection's near plane (Lengyel's oblique near plane): the
 // rasterizer clips at z = 0, so nothing of the rasterizer changes. Fog reads the view's ordinary
