@@ -8,15 +8,15 @@ namespace {
 
 using namespace shading::source;
 
-/// Every valid combination of bump, env map, mask and path, unfogged and with the range fog of
-/// each model (height fog is for an eye under water, which the frame does not draw yet).
+/// Every valid combination of bump, env map, mask and path, unfogged, with the range fog of each
+/// model and with the height fog of the view through water (the refraction view).
 constexpr auto kAll = [] {
-  detail::ComboList<LightmappedCombo, 128> l;
+  detail::ComboList<LightmappedCombo, 256> l;
   for (bool bump : {false, true})
     for (bool envmap : {false, true})
       for (EnvmapMask mask : {EnvmapMask::none, EnvmapMask::base_alpha_inverted, EnvmapMask::normal_alpha, EnvmapMask::texture})
         for (EnvmapPath path : {EnvmapPath::fast, EnvmapPath::fast_contrast, EnvmapPath::full})
-          for (Fog fog : {Fog::none, Fog::range, Fog::vertex_range}) {
+          for (Fog fog : {Fog::none, Fog::range, Fog::vertex_range, Fog::height}) {
             const LightmappedCombo c{bump, envmap, mask, path, fog};
             if (c.valid()) l.add(c);
           }

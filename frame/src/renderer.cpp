@@ -3,6 +3,8 @@
 #include "model_lighting.hpp"
 #include "source_draws.hpp"
 #include "trivial_unlit.hpp"
+#include "views.hpp"
+#include "water_passes.hpp"
 
 #include "luxel/frame/textures.hpp"
 #include "luxel/rasterizer/framebuffer.hpp"
@@ -43,35 +45,9 @@ scenes::Camera frame_camera(const scenes::Scene& scene, const FrameSettings& set
   return scene.cameras[settings.camera];
 }
 
-namespace {
-
-/// The view-projection matrix in double (renderer.hpp: rounded once, at the end).
-glm::dmat4 view_projection_d(const scenes::Camera& c, int width, int height) {
-  const glm::dvec3 eye(c.position), target(c.target);
-  glm::dvec3 up(c.up);
-  // An up along the line of sight (looking straight down with +Z up) has no screen direction:
-  // screen up is then +Y.
-  const glm::dvec3 forward = glm::normalize(target - eye);
-  if (glm::length(glm::cross(forward, glm::normalize(up))) < 1e-6) up = glm::dvec3(0, 1, 0);
-  const glm::dmat4 view = glm::lookAtRH(eye, target, up);
-  const double n = c.near_plane, f = c.far_plane;
-  glm::dmat4 projection;
-  if (c.projection == scenes::Projection::orthographic) {
-    const double half_h = 0.5 * c.ortho_height;
-    // (h W) / H is exact for integer h, W, H whose quotient is: the workloads' cameras.
-    const double half_w = 0.5 * (c.aspect > 0 ? double(c.ortho_height) * c.aspect : double(c.ortho_height) * width / height);
-    projection = glm::orthoRH_ZO(-half_w, half_w, -half_h, half_h, n, f);
-  } else {
-    const double aspect = c.aspect > 0 ? double(c.aspect) : double(width) / height;
-    projection = glm::perspectiveRH_ZO(double(c.vertical_fov), aspect, n, f);
-  }
-  return projection * view;
-}
-
-}  // namespace
-
 glm::mat4 view_projection(const scenes::Camera& c, int width, int height) {
-  return glm::mat4(view_projection_d(c, width, height));
+  const ViewMatrices m = view_matrices(c, width, height);
+  return glm::mat4(m.projection * m.view);
 }
 
 namespace {
@@ -94,20 +70,39 @@ const T* data_or_null(const std::vector<T>& v) {
 /// exposure 1): UnlitGeneric's base+vertexcolor combo with a white base computes color x vertex
 /// color x 1; the trivial functor computes the same product per vertex (equal up to float
 /// rounding of where the product is taken), and takes the rasterizer's fastest paths.
-bool is_trivial_unlit(const scenes::Material& m, const scenes::Scene& scene, float exposure) {
+bool is_trivial_unlit(const scenes::Material& m, Fog fog, float exposure) {
   return m.family == scenes::ShaderFamily::unlit_generic && !m.base.bound() && m.envmap == scenes::EnvmapSource::none &&
-         scene.fog.mode == scenes::FogMode::none && exposure == 1.0f && m.alpha == scenes::AlphaMode::opaque &&
-         !m.translucent;
+         fog == Fog::none && exposure == 1.0f && m.alpha == scenes::AlphaMode::opaque && !m.translucent;
 }
 
-glm::vec3 mesh_center(const scenes::Mesh& m) {
-  if (m.positions.empty()) return glm::vec3(0.0f);
+std::pair<glm::vec3, glm::vec3> mesh_bounds(const scenes::Mesh& m) {
+  if (m.positions.empty()) return {glm::vec3(0.0f), glm::vec3(0.0f)};
   glm::vec3 lo = m.positions[0], hi = lo;
   for (const glm::vec3& p : m.positions) {
     lo = glm::min(lo, p);
     hi = glm::max(hi, p);
   }
+  return {lo, hi};
+}
+
+glm::vec3 mesh_center(const scenes::Mesh& m) {
+  const auto [lo, hi] = mesh_bounds(m);
   return 0.5f * (lo + hi);
+}
+
+/// Whether some corner of the mesh's bounding box lies on the kept side of `plane` (n, d).
+bool touches(const scenes::Mesh& m, const glm::vec4& plane) {
+  const auto [lo, hi] = mesh_bounds(m);
+  for (int i = 0; i < 8; ++i) {
+    const glm::vec3 c(i & 1 ? hi.x : lo.x, i & 2 ? hi.y : lo.y, i & 4 ? hi.z : lo.z);
+    if (glm::dot(glm::vec3(plane), c) + plane.w >= 0.0f) return true;
+  }
+  return false;
+}
+
+/// The tone-map scale of the frame (renderer.hpp).
+float frame_exposure(const scenes::Scene& scene, const FrameSettings& settings) {
+  return settings.exposure ? *settings.exposure : std::clamp(1.0f, scene.exposure.min_scale, scene.exposure.max_scale);
 }
 
 EnvmapMask lightmapped_mask(scenes::EnvmapMask m) {
@@ -135,18 +130,15 @@ struct FrameState {
   const LightmapPage& page = prepared->page;
   std::optional<GpuTexture> normalization_cube;
   std::vector<GpuTexture> sky_faces;
-  std::vector<scenes::Mesh> completed_meshes;     // meshes given tangents the frame needed
+  std::vector<std::unique_ptr<scenes::Mesh>> completed_meshes;  // per mesh: given the tangents the frame needed
   std::vector<std::unique_ptr<VertexSetup>> vertex_setups;
-  std::vector<glm::vec3> sky_positions;
-  std::vector<glm::vec2> sky_uvs;
-  std::vector<UnlitVertex> trivial_vertices;      // the trivial draws' vertex functors
-  struct Pass {
-    std::optional<size_t> trivial;                // index into trivial_vertices, or
-    std::optional<SourceDraw> source;             // a Source shader draw
-    PipelineState state;
-    Geometry geometry;
+  struct SkyQuads {
+    glm::vec3 positions[24];
+    glm::vec2 uvs[24];
   };
-  std::vector<Pass> opaque, sky, translucent;
+  std::vector<std::unique_ptr<SkyQuads>> sky_quads;  // per view
+  std::optional<WaterPasses> water;
+  PassList passes;                                   // the camera's view
   Image image;
   DrawStats stats;
   std::vector<ShaderUse> shader_uses;
@@ -187,15 +179,17 @@ std::shared_ptr<const SceneTextures> prepared(const scenes::Scene& scene, const 
   return textures;
 }
 
-/// Builds the frame's draws: what renderer.hpp promises, one function per family.
+/// Builds a view's draws (views.hpp): what renderer.hpp promises, one function per family.
 class FrameBuilder {
  public:
-  FrameBuilder(FrameState& st, const scenes::Camera& camera, const glm::mat4& vp)
-      : st_(st), scene_(*st.scene), model_(st.settings.model), eye_(camera.position), far_(camera.far_plane), vp_(vp) {
-    const scenes::Exposure& e = scene_.exposure;
-    exposure_ = st.settings.exposure ? *st.settings.exposure : std::clamp(1.0f, e.min_scale, e.max_scale);
+  FrameBuilder(FrameState& st, const ViewSpec& view, PassList& out)
+      : st_(st), scene_(*st.scene), view_(view), out_(out), model_(st.settings.model), eye_(view.eye),
+        far_(view.far_plane), vp_(view.view_projection), exposure_(view.exposure) {
     tonemap_ = ToneMapConstants::for_scale(exposure_);
-    if (scene_.fog.mode != scenes::FogMode::none && !st.settings.cubemap_capture) {
+    if (view.water_fog) {
+      fog_settings_ = *view.water_fog;
+      fog_ = Fog::height;
+    } else if (scene_.fog.mode != scenes::FogMode::none && !st.settings.cubemap_capture) {
       fog_settings_.start = scene_.fog.start;
       fog_settings_.end = scene_.fog.end;
       fog_settings_.max_density = scene_.fog.max_density;
@@ -211,29 +205,49 @@ class FrameBuilder {
         if (m >= 0 && m < static_cast<int>(scene_.meshes.size())) model_of_mesh_[static_cast<size_t>(m)] = static_cast<int>(i);
   }
 
+  /// Every mesh, the sky, the translucent meshes sorted.
+  void build() {
+    for (size_t i = 0; i < scene_.meshes.size(); ++i) add_mesh(i);
+    if (view_.sky) add_sky();
+    // Translucent draws back to front: the farthest mesh center first, ties in scene order.
+    std::stable_sort(translucent_.begin(), translucent_.end(), [](const auto& a, const auto& b) { return a.first > b.first; });
+    for (auto& [distance, pass] : translucent_) out_.translucent.push_back(std::move(pass));
+  }
+
+ private:
   void add_mesh(size_t index) {
     const scenes::Mesh* mesh = &scene_.meshes[index];
     const scenes::Material& m = mesh->material >= 0 ? scene_.materials[static_cast<size_t>(mesh->material)] : default_material_;
+    if (m.family == scenes::ShaderFamily::sky) return;  // Scene::sky_texture draws the sky
     if (st_.settings.cubemap_capture && !captured(index, m)) return;
-    FrameState::Pass pass;
+    if (m.family == scenes::ShaderFamily::water && !(view_.water && st_.water)) return;
+    if (view_.keep && !touches(*mesh, *view_.keep)) return;
+    Pass pass;
     pass.state = state_of(m);
     // (A capture is rendered to floats too, which only Source draws can: render_float.)
-    if (is_trivial_unlit(m, scene_, exposure_) && !st_.settings.cubemap_capture) {
+    if (is_trivial_unlit(m, fog_, exposure_) && !st_.settings.cubemap_capture) {
       pass.geometry = geometry_of(*mesh);
-      pass.trivial = st_.trivial_vertices.size();
-      st_.trivial_vertices.push_back(UnlitVertex{mesh->positions.data(), data_or_null(mesh->colors), m.color, vp_});
+      pass.trivial = UnlitVertex{mesh->positions.data(), data_or_null(mesh->colors), m.color, vp_};
       queue(m, *mesh, std::move(pass));
       return;
     }
-    if (needs_tangents(m) && mesh->tangents.empty()) mesh = &with_tangents(*mesh);
+    if (needs_tangents(m) && mesh->tangents.empty()) mesh = &with_tangents(index);
     pass.geometry = geometry_of(*mesh);
-    DrawTarget target{pass.state, pass.geometry, vertex_setup(*mesh, m), st_.settings.count_shading};
+    DrawTarget target{pass.state, pass.geometry, vertex_setup(*mesh, m), st_.settings.count_shading,
+                      view_.water_fog && !translucent(m) && m.alpha == scenes::AlphaMode::opaque};
     switch (m.family) {
       case scenes::ShaderFamily::lightmapped_generic: pass.source = lightmapped(*mesh, m, target); break;
       case scenes::ShaderFamily::vertexlit_generic: pass.source = vertexlit(index, *mesh, m, target); break;
       case scenes::ShaderFamily::unlit_generic: pass.source = unlit(*mesh, m, target); break;
-      case scenes::ShaderFamily::water:
-      case scenes::ShaderFamily::sky: return;  // water: its passes are not built yet; sky: Scene::sky_texture draws it
+      case scenes::ShaderFamily::water: {
+        const GpuTexture& normal_map = st_.textures[static_cast<size_t>(m.water_normal.texture)];
+        std::optional<SourceDraw> draw =
+            st_.water->surface_draw(index, m, normal_map, target, {tonemap_, fog_, fog_constants_, eye_});
+        if (!draw) return;  // its plane is not drawn (water_passes.hpp)
+        pass.source = std::move(*draw);
+        break;
+      }
+      case scenes::ShaderFamily::sky: return;
     }
     queue(m, *mesh, std::move(pass));
   }
@@ -242,27 +256,28 @@ class FrameBuilder {
     if (scene_.sky_texture < 0) return;
     const scenes::Texture& cube = scene_.textures[static_cast<size_t>(scene_.sky_texture)];
     if (cube.shape != scenes::TextureShape::cube) return;
-    st_.sky_faces = cube_faces(cube);
+    if (st_.sky_faces.empty()) st_.sky_faces = cube_faces(cube);
     // Six quads around the eye, each face's texture over the part of the cube map it covers, at
     // depth 1 (behind everything drawn; only where the clear's depth is left).
     const float r = 0.5f * far_;  // inside the far plane, corners included
-    st_.sky_positions.clear();
-    st_.sky_uvs.clear();
+    auto& quads = *st_.sky_quads.emplace_back(std::make_unique<FrameState::SkyQuads>());
     const glm::vec2 corners[4] = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
     for (int f = 0; f < 6; ++f)
-      for (const glm::vec2& c : corners) {
-        st_.sky_positions.push_back(eye_ + r * rasterizer::cube_direction(static_cast<rasterizer::CubeFace>(f), c.x, c.y));
-        st_.sky_uvs.push_back(c);
+      for (int k = 0; k < 4; ++k) {
+        const glm::vec2& c = corners[k];
+        quads.positions[4 * f + k] = eye_ + r * rasterizer::cube_direction(static_cast<rasterizer::CubeFace>(f), c.x, c.y);
+        quads.uvs[4 * f + k] = c;
       }
     for (int f = 0; f < 6; ++f) {
-      FrameState::Pass pass;
+      Pass pass;
+      pass.state.scissor = view_.scissor;
       pass.state.rasterizer.cull = CullMode::None;
       pass.state.depth_stencil.depth_func = CompareFunc::LessEqual;
       pass.state.depth_stencil.depth_write = false;
       pass.state.blend.srgb_write = true;
       auto setup = std::make_unique<VertexSetup>();
-      setup->positions = st_.sky_positions.data() + 4 * f;
-      setup->uv0 = st_.sky_uvs.data() + 4 * f;
+      setup->positions = quads.positions + 4 * f;
+      setup->uv0 = quads.uvs + 4 * f;
       setup->view_projection = vp_;
       setup->at_far_plane = true;
       static constexpr uint16_t kQuad[6] = {0, 1, 2, 0, 2, 3};
@@ -276,19 +291,17 @@ class FrameBuilder {
       DrawTarget target{pass.state, pass.geometry, setup.get(), st_.settings.count_shading};
       st_.vertex_setups.push_back(std::move(setup));
       pass.source = sky_draw(model_, target, p);
-      st_.sky.push_back(std::move(pass));
+      out_.sky.push_back(std::move(pass));
     }
   }
 
-  /// The translucent draws with their distances from the eye, in scene order.
-  std::vector<std::pair<float, FrameState::Pass>>& translucent() { return translucent_; }
-
- private:
   PipelineState state_of(const scenes::Material& m) const {
     PipelineState s;
+    s.scissor = view_.scissor;
     s.depth_stencil.depth_func = CompareFunc::Less;
-    s.rasterizer.front_counter_clockwise = true;
-    s.rasterizer.cull = m.double_sided ? CullMode::None : CullMode::CW;
+    // Back faces turn clockwise on screen; in a mirrored view, counter-clockwise.
+    s.rasterizer.front_counter_clockwise = !view_.mirrored;
+    s.rasterizer.cull = m.double_sided ? CullMode::None : view_.mirrored ? CullMode::CCW : CullMode::CW;
     s.blend.srgb_write = !m.linear_write;
     if (m.alpha == scenes::AlphaMode::alpha_test) {
       s.alpha_test.enable = true;
@@ -312,18 +325,24 @@ class FrameBuilder {
   }
 
   static bool needs_tangents(const scenes::Material& m) {
+    if (m.family == scenes::ShaderFamily::water) return true;  // its normal map
     return m.bump.bound() && (m.family == scenes::ShaderFamily::lightmapped_generic || m.family == scenes::ShaderFamily::vertexlit_generic);
   }
 
-  const scenes::Mesh& with_tangents(const scenes::Mesh& mesh) {
-    scenes::Mesh copy = mesh;
-    try {
-      scenes::generate_tangents(copy);
-    } catch (const std::invalid_argument& e) {
-      throw std::invalid_argument(scene_.name + ": mesh '" + mesh.name + "' has a bump map and " + e.what());
+  /// Mesh `index` with tangents, made once for every view.
+  const scenes::Mesh& with_tangents(size_t index) {
+    std::unique_ptr<scenes::Mesh>& completed = st_.completed_meshes[index];
+    if (!completed) {
+      const scenes::Mesh& mesh = scene_.meshes[index];
+      auto copy = std::make_unique<scenes::Mesh>(mesh);
+      try {
+        scenes::generate_tangents(*copy);
+      } catch (const std::invalid_argument& e) {
+        throw std::invalid_argument(scene_.name + ": mesh '" + mesh.name + "' has a bump or normal map and " + e.what());
+      }
+      completed = std::move(copy);
     }
-    st_.completed_meshes.push_back(std::move(copy));
-    return st_.completed_meshes.back();
+    return *completed;
   }
 
   VertexSetup* vertex_setup(const scenes::Mesh& mesh, const scenes::Material& m) {
@@ -334,8 +353,10 @@ class FrameBuilder {
     s->uv0 = data_or_null(m.base.uv_set == 1 ? mesh.uv1 : mesh.uv0);
     s->uv1 = data_or_null(mesh.uv1);
     s->colors = data_or_null(mesh.colors);
-    s->base_transform = scenes::UvTransform::of(m.base);
+    // Water applies its normal map's transform per pixel (adapter.hpp), to the raw uv0.
+    if (m.family != scenes::ShaderFamily::water) s->base_transform = scenes::UvTransform::of(m.base);
     s->view_projection = vp_;
+    s->proj_z_row = view_.proj_z_row;
     s->fog_c16 = vertex_fog_constant(fog_settings_);
     st_.vertex_setups.push_back(std::move(s));
     return st_.vertex_setups.back().get();
@@ -464,16 +485,18 @@ class FrameBuilder {
     return unlit_draw(combo, model_, target, p, eye_);
   }
 
-  void queue(const scenes::Material& m, const scenes::Mesh& mesh, FrameState::Pass pass) {
+  void queue(const scenes::Material& m, const scenes::Mesh& mesh, Pass pass) {
     if (translucent(m)) {
       translucent_.emplace_back(glm::distance(mesh_center(mesh), eye_), std::move(pass));
     } else {
-      st_.opaque.push_back(std::move(pass));
+      out_.opaque.push_back(std::move(pass));
     }
   }
 
   FrameState& st_;
   const scenes::Scene& scene_;
+  const ViewSpec& view_;
+  PassList& out_;
   shading::ShaderModel model_;
   glm::vec3 eye_;
   float far_;
@@ -486,7 +509,7 @@ class FrameBuilder {
   std::vector<LightDesc> lights_;
   std::vector<int> model_of_mesh_;
   const scenes::Material default_material_;
-  std::vector<std::pair<float, FrameState::Pass>> translucent_;
+  std::vector<std::pair<float, Pass>> translucent_;
 };
 
 }  // namespace
@@ -499,20 +522,22 @@ Renderer::Renderer(const scenes::Scene& scene, const FrameSettings& settings, st
     : state_(std::make_unique<State>(scene, settings, prepared(scene, settings, std::move(textures)))) {
   State& st = *state_;
   const scenes::Camera camera = frame_camera(scene, settings);
-  const glm::mat4 vp(view_projection_d(camera, settings.width, settings.height));
+  const ViewMatrices matrices = view_matrices(camera, settings.width, settings.height);
+  ViewSpec view;
+  view.eye = camera.position;
+  view.view_projection = glm::mat4(matrices.projection * matrices.view);
+  view.far_plane = camera.far_plane;
+  view.exposure = frame_exposure(scene, settings);
   // A capture's background is exposed as its surfaces are (renderer.hpp).
-  const glm::vec3 background = scene.background * (settings.cubemap_capture ? settings.exposure.value_or(1.0f) : 1.0f);
+  const glm::vec3 background = scene.background * (settings.cubemap_capture ? view.exposure : 1.0f);
   st.clear = glm::vec4(float(linear_to_srgb(std::clamp(background.r, 0.0f, 1.0f))),
                        float(linear_to_srgb(std::clamp(background.g, 0.0f, 1.0f))),
                        float(linear_to_srgb(std::clamp(background.b, 0.0f, 1.0f))), 1.0f);
-  st.completed_meshes.reserve(scene.meshes.size());  // the draws point into it
-  FrameBuilder builder(st, camera, vp);
-  for (size_t i = 0; i < scene.meshes.size(); ++i) builder.add_mesh(i);
-  builder.add_sky();
-  // Translucent draws back to front: the farthest mesh center first, ties in scene order.
-  auto& translucent = builder.translucent();
-  std::stable_sort(translucent.begin(), translucent.end(), [](const auto& a, const auto& b) { return a.first > b.first; });
-  for (auto& [distance, pass] : translucent) st.translucent.push_back(std::move(pass));
+  st.completed_meshes.resize(scene.meshes.size());
+  const BuildView build = [&st](const ViewSpec& v, PassList& out) { FrameBuilder(st, v, out).build(); };
+  // Before the camera's view: its water draws read them. A capture draws no water.
+  if (!settings.cubemap_capture) st.water.emplace(scene, settings, matrices, view, build);
+  build(view, st.passes);
 }
 
 Renderer::~Renderer() = default;
@@ -522,59 +547,27 @@ Renderer& Renderer::operator=(Renderer&&) noexcept = default;
 void Renderer::render(Context& ctx) {
   State& st = *state_;
   ctx.reset_stats();
+  st.pass_times.clear();
+  PassClock clock(ctx, st.settings.time_passes ? &st.pass_times : nullptr);
+  if (st.water) st.water->render(ctx, st.color, st.depth, clock);  // the water's views first, into the same targets
   clear_color(ctx, st.color, st.clear);
   clear_depth(ctx, st.depth, 1.0f);  // as the peer: stencil neither cleared nor used
-  const Framebuffer fb{&st.color, &st.depth};
-  st.pass_times.clear();
-  // Runs one pass; timed, it runs to its end before the clock stops.
-  const auto run_pass = [&](const char* name, int draws, auto&& run) {
-    if (!st.settings.time_passes) return run();
-    const auto start = std::chrono::steady_clock::now();
-    run();
-    ctx.flush();
-    st.pass_times.push_back({name, std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count(), draws});
-  };
-  // Opaque surfaces in scene order, then the sky where none was drawn, then the translucent
-  // ones back to front.
-  const std::pair<const char*, std::vector<FrameState::Pass>*> passes[] = {
-      {"opaque", &st.opaque}, {"sky", &st.sky}, {"translucent", &st.translucent}};
-  for (const auto& [name, draws] : passes) {
-    if (draws->empty()) continue;
-    run_pass(name, static_cast<int>(draws->size()), [&] {
-      for (FrameState::Pass& p : *draws) {
-        if (p.trivial) {
-          draw(ctx, fb, p.state, p.geometry, st.trivial_vertices[*p.trivial], UnlitPixel{});
-        } else {
-          p.source->pixels->store(0, std::memory_order_relaxed);
-          p.source->run(ctx, fb);
-        }
-      }
-    });
-  }
-  run_pass("resolve", 0, [&] { resolve_into(ctx, st.color, st.image); });
-  // The target's alpha holds what the shaders wrote there (base alpha, blend results), which the
-  // screen never shows: the image is what is shown, opaque.
+  run_passes(ctx, Framebuffer{&st.color, &st.depth}, st.passes, &clock);
+  clock.run("resolve", 0, [&] { resolve_into(ctx, st.color, st.image); });
+  // The target's alpha holds what the shaders wrote there (base alpha, blend results, the water's
+  // fog factor), which a screen never shows: the image is what is shown, opaque.
   for (size_t i = 3; i < st.image.rgba.size(); i += 4) st.image.rgba[i] = 255;
   st.stats = ctx.stats();
   st.shader_uses.clear();
   if (st.settings.count_shading) {
-    // One entry per combo, in order of first use.
-    for (auto* passes : {&st.opaque, &st.sky, &st.translucent})
-      for (const FrameState::Pass& p : *passes) {
-        if (!p.source) continue;
-        const uint64_t pixels = p.source->pixels->load(std::memory_order_relaxed);
-        auto it = std::find_if(st.shader_uses.begin(), st.shader_uses.end(), [&](const ShaderUse& u) {
-          return u.family == p.source->family && u.combo == p.source->combo;
-        });
-        if (it == st.shader_uses.end()) st.shader_uses.push_back({p.source->family, p.source->combo, pixels, p.source->slots});
-        else it->pixels += pixels;
-      }
+    if (st.water) st.water->add_shader_uses(st.shader_uses);
+    add_shader_uses(st.passes, st.shader_uses);
   }
 }
 
 std::vector<glm::vec4> Renderer::render_float(Context& ctx) {
   State& st = *state_;
-  if (!st.settings.cubemap_capture || st.settings.samples != 1 || !st.translucent.empty())
+  if (!st.settings.cubemap_capture || st.settings.samples != 1 || !st.passes.translucent.empty())
     throw std::invalid_argument("a float frame is rendered only for a cube-map capture without MSAA");
   const glm::vec3 background = st.scene->background;
   std::vector<uint32_t> bits(static_cast<size_t>(st.settings.width) * st.settings.height * 3, 0);
@@ -584,8 +577,8 @@ std::vector<glm::vec4> Renderer::render_float(Context& ctx) {
     ctx.reset_stats();
     clear_color(ctx, st.color, glm::vec4(byte_of(background.r), byte_of(background.g), byte_of(background.b), 1.0f));
     clear_depth(ctx, st.depth, 1.0f);
-    for (auto* passes : {&st.opaque, &st.sky}) {
-      for (FrameState::Pass& p : *passes) p.source->run_float_byte(ctx, fb, byte);
+    for (auto* passes : {&st.passes.opaque, &st.passes.sky}) {
+      for (Pass& p : *passes) p.source->run_float_byte(ctx, fb, byte);
     }
     resolve_into(ctx, st.color, st.image);
     for (size_t i = 0; i < bits.size(); ++i) bits[i] |= uint32_t(st.image.rgba[i / 3 * 4 + i % 3]) << (8 * byte);

@@ -46,6 +46,9 @@ struct DrawTarget {
   rasterizer::Geometry geometry;
   VertexSetup* vertex = nullptr;
   bool count_pixels = false;
+  /// The world families' height-fog combos write the fog factor to alpha (adapter.hpp): the
+  /// refraction view's opaque draws (water_passes.hpp).
+  bool water_fog_to_alpha = false;
 };
 
 SourceDraw lightmapped_draw(const shading::source::LightmappedCombo& combo, shading::ShaderModel model,
@@ -63,6 +66,10 @@ SourceDraw unlit_draw(const shading::source::UnlitCombo& combo, shading::ShaderM
                       const shading::source::UnlitGenericParams& params, const glm::vec3& eye);
 
 SourceDraw sky_draw(shading::ShaderModel model, const DrawTarget& target, const shading::source::SkyParams& params);
+
+SourceDraw water_draw(const shading::source::WaterCombo& combo, shading::ShaderModel model, const DrawTarget& target,
+                      const shading::source::WaterParams& params,
+                      const shading::source::WaterVertexConstants& constants, const glm::vec3& eye);
 
 namespace detail {
 
@@ -124,6 +131,7 @@ SourceDraw make_source_draw(PS ps, const DrawTarget& target, std::string family,
   d.combo = std::move(combo);
   d.slots = slots;
   if (target.count_pixels) ps.pixels = d.pixels.get();
+  if constexpr (requires { ps.water_fog_to_alpha; }) ps.water_fog_to_alpha = target.water_fog_to_alpha;
   target.vertex->attributes = PS::kAttributes;
   const SourceVertex<PS::kVaryings> vs{target.vertex};
   const FloatBytes<PS> shader{ps};

@@ -11,6 +11,7 @@
 #include <glm/mat4x4.hpp>
 
 #include <array>
+#include <optional>
 
 namespace luxel::frame {
 
@@ -25,6 +26,9 @@ struct VertexSetup {
   const glm::vec4* colors = nullptr;    ///< or null: white
   scenes::UvTransform base_transform;   ///< the material's base-texture transform
   glm::mat4 view_projection{1.0f};
+  /// Set when the view's near plane is oblique (views.hpp): proj_z is this row times the
+  /// position, the view's ordinary projected depth, rather than the clip-space z.
+  std::optional<glm::vec4> proj_z_row;
   shading::source::AttributeList attributes;
   std::array<shading::source::LocalLight, 4> lights{};  ///< for the per-vertex attenuation attributes
   glm::vec4 fog_c16{1.0f, 1.0f, 1.0f, 0.0f};            ///< vertex_fog_constant(): visibility 1
@@ -43,7 +47,7 @@ struct SourceVertex {
     const VertexSetup& s = *setup;
     const glm::vec3 p = s.positions[i];
     glm::vec4 clip = s.view_projection * glm::vec4(p, 1.0f);
-    const float proj_z = clip.z;
+    const float proj_z = s.proj_z_row ? glm::dot(*s.proj_z_row, glm::vec4(p, 1.0f)) : clip.z;
     if (s.at_far_plane) clip.z = clip.w;
     out.position = clip;
     const glm::vec3 n = s.normals ? s.normals[i] : glm::vec3(0.0f, 0.0f, 1.0f);

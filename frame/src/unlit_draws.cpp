@@ -8,14 +8,15 @@ namespace {
 
 using namespace shading::source;
 
-/// Base texture x $color, with or without vertex color and an env map (each mask), unfogged or
-/// each model's range fog. No detail texture yet (the adapter does not feed its coordinate).
+/// Base texture x $color, with or without vertex color and an env map (each mask); unfogged, each
+/// model's range fog or the height fog of the view through water. No detail texture yet (the
+/// adapter does not feed its coordinate).
 constexpr auto kAll = [] {
   detail::ComboList<UnlitCombo, 64> l;
   for (bool envmap : {false, true})
     for (UnlitEnvmapMask mask : {UnlitEnvmapMask::none, UnlitEnvmapMask::base_alpha_inverted, UnlitEnvmapMask::texture})
       for (bool vertex_color : {false, true})
-        for (Fog fog : {Fog::none, Fog::range, Fog::vertex_range}) {
+        for (Fog fog : {Fog::none, Fog::range, Fog::vertex_range, Fog::height}) {
           const UnlitCombo c{UnlitDetail::none, envmap, mask, vertex_color, false, fog};
           if (c.valid()) l.add(c);
         }

@@ -11,11 +11,11 @@ using namespace shading::source;
 /// Two local lights or none (a model gets the two most significant, the rest folded into its
 /// cube); every valid choice of bump, Phong, exponent texture, rim and Half-Lambert; attenuation
 /// per pixel (luxel's default) or per vertex (what ps_2_0's budget forces); the ambient cube (SH9
-/// is a ps_3_0 option the frame does not take); unfogged or each model's range fog; the
-/// normalization cube map exactly on ps_2_0. Without lights, Half-Lambert and attenuation change
+/// is a ps_3_0 option the frame does not take); unfogged, each model's range fog or the height fog
+/// of the view through water; the normalization cube map exactly on ps_2_0. Without lights, Half-Lambert and attenuation change
 /// nothing, so only one of each is compiled.
 constexpr auto kAll = [] {
-  detail::ComboList<VertexLitCombo, 256> l;
+  detail::ComboList<VertexLitCombo, 1024> l;
   for (int lights : {0, 2})
     for (bool bump : {false, true})
       for (bool phong : {false, true})
@@ -23,7 +23,7 @@ constexpr auto kAll = [] {
           for (bool rim : {false, true})
             for (bool half_lambert : {false, true})
               for (bool pixel_attenuation : {false, true})
-                for (Fog fog : {Fog::none, Fog::range, Fog::vertex_range})
+                for (Fog fog : {Fog::none, Fog::range, Fog::vertex_range, Fog::height})
                   for (bool cube : {false, true}) {
                     if (lights == 0 && !(half_lambert && pixel_attenuation)) continue;
                     const VertexLitCombo c{lights, bump, phong, exponent_texture, rim, half_lambert, pixel_attenuation,

@@ -266,6 +266,31 @@ TEST(SourceAdapter, UnlitGenericMatchesItsScalarReference) {
   expect_scalar_reference_bytes(ps, "UnlitGeneric envmap base-alpha mask, vertex color, range fog");
 }
 
+TEST(SourceAdapter, WaterMatchesItsScalarReference) {
+  const Textures t;
+  // The reflection and refraction targets as the water reads them (8-bit sRGB; the refraction's
+  // alpha is the water's depth), and its normal map.
+  const rasterizer::Texture reflection = random_2d(kWidth, kHeight, rasterizer::TextureFormat::RGBA8_sRGB, 0.0f, 1.0f, 7);
+  const rasterizer::Texture refraction = random_2d(kWidth, kHeight, rasterizer::TextureFormat::RGBA8_sRGB, 0.0f, 1.0f, 8);
+  WaterMaterial material;
+  material.reflect_tint = glm::vec3(0.9f, 0.8f, 0.7f);
+  material.refract_tint = glm::vec3(0.6f, 0.8f, 0.9f);
+  material.fog_color = glm::vec3(0.1f, 0.3f, 0.35f);
+  material.reflect_amount = 0.3f;
+  material.refract_amount = 0.2f;
+  material.exposure = WaterReflectionExposure::sdk_fixed;
+  WaterPixelShader<WaterCombo{.reflect = true, .refract = true, .above_water = true, .multitexture = true, .fog = Fog::range}> ps;
+  ps.params = water_constants(material, HdrType::integer, ToneMapConstants::for_scale(1.3f));
+  bind(ps.params.reflection, reflection);
+  bind(ps.params.refraction, refraction);
+  bind(ps.params.normal, t.bump);
+  ps.params.pixel_fog = testing::lane_test_fog();
+  ps.constants.scroll_offsets = glm::vec4(0.13f, -0.07f, 0.0f, 0.0f);
+  ps.constants.inverse_size = glm::vec2(1.0f / kWidth, 1.0f / kHeight);
+  ps.eye = kEye;
+  expect_scalar_reference_bytes(ps, "Water reflect+refract+above+multitexture, range fog");
+}
+
 TEST(SourceAdapter, SkyMatchesItsScalarReference) {
   const Textures t;
   SkyPixelShader ps;

@@ -26,14 +26,25 @@
 //    fastest path.
 //  - The sky cube (Scene::sky_texture): Sky_HDR on six quads at depth 1, where nothing else was
 //    drawn.
+//  - Water (water_ps2x, the expensive water seen from above): before the frame, for each height
+//    at which the camera sees water, a reflection view (the scene mirrored about the water plane,
+//    what lies below it clipped, at 0.25 x the frame's tone-map scale, SOURCE_FACTS §6.4) and a
+//    refraction view (what lies below the plane, in the water's height fog, whose factor opaque
+//    materials write to alpha: the water's depth) are drawn into the frame's targets and
+//    resolved into 8-bit textures the size of the frame; the water surface then reads them,
+//    distorted by its normal map (scrolling with FrameSettings::path_time, else time 0), blended
+//    by Fresnel, its reflect tint x 4. Reflection only when the material's reflect tint is not
+//    black, the refraction combo only when its refract amount is not 0. Neither view draws water;
+//    a scene without visible water draws no extra view. Water meshes must be horizontal planes
+//    with a normal map; water at or above the eye is not drawn (frame/src/water_passes.hpp).
 //  - Fog: the scene's range fog on every shader, the combo each model draws it with (ps_2_0: the
 //    fixed-function vertex fog).
 //  - Every shader ends in the tone-map epilogue with a fixed exposure (FrameSettings::exposure,
 //    else the scene's Exposure clamped around 1) and writes 8-bit RGBA, sRGB-encoded unless the
 //    material says $linearwrite; MSAA resolves to the image, whose alpha is 255 (the target's
 //    alpha holds what shaders and blending left there, which a screen never shows).
-// Order: opaque meshes in scene order (depth LESS, single-sided materials cull their back faces,
-// front faces counter-clockwise), alpha-tested ones with D3D9's alpha test (GREATEREQUAL
+// Order: the water's views, then opaque meshes in scene order (depth LESS, single-sided materials
+// cull their back faces, front faces counter-clockwise), alpha-tested ones with D3D9's alpha test (GREATEREQUAL
 // $alphatestreference), then the sky, then translucent meshes back to front by the distance of
 // their centers from the eye (blended, no depth write). The background clears to
 // Scene::background, sRGB-encoded.
@@ -45,8 +56,8 @@
 // capture: the result does not depend on the order samples are baked in, nor on cubes attached
 // before); the background scaled by the exposure as the surfaces are (Source scales its clear
 // color by the tone-map scale, SOURCE_FACTS 6.3), so that every exposure sees the same radiance.
-// Not drawn yet: water (its reflection and refraction passes), detail textures, env maps on
-// models, self-illumination; sky-family meshes (the sky is Scene::sky_texture).
+// Not drawn yet: water seen from below, cheap water, detail textures, env maps on models,
+// self-illumination; sky-family meshes (the sky is Scene::sky_texture).
 //
 // Conventions: the view is Source's (+Z up, right-handed), projections are Direct3D's (depth in
 // [0, 1]). The view-projection matrix is computed in double and rounded once, so that a camera
@@ -129,7 +140,8 @@ class Renderer {
   /// std::invalid_argument naming the problem for an invalid scene (scenes::validate), bad
   /// settings (size outside 1..kMaxTargetSize, samples not 1, 2, 4 or 8, a model that is
   /// not a pixel-shader model, an exposure that is not positive and finite), a missing camera,
-  /// or what the scene lacks for its materials (lightmaps, uv1, normals for tangents).
+  /// or what the scene lacks for its materials (lightmaps, uv1, normals for tangents, a water
+  /// normal map, water that is not a horizontal plane or neither reflects nor refracts).
   /// `textures`: the scene's textures prepared before (textures.hpp: renderers of one scene
   /// share them); null: prepared here.
   Renderer(const scenes::Scene& scene, const FrameSettings& settings, std::shared_ptr<const SceneTextures> textures = nullptr);
@@ -147,10 +159,10 @@ class Renderer {
   /// (linear write, no blending). Only a cube-map capture without MSAA can be rendered so (no
   /// blended draws, no samples averaged); otherwise throws std::invalid_argument.
   std::vector<glm::vec4> render_float(rasterizer::Context& ctx);
-  /// What the draws of the last frame did, summed.
+  /// What the draws of the last frame did, summed (the water's views included).
   const rasterizer::DrawStats& stats() const;
-  /// What each shader combo did in the last frame, in a fixed order (first draw first); empty
-  /// unless FrameSettings::count_shading.
+  /// What each shader combo did in the last frame (the water's views included), in a fixed order
+  /// (first draw first); empty unless FrameSettings::count_shading.
   const std::vector<ShaderUse>& shader_uses() const;
   /// The last frame's passes in the order they ran, the ones the scene has; empty unless
   /// FrameSettings::time_passes.

@@ -24,12 +24,19 @@
 // Counting: when `pixels` is set, each invocation adds its covered lanes to it (relaxed atomics:
 // the sum is the same whatever the thread count; off by default, it costs a contended add per
 // stamp).
+//
+// Water fog to destination alpha: the world families' height-fog combos (the view through the
+// water, the refraction view) write the fog factor to alpha when `water_fog_to_alpha` is set, as
+// the SDK's WRITEWATERFOGTODESTALPHA (lightmappedgeneric_dx9_helper.cpp and vertexlitgeneric's:
+// set with height fog for fully opaque materials; the others keep their alpha). The water shader
+// reads it back as the water's depth (water.hpp).
 
 #include "luxel/rasterizer/draw.hpp"
 #include "luxel/shading/source/lightmapped_generic.hpp"
 #include "luxel/shading/source/sky.hpp"
 #include "luxel/shading/source/unlit_generic.hpp"
 #include "luxel/shading/source/vertexlit_generic.hpp"
+#include "luxel/shading/source/water.hpp"
 
 #include <array>
 #include <atomic>
@@ -91,6 +98,10 @@ struct StampAttributes {
   using Lane = simd::Float;
   const rasterizer::PixelInput<N>& in;
 
+  /// The pixels' centers on the target (x + 0.5, y + 0.5).
+  LUXEL_INLINE simd::Float pixel_x() const { return in.x; }
+  LUXEL_INLINE simd::Float pixel_y() const { return in.y; }
+
   template <Attribute A>
   LUXEL_INLINE simd::Float get() const {
     constexpr int i = L.index_of(A);
@@ -108,6 +119,10 @@ template <AttributeList L>
 struct PixelAttributes {
   using Lane = float;
   std::array<float, kAttributeKinds> values{};
+  float x = 0.0f, y = 0.0f;  ///< the pixel's center on the target
+
+  float pixel_x() const { return x; }
+  float pixel_y() const { return y; }
 
   template <Attribute A>
   float get() const {
@@ -127,6 +142,18 @@ template <Fog F, class A>
 LUXEL_INLINE float4<typename A::Lane> fogged(const float4<typename A::Lane>& c, const A& a, const FogConstants& fog) {
   if constexpr (F == Fog::vertex_range) return fixed_function_fog(c, a.template get<Attribute::fog_visibility>(), fog);
   else return c;
+}
+
+/// WRITEWATERFOGTODESTALPHA: alpha = the height fog factor (Fog::height combos only).
+template <Fog F, class A>
+LUXEL_INLINE float4<typename A::Lane> with_water_fog_alpha(float4<typename A::Lane> c, bool enabled, const A& a,
+                                                           const FogConstants& fog) {
+  if constexpr (F == Fog::height) {
+    using L = typename A::Lane;
+    if (enabled)
+      c.w = pixel_fog_factor<Fog::height>(FogInputs<L>{a.template get<Attribute::world_z>(), a.template get<Attribute::proj_z>()}, fog);
+  }
+  return c;
 }
 
 LUXEL_INLINE void write(const float4<simd::Float>& c, rasterizer::PixelOutput& out) { out.color = {c.x, c.y, c.z, c.w}; }
@@ -169,6 +196,7 @@ struct LightmappedPixelShader {
   LightmapPage page;
   glm::vec3 eye{0.0f};
   std::atomic<uint64_t>* pixels = nullptr;
+  bool water_fog_to_alpha = false;
 
   template <class A>
   LUXEL_INLINE float4<typename A::Lane> shade(const A& a) const {
@@ -190,7 +218,8 @@ struct LightmappedPixelShader {
     }
     if constexpr (C.fog == Fog::range || C.fog == Fog::height)
       i.fog = FogInputs<F>{a.template get<Attribute::world_z>(), a.template get<Attribute::proj_z>()};
-    return detail::fogged<C.fog>(lightmapped_generic<C>(i, params), a, params.fog);
+    return detail::with_water_fog_alpha<C.fog>(detail::fogged<C.fog>(lightmapped_generic<C>(i, params), a, params.fog),
+                                               water_fog_to_alpha, a, params.fog);
   }
 
   void operator()(const rasterizer::PixelInput<kVaryings>& in, rasterizer::PixelOutput& out) const {
@@ -221,6 +250,7 @@ struct VertexLitPixelShader {
 
   VertexLitParams params;
   std::atomic<uint64_t>* pixels = nullptr;
+  bool water_fog_to_alpha = false;
 
   template <class A>
   LUXEL_INLINE float4<typename A::Lane> shade(const A& a) const {
@@ -237,7 +267,8 @@ struct VertexLitPixelShader {
       i.attenuation = float4<F>(a.template get<Attribute::attenuation_0>(), a.template get<Attribute::attenuation_1>(),
                                 a.template get<Attribute::attenuation_2>(), a.template get<Attribute::attenuation_3>());
     if constexpr (C.fog == Fog::range || C.fog == Fog::height) i.proj_z = a.template get<Attribute::proj_z>();
-    return detail::fogged<C.fog>(vertexlit_generic<C>(i, params), a, params.fog);
+    return detail::with_water_fog_alpha<C.fog>(detail::fogged<C.fog>(vertexlit_generic<C>(i, params), a, params.fog),
+                                               water_fog_to_alpha, a, params.fog);
   }
 
   void operator()(const rasterizer::PixelInput<kVaryings>& in, rasterizer::PixelOutput& out) const {
@@ -271,6 +302,7 @@ struct UnlitPixelShader {
   UnlitGenericParams params;
   glm::vec3 eye{0.0f};
   std::atomic<uint64_t>* pixels = nullptr;
+  bool water_fog_to_alpha = false;
 
   template <class A>
   LUXEL_INLINE float4<typename A::Lane> shade(const A& a) const {
@@ -286,7 +318,8 @@ struct UnlitPixelShader {
     }
     if constexpr (C.fog == Fog::range || C.fog == Fog::height)
       i.fog = FogInputs<F>{a.template get<Attribute::world_z>(), a.template get<Attribute::proj_z>()};
-    return detail::fogged<C.fog>(unlit_generic<C>(i, params), a, params.fog);
+    return detail::with_water_fog_alpha<C.fog>(detail::fogged<C.fog>(unlit_generic<C>(i, params), a, params.fog),
+                                               water_fog_to_alpha, a, params.fog);
   }
 
   void operator()(const rasterizer::PixelInput<kVaryings>& in, rasterizer::PixelOutput& out) const {
@@ -350,11 +383,16 @@ struct ScalarReference {
       in.varyings[v].z.store_aligned(attributes[4 * v + 2]);
       in.varyings[v].w.store_aligned(attributes[4 * v + 3]);
     }
+    alignas(64) float xs[simd::kLanes], ys[simd::kLanes];
+    in.x.store_aligned(xs);
+    in.y.store_aligned(ys);
     alignas(64) float color[4][simd::kLanes] = {};
     for (int lane = 0; lane < simd::kLanes; ++lane) {
       if (!((in.live >> lane) & 1u)) continue;
       detail::PixelAttributes<kAttributes> a;
       for (int i = 0; i < kAttributes.count; ++i) a.values[static_cast<size_t>(i)] = attributes[i][lane];
+      a.x = xs[lane];
+      a.y = ys[lane];
       const float4<float> c = shader.shade(a);
       color[0][lane] = c.x;
       color[1][lane] = c.y;
@@ -363,6 +401,76 @@ struct ScalarReference {
     }
     out.color = {simd::Float::load_aligned(color[0]), simd::Float::load_aligned(color[1]),
                  simd::Float::load_aligned(color[2]), simd::Float::load_aligned(color[3])};
+  }
+};
+
+// ---- Water --------------------------------------------------------------------------------------
+
+constexpr AttributeList water_attributes(const WaterCombo& c) {
+  AttributeList l;
+  l.add({Attribute::base_u, Attribute::base_v});
+  detail::add_world(l);
+  detail::add_normal(l);
+  detail::add_tangent_frame(l);
+  if (!c.above_water) l.add(Attribute::proj_z);
+  detail::add_fog(l, c.fog);
+  return l;
+}
+
+/// What water_vs20 computes from constants, per pixel here (affine in the interpolants, or the
+/// pixel's place on screen).
+struct WaterVertexConstants {
+  /// cBumpTexCoordTransform ($bumptransform): bump u = dot((u, v, 1), bump_u), v likewise, of
+  /// the mesh's uv0.
+  glm::vec3 bump_u{1.0f, 0.0f, 0.0f}, bump_v{0.0f, 1.0f, 0.0f};
+  /// TexOffsets: time x ($scroll1.xy, $scroll2.xy), the MULTITEXTURE reads' offsets.
+  glm::vec4 scroll_offsets{0.0f};
+  /// 1 / the frame's width and height. The vertex shader's projective coordinate of a target
+  /// ((x, -y) + w) / 2 divided by w is the pixel's place on screen, which the rasterizer gives:
+  /// the shader is fed that, with w = 1. The reflection view is mirrored (water_passes.hpp), so
+  /// both targets are read at the pixel's own place.
+  glm::vec2 inverse_size{1.0f};
+};
+
+/// Water_ps2x on a water surface, its reflection and refraction bound as textures.
+template <WaterCombo C>
+struct WaterPixelShader {
+  static constexpr AttributeList kAttributes = water_attributes(C);
+  static constexpr int kVaryings = kAttributes.varyings();
+  static constexpr bool kCanDiscard = false, kWritesDepth = false;
+
+  WaterParams params;
+  WaterVertexConstants constants;
+  glm::vec3 eye{0.0f};
+  std::atomic<uint64_t>* pixels = nullptr;
+
+  template <class A>
+  LUXEL_INLINE float4<typename A::Lane> shade(const A& a) const {
+    using F = typename A::Lane;
+    const F u = a.template get<Attribute::base_u>(), v = a.template get<Attribute::base_v>();
+    WaterInputs<F> i;
+    const float3<F> uv1(u, v, F(1.0f));
+    i.bump_uv = float2<F>(dot(uv1, constant<F>(constants.bump_u)), dot(uv1, constant<F>(constants.bump_v)));
+    if constexpr (C.multitexture) {
+      const glm::vec4& o = constants.scroll_offsets;
+      i.extra_bump_uv = float4<F>((u + v) * 0.1f + o.x, (v - u) * 0.1f + o.y, v * 0.45f + o.z, u * 0.45f + o.w);
+    }
+    const float3<F> eye_vector = constant<F>(eye) - detail::get3<Attribute::world_x, Attribute::world_y, Attribute::world_z>(a);
+    const float3<F> t = detail::get3<Attribute::tangent_x, Attribute::tangent_y, Attribute::tangent_z>(a);
+    const float3<F> b = detail::get3<Attribute::binormal_x, Attribute::binormal_y, Attribute::binormal_z>(a);
+    const float3<F> n = detail::get3<Attribute::normal_x, Attribute::normal_y, Attribute::normal_z>(a);
+    i.tangent_eye = float3<F>(dot(eye_vector, t), dot(eye_vector, b), dot(eye_vector, n));
+    const F sx = a.pixel_x() * constants.inverse_size.x, sy = a.pixel_y() * constants.inverse_size.y;
+    i.reflect_refract = float4<F>(sx, sy, sy, sx);
+    i.w = F(1.0f);
+    if constexpr (!C.above_water || C.fog == Fog::range || C.fog == Fog::height) i.proj_z = a.template get<Attribute::proj_z>();
+    if constexpr (C.fog == Fog::height) i.world_z = a.template get<Attribute::world_z>();
+    return detail::fogged<C.fog>(water<C>(i, params), a, params.pixel_fog);
+  }
+
+  void operator()(const rasterizer::PixelInput<kVaryings>& in, rasterizer::PixelOutput& out) const {
+    detail::count(pixels, in.live);
+    detail::write(shade(detail::StampAttributes<kAttributes, kVaryings>{in}), out);
   }
 };
 

@@ -70,6 +70,7 @@ struct WaterCombo {
   bool blurry_refract = false;  ///< $blurrefract: ps_2_b and up
   Fog fog = Fog::none;
 
+  friend constexpr bool operator==(const WaterCombo&, const WaterCombo&) = default;
   constexpr bool valid(ShaderModel m) const {
     if (!reflect && !refract) return false;  // the SDK returns black; never drawn
     if (blurry_refract && (m == ShaderModel::ps_2_0 || !refract)) return false;

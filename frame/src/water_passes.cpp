@@ -1,0 +1,314 @@
+// The water's reflection and refraction views and its draws (water_passes.hpp).
+
+#include "water_passes.hpp"
+
+#include "luxel/rasterizer/srgb.hpp"
+#include "luxel/rasterizer/texture.hpp"
+#include "luxel/shading/source/hdr_type.hpp"
+#include "luxel/shading/source/material_color.hpp"
+#include "luxel/shading/source/water.hpp"
+
+#include <glm/common.hpp>
+#include <glm/ext/vector_double2.hpp>
+#include <glm/ext/vector_double4.hpp>
+#include <glm/ext/vector_int2.hpp>
+#include <glm/geometric.hpp>
+#include <glm/matrix.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <span>
+#include <stdexcept>
+#include <string>
+
+namespace luxel::frame {
+
+using namespace shading::source;
+
+namespace {
+
+/// CBaseWorldView::PushView's spread: how far past the water plane each view keeps geometry.
+constexpr float kSpread = 2.0f;
+
+/// Two heights closer than this are one plane.
+constexpr float kSameHeight = 1e-3f;
+
+/// Lengyel's oblique near plane ("Oblique View Frustum Depth Projection and Clipping", 2005), for
+/// Direct3D's depth range: `projection` with its near plane (z = 0) replaced by `plane` (view
+/// space, kept where plane · p >= 0, the eye on the other side) and its far plane tilted through
+/// the frustum corner farthest from it, so that the view's frustum stays inside.
+glm::dmat4 oblique_near_plane(glm::dmat4 projection, const glm::dvec4& plane) {
+  const glm::dvec4 corner = glm::inverse(projection) * glm::dvec4(glm::sign(plane.x), glm::sign(plane.y), 1.0, 1.0);
+  const glm::dvec4 w_row(projection[0][3], projection[1][3], projection[2][3], projection[3][3]);
+  // z = w at the corner: the corner lies on the new far plane (scale-free in the corner's w).
+  const glm::dvec4 z_row = plane * (glm::dot(w_row, corner) / glm::dot(plane, corner));
+  for (int c = 0; c < 4; ++c) projection[c][2] = z_row[c];
+  return projection;
+}
+
+/// Row 2 (clip z) of a matrix.
+glm::vec4 z_row(const glm::dmat4& m) { return glm::vec4(glm::dvec4(m[0][2], m[1][2], m[2][2], m[3][2])); }
+
+/// The view of `camera` that keeps world plane `keep` (n, d), through `view` (the camera's view,
+/// or it after a mirror).
+ViewSpec clipped_view(const ViewMatrices& camera, const glm::dmat4& view, const glm::dvec4& keep, const ViewSpec& base) {
+  const glm::dvec4 plane_in_view = glm::transpose(glm::inverse(view)) * keep;
+  ViewSpec v = base;
+  v.view_projection = glm::mat4(oblique_near_plane(camera.projection, plane_in_view) * view);
+  v.proj_z_row = z_row(camera.projection * view);
+  v.keep = glm::vec4(keep);
+  return v;
+}
+
+std::string scene_name(const scenes::Scene& s) { return s.name.empty() ? std::string("scene") : s.name; }
+
+/// The height of a water mesh; throws unless it is a horizontal plane.
+float water_height(const scenes::Scene& scene, const scenes::Mesh& mesh) {
+  if (mesh.positions.empty()) return 0.0f;
+  float lo = mesh.positions[0].z, hi = lo;
+  for (const glm::vec3& p : mesh.positions) lo = std::min(lo, p.z), hi = std::max(hi, p.z);
+  if (hi - lo > kSameHeight)
+    throw std::invalid_argument(scene_name(scene) + ": water mesh '" + mesh.name + "' is not horizontal (z from " +
+                                std::to_string(lo) + " to " + std::to_string(hi) + "); water must be a plane of one height");
+  return lo;
+}
+
+/// Whether any part of the mesh's bounding box may be inside the view volume of `vp`.
+bool may_be_visible(const scenes::Mesh& mesh, const glm::mat4& vp) {
+  if (mesh.positions.empty()) return false;
+  glm::vec3 lo = mesh.positions[0], hi = lo;
+  for (const glm::vec3& p : mesh.positions) lo = glm::min(lo, p), hi = glm::max(hi, p);
+  // Outside when all eight corners lie beyond one of the six clip planes.
+  int outside[6] = {0, 0, 0, 0, 0, 0};
+  for (int i = 0; i < 8; ++i) {
+    const glm::vec4 c = vp * glm::vec4(i & 1 ? hi.x : lo.x, i & 2 ? hi.y : lo.y, i & 4 ? hi.z : lo.z, 1.0f);
+    outside[0] += c.x < -c.w;
+    outside[1] += c.x > c.w;
+    outside[2] += c.y < -c.w;
+    outside[3] += c.y > c.w;
+    outside[4] += c.z < 0.0f;
+    outside[5] += c.z > c.w;
+  }
+  return std::none_of(std::begin(outside), std::end(outside), [](int n) { return n == 8; });
+}
+
+bool reflects(const scenes::Material& m) { return m.reflect_tint != glm::vec3(0.0f); }
+
+/// The largest offset, in screen units, that water material `m` can add to a lookup: the
+/// normal map's largest |2 texel - 1| in x and y, times its largest alpha, times the larger amount
+/// (water.hpp: offset = n.xy x n.a x amount x depth, depth <= 1). Filtering and MULTITEXTURE's
+/// 0.33 x (three reads) stay within the texels' range, but for 0.33 x 3 = 0.99 moving 2x - 1 by
+/// up to 0.02.
+double largest_offset(const scenes::Material& m, const scenes::Texture& normal_map) {
+  double xy = 0.0, alpha = 0.0;
+  for (const scenes::PixelImage& image : normal_map.faces) {
+    const size_t texels = static_cast<size_t>(image.width) * image.height;
+    for (size_t i = 0; i < texels; ++i) {
+      auto channel = [&](int c) {
+        return image.is_hdr() ? double(image.rgba32f[4 * i + c]) : image.rgba8[4 * i + c] / 255.0;
+      };
+      xy = std::max({xy, std::abs(2 * channel(0) - 1), std::abs(2 * channel(1) - 1)});
+      alpha = std::max(alpha, channel(3));
+    }
+  }
+  const double amount = std::max(std::abs(double(m.reflect_amount)), std::abs(double(m.refract_amount)));
+  return (xy + 0.02) * alpha * amount;
+}
+
+/// The pixels of a width x height frame that `mesh` covers through `vp`, widened by `margin`
+/// pixels: its bounding box's corners projected, the whole frame when one lies behind the eye.
+rasterizer::Scissor screen_rectangle(const scenes::Mesh& mesh, const glm::mat4& vp, int width, int height,
+                                     const glm::ivec2& margin) {
+  rasterizer::Scissor r{true, 0, 0, width, height};
+  glm::vec3 lo = mesh.positions[0], hi = lo;
+  for (const glm::vec3& p : mesh.positions) lo = glm::min(lo, p), hi = glm::max(hi, p);
+  glm::dvec2 min_px(1e300), max_px(-1e300);
+  for (int i = 0; i < 8; ++i) {
+    const glm::vec4 c = vp * glm::vec4(i & 1 ? hi.x : lo.x, i & 2 ? hi.y : lo.y, i & 4 ? hi.z : lo.z, 1.0f);
+    if (!(c.w > 0.0f)) return r;
+    const glm::dvec2 px((double(c.x) / c.w + 1) * 0.5 * width, (1 - double(c.y) / c.w) * 0.5 * height);
+    min_px = glm::min(min_px, px);
+    max_px = glm::max(max_px, px);
+  }
+  auto clamp_to = [](double v, int hi) { return static_cast<int>(std::clamp(v, 0.0, double(hi))); };
+  r.x0 = clamp_to(std::floor(min_px.x) - margin.x, width);
+  r.y0 = clamp_to(std::floor(min_px.y) - margin.y, height);
+  r.x1 = clamp_to(std::ceil(max_px.x) + margin.x, width);
+  r.y1 = clamp_to(std::ceil(max_px.y) + margin.y, height);
+  return r;
+}
+
+/// The smallest rectangle holding both.
+rasterizer::Scissor united(const rasterizer::Scissor& a, const rasterizer::Scissor& b) {
+  if (!a.enable) return b;
+  return {true, std::min(a.x0, b.x0), std::min(a.y0, b.y0), std::max(a.x1, b.x1), std::max(a.y1, b.y1)};
+}
+
+WaterMaterial water_material(const scenes::Material& m) {
+  WaterMaterial w;
+  w.reflect_tint = m.reflect_tint;
+  w.refract_tint = m.refract_tint;
+  w.fog_color = m.water_fog_color;
+  w.reflect_amount = m.reflect_amount;
+  w.refract_amount = m.refract_amount;
+  w.fog_start = m.water_fog_start;
+  w.fog_end = m.water_fog_end;
+  w.exposure = WaterReflectionExposure::sdk_fixed;  // SOURCE_FACTS §6.4
+  return w;
+}
+
+/// A view's target as a texture: 8-bit sRGB, one level, read bilinear and clamped (the distorted
+/// lookups near the screen's edges).
+GpuTexture view_texture(int width, int height) {
+  GpuTexture t{rasterizer::Texture::create_2d(width, height, rasterizer::TextureFormat::RGBA8_sRGB, 1), {}};
+  t.sampler.mip = rasterizer::MipFilter::None;
+  t.sampler.u = t.sampler.v = rasterizer::Address::Clamp;
+  return t;
+}
+
+glm::vec4 encoded_clear(const glm::vec3& linear, float alpha) {
+  auto encode = [](float x) { return float(rasterizer::linear_to_srgb(std::clamp(x, 0.0f, 1.0f))); };
+  return glm::vec4(encode(linear.r), encode(linear.g), encode(linear.b), alpha);
+}
+
+}  // namespace
+
+struct WaterPasses::Plane {
+  float height = 0.0f;
+  bool reflect = false;
+  rasterizer::Scissor pixels_read;  ///< what its water can read of its views
+  PassList reflection, refraction;
+  std::optional<GpuTexture> reflection_texture, refraction_texture;  // set when the view is drawn
+  glm::vec4 reflection_clear{0.0f}, refraction_clear{0.0f};
+};
+
+WaterPasses::WaterPasses(const scenes::Scene& scene, const FrameSettings& settings, const ViewMatrices& camera,
+                         const ViewSpec& camera_view, const BuildView& build)
+    : scene_(&scene), settings_(settings), plane_of_mesh_(scene.meshes.size(), -1) {
+  const glm::vec3 eye = camera_view.eye;
+  for (size_t i = 0; i < scene.meshes.size(); ++i) {
+    const scenes::Mesh& mesh = scene.meshes[i];
+    if (mesh.material < 0) continue;
+    const scenes::Material& m = scene.materials[static_cast<size_t>(mesh.material)];
+    if (m.family != scenes::ShaderFamily::water) continue;
+    if (!m.water_normal.bound())
+      throw std::invalid_argument(scene_name(scene) + ": water material '" + m.name + "' has no normal map ($normalmap)");
+    if (!reflects(m) && m.refract_amount == 0.0f)
+      throw std::invalid_argument(scene_name(scene) + ": water material '" + m.name +
+                                  "' neither reflects (its reflect tint is black) nor refracts (its refract amount is 0)");
+    const float h = water_height(scene, mesh);
+    if (!(eye.z > h) || !may_be_visible(mesh, camera_view.view_projection)) continue;
+    auto same = std::find_if(planes_.begin(), planes_.end(), [&](const auto& p) { return std::abs(p->height - h) <= kSameHeight; });
+    if (same == planes_.end()) {
+      planes_.push_back(std::make_unique<Plane>());
+      planes_.back()->height = h;
+      same = planes_.end() - 1;
+    }
+    (*same)->reflect = (*same)->reflect || reflects(m);
+    plane_of_mesh_[i] = static_cast<int>(same - planes_.begin());
+    const double offset = largest_offset(m, scene.textures[static_cast<size_t>(m.water_normal.texture)]);
+    const glm::ivec2 margin(static_cast<int>(std::ceil(offset * settings.width)) + 1,
+                            static_cast<int>(std::ceil(offset * settings.height)) + 1);
+    (*same)->pixels_read = united((*same)->pixels_read,
+                                  screen_rectangle(mesh, camera_view.view_projection, settings.width, settings.height, margin));
+  }
+
+  const float scale = camera_view.exposure;
+  for (auto& plane : planes_) {
+    const double h = plane->height;
+    const double spread = std::min(double(kSpread), 0.5 * (double(eye.z) - h));
+    ViewSpec base = camera_view;
+    base.water = false;
+    base.scissor = plane->pixels_read;
+    if (plane->reflect) {
+      glm::dmat4 mirror(1.0);  // z -> 2h - z
+      mirror[2][2] = -1.0;
+      mirror[3][2] = 2.0 * h;
+      ViewSpec v = clipped_view(camera, camera.view * mirror, glm::dvec4(0, 0, 1, -(h - spread)), base);
+      v.eye = glm::vec3(eye.x, eye.y, float(2.0 * h - eye.z));
+      v.mirrored = true;
+      WaterMaterial fixed;
+      fixed.exposure = WaterReflectionExposure::sdk_fixed;
+      v.exposure = water_reflection_scale(scale, HdrType::integer, fixed);  // 0.25 x the frame's
+      build(v, plane->reflection);
+      plane->reflection_texture = view_texture(settings.width, settings.height);
+      plane->reflection_clear = encoded_clear(scene.background, 1.0f);
+    }
+    // The water's fog: of the first of its materials that is drawn (the SDK's fog volume has one).
+    const scenes::Material* fog_material = nullptr;
+    for (size_t i = 0; i < scene.meshes.size() && !fog_material; ++i)
+      if (plane_of_mesh_[i] >= 0 && planes_[static_cast<size_t>(plane_of_mesh_[i])] == plane)
+        fog_material = &scene.materials[static_cast<size_t>(scene.meshes[i].material)];
+    FogSettings fog;
+    fog.start = fog_material->water_fog_start;
+    fog.end = fog_material->water_fog_end;
+    fog.max_density = 1.0f;
+    fog.color = material_gamma_to_linear(fog_material->water_fog_color);
+    fog.water_z = float(h + spread);
+    ViewSpec v = clipped_view(camera, camera.view, glm::dvec4(0, 0, -1, h + spread), base);
+    v.water_fog = fog;
+    v.sky = false;
+    build(v, plane->refraction);
+    plane->refraction_texture = view_texture(settings.width, settings.height);
+    plane->refraction_clear = encoded_clear(fog.color * scale, 1.0f);
+  }
+}
+
+WaterPasses::~WaterPasses() = default;
+WaterPasses::WaterPasses(WaterPasses&&) noexcept = default;
+WaterPasses& WaterPasses::operator=(WaterPasses&&) noexcept = default;
+
+void WaterPasses::render(rasterizer::Context& ctx, rasterizer::ColorTarget& color, rasterizer::DepthStencilTarget& depth,
+                         PassClock& clock) {
+  const rasterizer::Framebuffer fb{&color, &depth};
+  auto draw_view = [&](const char* name, PassList& passes, const glm::vec4& clear, std::optional<GpuTexture>& into) {
+    clock.run(name, draw_count(passes), [&] {
+      rasterizer::clear_color(ctx, color, clear);
+      rasterizer::clear_depth(ctx, depth, 1.0f);
+      run_passes(ctx, fb, passes);
+      rasterizer::resolve_into(ctx, color, resolved_);  // flushes: the views' draws are done
+      into->texture.upload(0, std::span<const uint8_t>(resolved_.rgba));
+    });
+  };
+  for (auto& plane : planes_) {
+    if (plane->reflect) draw_view("water reflection", plane->reflection, plane->reflection_clear, plane->reflection_texture);
+    draw_view("water refraction", plane->refraction, plane->refraction_clear, plane->refraction_texture);
+  }
+}
+
+std::optional<SourceDraw> WaterPasses::surface_draw(size_t index, const scenes::Material& m, const GpuTexture& normal_map,
+                                                    const DrawTarget& target, const WaterSurfaceContext& frame) const {
+  if (plane_of_mesh_[index] < 0) return std::nullopt;
+  const Plane& plane = *planes_[static_cast<size_t>(plane_of_mesh_[index])];
+  WaterCombo combo;
+  combo.reflect = reflects(m);
+  combo.refract = m.refract_amount != 0.0f;
+  combo.above_water = true;
+  combo.multitexture = m.water_scroll != glm::vec2(0.0f);
+  combo.fog = frame.fog;
+  WaterParams p = water_constants(water_material(m), HdrType::integer, frame.tonemap);
+  p.refraction = Sampler2D{0, &plane.refraction_texture->texture, plane.refraction_texture->sampler};
+  // A refract-only combo never reads the reflection; the binding only has to be valid.
+  const GpuTexture& reflection = plane.reflect ? *plane.reflection_texture : *plane.refraction_texture;
+  p.reflection = Sampler2D{2, &reflection.texture, reflection.sampler};
+  p.normal = Sampler2D{4, &normal_map.texture, normal_map.sampler};
+  p.pixel_fog = frame.fog_constants;
+  WaterVertexConstants c;
+  const scenes::UvTransform t = scenes::UvTransform::of(m.water_normal);
+  c.bump_u = glm::vec3(t.cos_r * t.scale.x, t.sin_r * t.scale.y, t.offset.x);
+  c.bump_v = glm::vec3(-t.sin_r * t.scale.x, t.cos_r * t.scale.y, t.offset.y);
+  // water.cpp: TexOffsets = time x ($scroll1, $scroll2); scenes have no $scroll2.
+  const float time = settings_.path_time.value_or(0.0f);
+  c.scroll_offsets = glm::vec4(time * m.water_scroll, 0.0f, 0.0f);
+  c.inverse_size = glm::vec2(1.0f / float(settings_.width), 1.0f / float(settings_.height));
+  return water_draw(combo, settings_.model, target, p, c, frame.eye);
+}
+
+void WaterPasses::add_shader_uses(std::vector<ShaderUse>& uses) const {
+  for (const auto& plane : planes_) {
+    frame::add_shader_uses(plane->reflection, uses);
+    frame::add_shader_uses(plane->refraction, uses);
+  }
+}
+
+}  // namespace luxel::frame
