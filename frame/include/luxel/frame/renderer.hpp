@@ -112,7 +112,7 @@ struct FrameSettings {
 
 /// One pass of the last frame and its wall time (FrameSettings::time_passes).
 struct PassTime {
-  std::string pass;  ///< "opaque", "sky", "translucent", "resolve"
+  std::string pass;  ///< "water reflection", "water refraction", "opaque", "sky", "translucent", "resolve"
   double ms = 0.0;
   int draws = 0;
 };
