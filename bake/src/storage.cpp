@@ -1,6 +1,8 @@
 // Bakes on disk: half-float EXR maps through OpenImageIO, a JSON index (nlohmann), the input hash.
 #include "luxel/bake/storage.hpp"
 
+#include "luxel/scenes/content_hash.hpp"
+
 #include "luxel/scenes/image_io.hpp"
 
 #include <OpenImageIO/imageio.h>
@@ -23,39 +25,15 @@ using nlohmann::json;
 const char* const kMapFiles[4] = {"lightmap_flat.exr", "lightmap_basis0.exr", "lightmap_basis1.exr", "lightmap_basis2.exr"};
 constexpr const char* kIndexFile = "bake.json";
 
-/// 64-bit FNV-1a over plain bytes.
-struct Hasher {
-  uint64_t h = 0xcbf29ce484222325ull;
-  void bytes(const void* p, size_t n) {
-    const auto* b = static_cast<const unsigned char*>(p);
-    for (size_t i = 0; i < n; ++i) h = (h ^ b[i]) * 0x100000001b3ull;
-  }
-  template <class T>
-  void value(const T& v) {
-    static_assert(std::is_trivially_copyable_v<T>);
-    bytes(&v, sizeof v);
-  }
-  template <class T>
-  void vector(const std::vector<T>& v) {
-    value(v.size());
-    if (!v.empty()) bytes(v.data(), v.size() * sizeof(T));
-  }
-  void string(const std::string& s) {
-    value(s.size());
-    bytes(s.data(), s.size());
-  }
-  void image(const scenes::PixelImage& img) {
-    value(img.width), value(img.height);
-    vector(img.rgba8), vector(img.rgba32f);
-  }
-  void texture(const scenes::Scene& s, int index) {
-    value(index);
-    if (index < 0 || index >= int(s.textures.size())) return;
-    const scenes::Texture& t = s.textures[size_t(index)];
-    value(t.shape), value(t.color_space);
-    for (const auto& f : t.faces) image(f);
-  }
-};
+/// Texture `index` of the scene as the bake reads it (its index, then its texels), or the index
+/// alone when there is no such texture.
+void hash_texture(scenes::ContentHash& h, const scenes::Scene& s, int index) {
+  h.value(index);
+  if (index < 0 || index >= int(s.textures.size())) return;
+  const scenes::Texture& t = s.textures[size_t(index)];
+  h.values(t.shape, t.color_space);
+  for (const auto& f : t.faces) h.image(f);
+}
 
 std::string hex(uint64_t h) {
   char b[17];
@@ -96,7 +74,7 @@ void write_map(const std::vector<glm::vec3>& map, int width, int height, const s
 }  // namespace
 
 uint64_t bake_input_hash(const scenes::Scene& scene, const BakeSettings& settings) {
-  Hasher h;
+  scenes::ContentHash h;
   h.value(kBakeFormatVersion);
   h.value(scene.meshes.size());
   std::vector<char> in_model(scene.meshes.size(), 0);
@@ -112,14 +90,14 @@ uint64_t bake_input_hash(const scenes::Scene& scene, const BakeSettings& setting
   h.value(scene.materials.size());
   for (const scenes::Material& m : scene.materials) {
     h.value(m.family), h.value(m.color), h.value(m.emissive), h.value(m.alpha), h.value(m.translucent);
-    h.texture(scene, m.base.texture);
+    hash_texture(h, scene, m.base.texture);
   }
   h.value(scene.lights.size());
   for (const scenes::Light& l : scene.lights) {
     h.value(l.type), h.value(l.position), h.value(l.direction), h.value(l.color), h.value(l.constant), h.value(l.linear),
         h.value(l.quadratic), h.value(l.inner_cone), h.value(l.outer_cone), h.value(l.spot_exponent), h.value(l.range);
   }
-  h.texture(scene, scene.sky_texture);
+  hash_texture(h, scene, scene.sky_texture);
   h.value(scene.background);
   h.value(scene.lightmap_luxel_size);
   h.value(bool(scene.irradiance_volume));

@@ -1,6 +1,8 @@
 // What a cube-map bake reads, hashed (cubemaps.hpp: cubemap_input_hash).
 #include "luxel/frame/cubemaps.hpp"
 
+#include "luxel/scenes/content_hash.hpp"
+
 #include <string>
 #include <type_traits>
 #include <variant>
@@ -12,38 +14,17 @@ namespace {
 /// Raised when what a capture draws or how cubes are made changes, so that kept cubes re-bake.
 constexpr int kCubemapFormatVersion = 1;
 
-/// 64-bit FNV-1a over plain values.
-struct Hasher {
-  uint64_t h = 0xcbf29ce484222325ull;
-  void bytes(const void* p, size_t n) {
-    const auto* b = static_cast<const unsigned char*>(p);
-    for (size_t i = 0; i < n; ++i) h = (h ^ b[i]) * 0x100000001b3ull;
-  }
-  template <class... T>
-  void values(const T&... v) {
-    (value(v), ...);
-  }
-  template <class T>
-  void value(const T& v) {
-    static_assert(std::is_trivially_copyable_v<T>);
-    bytes(&v, sizeof v);
-  }
-  template <class T>
-  void vector(const std::vector<T>& v) {
-    value(v.size());
-    if (!v.empty()) bytes(v.data(), v.size() * sizeof(T));
-  }
-  void ref(const scenes::TextureRef& r) { values(r.texture, r.uv_set, r.offset, r.scale, r.rotation); }
-  void texture(const scenes::Texture& t) {
-    values(t.shape, t.color_space, t.wrap_u, t.wrap_v, t.mag, t.min, t.mipmaps, t.faces.size());
-    for (const scenes::PixelImage& f : t.faces) values(f.width, f.height), vector(f.rgba8), vector(f.rgba32f);
-  }
-};
+void hash_ref(scenes::ContentHash& h, const scenes::TextureRef& r) { h.values(r.texture, r.uv_set, r.offset, r.scale, r.rotation); }
+
+void hash_texture(scenes::ContentHash& h, const scenes::Texture& t) {
+  h.values(t.shape, t.color_space, t.wrap_u, t.wrap_v, t.mag, t.min, t.mipmaps, t.faces.size());
+  for (const scenes::PixelImage& f : t.faces) h.image(f);
+}
 
 }  // namespace
 
 uint64_t cubemap_input_hash(const scenes::Scene& scene, const CubemapSettings& settings) {
-  Hasher h;
+  scenes::ContentHash h;
   h.values(kCubemapFormatVersion, settings.face_size, settings.stops_apart, settings.model);
   std::vector<char> in_model(scene.meshes.size(), 0);
   for (const scenes::Model& m : scene.models)
@@ -65,14 +46,14 @@ uint64_t cubemap_input_hash(const scenes::Scene& scene, const CubemapSettings& s
              m.rim, m.rim_exponent, m.rim_boost, m.rim_mask, m.half_lambert, m.hero_boost);
     for (const scenes::TextureRef* r : {&m.base, &m.bump, &m.detail, &m.envmap_texture, &m.envmap_mask_texture,
                                         &m.phong_exponent_texture, &m.water_normal})
-      h.ref(*r);
+      hash_ref(h, *r);
   }
   // Every texture but the samples' own cubes (a capture never reads them).
   std::vector<char> sample_cube(scene.textures.size(), 0);
   for (const scenes::CubemapSample& s : scene.cubemap_samples)
     if (s.texture >= 0 && size_t(s.texture) < sample_cube.size()) sample_cube[size_t(s.texture)] = 1;
   for (size_t i = 0; i < scene.textures.size(); ++i)
-    if (!sample_cube[i]) h.texture(scene.textures[i]);
+    if (!sample_cube[i]) hash_texture(h, scene.textures[i]);
   h.values(scene.sky_texture, scene.background, bool(scene.lightmaps));
   if (scene.lightmaps) h.values(scene.lightmaps->width, scene.lightmaps->height, scene.lightmaps->flat, scene.lightmaps->textures);
   h.value(scene.cubemap_samples.size());

@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 
 #include "luxel/rasterizer/simd.hpp"
+#include "luxel/scenes/content_hash.hpp"
 
 #include <cstdint>
 #include <cstdio>
@@ -66,11 +67,11 @@ TEST(FrameDeterminism, EveryBuiltinSceneAsEveryModel) {
     }
 }
 
-// FNV-1a, 64 bits: a hash a reader can recompute with a few lines of anything.
+// FNV-1a, 64 bits, of the image bytes: a hash a reader can recompute with a few lines of anything.
 uint64_t fnv1a(const std::vector<uint8_t>& bytes) {
-  uint64_t h = 0xcbf29ce484222325ull;
-  for (uint8_t b : bytes) h = (h ^ b) * 0x100000001b3ull;
-  return h;
+  scenes::ContentHash h;
+  h.bytes(bytes.data(), bytes.size());
+  return h.h;
 }
 
 // Golden bytes of the courtyard per model (160x90, 4x MSAA, the test bake): any change to what a
