@@ -159,20 +159,20 @@ void print_table(const std::vector<Pair>& pairs) {
 
 /// Renders the scene as `model`: one counted frame for the shader uses, then on a renderer that
 /// does not count, one warm-up frame (the image compared) and `frames` timed ones.
-std::optional<ModelRun> run_model(const scenes::Scene& scene, frame::FrameSettings settings, shading::ShaderModel model,
-                                  int frames, rasterizer::Context& ctx, int& code) {
+std::optional<ModelRun> run_model(const FrameOptions& options, const scenes::Scene& scene, frame::FrameSettings settings,
+                                  shading::ShaderModel model, int frames, rasterizer::Context& ctx, int& code) {
   ModelRun run;
   run.name = std::string(shading::caps(model).name);
   settings.model = model;
   settings.count_shading = true;
   {
-    const std::unique_ptr<frame::Renderer> counted = make_renderer("compare", scene, settings, code);
+    const std::unique_ptr<frame::Renderer> counted = options.make_renderer("compare", scene, settings, code);
     if (!counted) return std::nullopt;
     counted->render(ctx);
     run.uses = counted->shader_uses();
   }
   settings.count_shading = false;
-  const std::unique_ptr<frame::Renderer> timed = make_renderer("compare", scene, settings, code);
+  const std::unique_ptr<frame::Renderer> timed = options.make_renderer("compare", scene, settings, code);
   if (!timed) return std::nullopt;
   timed->render(ctx);
   // The first frame, as `luxel render --model` writes it: a frame carries state into the next
@@ -213,7 +213,7 @@ Runner add_compare_command(CLI::App& app) {
     rasterizer::Context ctx(*context_options);
     std::vector<ModelRun> runs;
     for (shading::ShaderModel m : *models) {
-      std::optional<ModelRun> run = run_model(*scene, settings, m, o->frames, ctx, code);
+      std::optional<ModelRun> run = run_model(o->frame, *scene, settings, m, o->frames, ctx, code);
       if (!run) return code;
       runs.push_back(std::move(*run));
     }

@@ -27,6 +27,14 @@ void FrameOptions::add_to(CLI::App& cmd) {
   cmd.add_option("--camera", settings.camera, "Which of the scene's cameras to look through (0 = the first)")
       ->check(CLI::NonNegativeNumber)
       ->capture_default_str();
+  cmd.add_flag("--camera-path", settings.camera_path,
+               "Look through the scene's camera path at the frame's time instead of a camera");
+  cmd.add_option("--frame", frame,
+                 "Which frame of the scene's sequence (its camera path, moving models, water scroll): time = frame / fps; "
+                 "the models' lighting is averaged over the frames before it")
+      ->check(CLI::Range(0, 1000000))
+      ->capture_default_str();
+  cmd.add_option("--fps", fps, "Frames per second of the sequence")->check(CLI::Range(1.0f, 1000.0f))->capture_default_str();
   cmd.add_option("--threads", threads, "Worker threads (0 = one per core)")->check(CLI::Range(0, 256))->capture_default_str();
   cmd.add_option("--bake", bake,
                  "When the scene needs a bake it lacks (kept as `luxel bake` keeps it): full, or quick (a preview in seconds)")
@@ -62,6 +70,7 @@ std::optional<scenes::Scene> FrameOptions::prepare_scene(const std::string& comm
   std::optional<scenes::Scene> loaded =
       load_scene_or_report(command, scene, gltf, {frame_settings.width, frame_settings.height}, code);
   if (!loaded) return std::nullopt;
+  frame_settings.time = static_cast<float>(double(frame) / fps);
   try {
     frame::frame_camera(*loaded, frame_settings);
   } catch (const std::invalid_argument& e) {
@@ -97,10 +106,14 @@ std::optional<scenes::Scene> FrameOptions::prepare_scene(const std::string& comm
   return loaded;
 }
 
-std::unique_ptr<frame::Renderer> make_renderer(const std::string& command, const scenes::Scene& scene,
-                                               const frame::FrameSettings& settings, int& code) {
+std::unique_ptr<frame::Renderer> FrameOptions::make_renderer(const std::string& command, const scenes::Scene& scene,
+                                                             const frame::FrameSettings& settings, int& code) const {
   try {
-    return std::make_unique<frame::Renderer>(scene, settings);
+    frame::FrameSettings first = settings;
+    first.time = 0.0f;
+    auto renderer = std::make_unique<frame::Renderer>(scene, first);
+    for (int n = 1; n <= frame; ++n) renderer->set_time(static_cast<float>(double(n) / fps));
+    return renderer;
   } catch (const std::invalid_argument& e) {
     std::cerr << "luxel " << command << ": " << e.what() << "\n";
     code = 2;

@@ -1,6 +1,7 @@
 #pragma once
 // The options of the commands that render frames (`luxel render`, `luxel compare`): the scene, its
-// camera, the image size, MSAA, worker threads and the bake made on demand, the LUXEL_NO_FASTPATH
+// camera, the frame of its sequence, the image size, MSAA, worker threads and the bake made on
+// demand, the LUXEL_NO_FASTPATH
 // switches, and how each of them is reported when it is bad: one line on stderr naming the
 // argument, exit 2 for an argument (an unknown built-in, a camera the scene lacks, a bad switch),
 // 1 for a file that cannot be read or written.
@@ -22,8 +23,11 @@ struct FrameOptions {
   frame::FrameSettings settings;  ///< size, samples, camera, ambient (the model is each command's own)
   int threads = 0;
   std::string bake = "full";      ///< the bake made on demand: full or quick
+  int frame = 0;                  ///< the frame of the scene's sequence, at time frame / fps
+  float fps = 30.0f;
 
-  /// Registers --scene --width --height --msaa --camera --threads --bake --ambient on `cmd`.
+  /// Registers --scene --width --height --msaa --camera --camera-path --frame --fps --threads
+  /// --bake --ambient on `cmd`.
   void add_to(CLI::App& cmd);
 
   /// The rasterizer context's options: the threads and LUXEL_NO_FASTPATH; nullopt after printing
@@ -38,11 +42,13 @@ struct FrameOptions {
   /// lacks is loaded or made (cli/baking.hpp). nullopt after printing one line, with `code` set.
   std::optional<scenes::Scene> prepare_scene(const std::string& command, frame::FrameSettings& settings,
                                              const std::string& out, int& code) const;
-};
 
-/// A renderer of `scene` (which must outlive it) with `settings`; nullptr after printing one line
-/// for settings the renderer refuses, exit code 2 in `code`.
-std::unique_ptr<frame::Renderer> make_renderer(const std::string& command, const scenes::Scene& scene,
-                                               const frame::FrameSettings& settings, int& code);
+  /// A renderer of `scene` (which must outlive it) with `settings`, its clock at `frame`: started
+  /// at frame 0 and moved through every frame before, so that the models' lighting is averaged
+  /// as in the sequence (frame/renderer.hpp). nullptr after printing one line for settings the
+  /// renderer refuses, exit code 2 in `code`.
+  std::unique_ptr<frame::Renderer> make_renderer(const std::string& command, const scenes::Scene& scene,
+                                                 const frame::FrameSettings& settings, int& code) const;
+};
 
 }  // namespace luxel::cli

@@ -1,5 +1,5 @@
 // luxel render --scene FILE.gltf|FILE.glb|builtin:NAME [--model ps_2_0|ps_2_b|ps_3_0] [--width --height --msaa
-//   --threads --camera N --bake full|quick --out FILE --stats]
+//   --threads --camera N --camera-path --frame N --fps F --bake full|quick --out FILE --stats]
 // LUXEL_NO_FASTPATH=name,... (or all) turns rasterizer fast paths off (fast_paths.hpp).
 
 #include "commands.hpp"
@@ -50,7 +50,7 @@ Runner add_render_command(CLI::App& app) {
     settings.time_passes = options->stats;
     const std::optional<scenes::Scene> scene = options->frame.prepare_scene("render", settings, options->out, code);
     if (!scene) return code;
-    const std::unique_ptr<frame::Renderer> renderer = make_renderer("render", *scene, settings, code);
+    const std::unique_ptr<frame::Renderer> renderer = options->frame.make_renderer("render", *scene, settings, code);
     if (!renderer) return code;
     rasterizer::Context ctx(*context_options);
     const auto t0 = std::chrono::steady_clock::now();
@@ -80,8 +80,10 @@ Runner add_render_command(CLI::App& app) {
       for (const frame::PassTime& p : renderer->pass_times())
         std::cout << "pass=" << p.pass << " draws=" << p.draws << " ms=" << p.ms << "\n";
     }
-    std::fprintf(stderr, "luxel render: %s as %s, %dx%d, %d samples: %.1f ms, %llu stamps shaded -> %s\n",
-                 scene->name.c_str(), options->model.c_str(), settings.width, settings.height, settings.samples, ms,
+    const std::string when =
+        options->frame.frame > 0 ? ", frame " + std::to_string(options->frame.frame) + " (" + std::to_string(renderer->time()) + " s)" : "";
+    std::fprintf(stderr, "luxel render: %s as %s%s, %dx%d, %d samples: %.1f ms, %llu stamps shaded -> %s\n",
+                 scene->name.c_str(), options->model.c_str(), when.c_str(), settings.width, settings.height, settings.samples, ms,
                  static_cast<unsigned long long>(renderer->stats().stamps_shaded), options->out.c_str());
     return 0;
   };

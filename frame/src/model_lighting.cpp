@@ -70,18 +70,63 @@ shading::source::AmbientCube ambient_cube(const scenes::Scene& scene, const glm:
   return cube;
 }
 
-ModelLighting light_model(const scenes::Scene& scene, std::span<const LightDesc> lights, const glm::vec3& centroid,
-                          const scenes::Material& material, AmbientSampling sampling) {
+AveragedLighting lighting_at(const scenes::Scene& scene, std::span<const LightDesc> lights, const glm::vec3& centroid,
+                             AmbientSampling sampling) {
+  AveragedLighting a;
+  a.volume = ambient_cube(scene, centroid, sampling);
+  a.shares.assign(lights.size(), 0.0f);
+  const std::vector<size_t> order = shading::source::significance_order(lights, centroid);
+  for (size_t k = 0; k < order.size() && k < 2; ++k) a.shares[order[k]] = 1.0f;
+  return a;
+}
+
+void step_towards(AveragedLighting& averaged, const AveragedLighting& target, float dt, float tau) {
+  if (!(tau > 0.0f) || dt < 0.0f || averaged.shares.size() != target.shares.size()) {
+    averaged = target;
+    return;
+  }
+  const float a = static_cast<float>(1.0 - std::exp(-double(dt) / double(tau)));
+  for (size_t side = 0; side < 6; ++side) averaged.volume.color[side] += (target.volume.color[side] - averaged.volume.color[side]) * a;
+  for (size_t i = 0; i < target.shares.size(); ++i) averaged.shares[i] += (target.shares[i] - averaged.shares[i]) * a;
+}
+
+std::array<int, 2> local_light_slots(std::span<const LightDesc> lights, const glm::vec3& centroid, std::span<const float> shares) {
+  const std::vector<size_t> order = shading::source::significance_order(lights, centroid);
+  std::vector<size_t> by_share;
+  for (size_t i : order)
+    if (i < shares.size() && shares[i] > 0.0f) by_share.push_back(i);
+  std::stable_sort(by_share.begin(), by_share.end(), [&](size_t a, size_t b) { return shares[a] > shares[b]; });
+  std::array<int, 2> slots{-1, -1};
+  for (size_t k = 0; k < by_share.size() && k < 2; ++k) slots[k] = static_cast<int>(by_share[k]);
+  return slots;
+}
+
+ModelLighting light_model(std::span<const LightDesc> lights, const glm::vec3& centroid, const scenes::Material& material,
+                          const AveragedLighting& averaged) {
   const bool half_lambert = material.half_lambert || material.phong;
-  const shading::source::FoldedLights folded =
-      shading::source::fold_lights(lights, 2, centroid, ambient_cube(scene, centroid, sampling), half_lambert);
   ModelLighting m;
-  m.kept = static_cast<int>(folded.kept.size());
+  m.local = local_light_slots(lights, centroid, averaged.shares);
+  // A local light at s x its color folds (1 - s) of itself; every other light folds wholly, in
+  // the order of significance (the order fold_lights adds them in).
+  shading::source::AmbientCube cube = averaged.volume;
+  for (size_t i : shading::source::significance_order(lights, centroid)) {
+    const bool local = static_cast<int>(i) == m.local[0] || static_cast<int>(i) == m.local[1];
+    const double weight = local ? 1.0 - double(averaged.shares[i]) : 1.0;
+    if (weight > 0.0) shading::source::fold_light(cube, lights[i], centroid, half_lambert, weight);
+  }
+  std::vector<LightDesc> direct;
+  for (int i : m.local) {
+    if (i < 0) continue;
+    LightDesc d = lights[static_cast<size_t>(i)];
+    d.color *= averaged.shares[static_cast<size_t>(i)];
+    direct.push_back(d);
+  }
+  m.kept = static_cast<int>(direct.size());
   shading::source::AmbientBoost boost;
   boost.enabled = material.hero_boost > 1.0f;
   boost.min_ambient_fraction *= material.hero_boost;
-  m.cube = shading::source::boost_ambient_cube(folded.cube, folded.kept, centroid, boost);
-  for (int i = 0; i < m.kept; ++i) m.lights[static_cast<size_t>(i)] = shading::source::to_local_light(folded.kept[static_cast<size_t>(i)]);
+  m.cube = shading::source::boost_ambient_cube(cube, direct, centroid, boost);
+  for (size_t i = 0; i < direct.size(); ++i) m.lights[i] = shading::source::to_local_light(direct[i]);
   return m;
 }
 

@@ -1,12 +1,14 @@
 #pragma once
 // Private: what lights a model (SOURCE_FACTS 2.2, 3.4): the ambient cube of the irradiance-volume
 // sample nearest its centroid (or the trilinear blend of the eight around it), its two most
-// significant local lights, every other light folded into that cube on the CPU (shading/source/light_folding.hpp: significance = delivered
-// luminance at the centroid, ties by scene order), then the hero boost where the material asks.
+// significant local lights, every other light folded into that cube on the CPU
+// (shading/source/light_folding.hpp: significance = delivered luminance at the centroid, ties by
+// scene order), then the hero boost where the material asks; across the frames of a sequence,
+// the volume's cube and the lights' shares of being local lights time-averaged (renderer.hpp).
 //
 // Hero boost: a material's hero_boost h > 1 turns on light_folding.hpp's ambient boost with the
 // floor h x its default fraction (the cube is raised until its mean luminance is at least
-// 0.25 h times the kept lights' at the centroid); h <= 1 leaves the cube as it is.
+// 0.25 h times the local lights' at the centroid); h <= 1 leaves the cube as it is.
 // Light ranges (scenes::Light::range) are not applied: Source's models see every light.
 // No irradiance volume (a scene not baked, or one without a volume): a black cube, except in a
 // scene with no light at all (no lights, no sky: a glTF model on its own), which is drawn
@@ -22,10 +24,18 @@
 
 namespace luxel::frame {
 
+/// What a model's lighting averages across frames (renderer.hpp): the volume's cube at its
+/// centroid, and per scene light its share of being one of the two local lights.
+struct AveragedLighting {
+  shading::source::AmbientCube volume;
+  std::vector<float> shares;
+};
+
 struct ModelLighting {
   shading::source::AmbientCube cube;
-  std::array<shading::source::LocalLight, 4> lights{};  ///< the kept lights first; the rest black
+  std::array<shading::source::LocalLight, 4> lights{};  ///< the local lights first; the rest black
   int kept = 0;                                          ///< 0, 1 or 2
+  std::array<int, 2> local{-1, -1};                      ///< the scene lights in the slots, or -1
 };
 
 /// The scene's lights as the shaders' light descriptions, in scene order.
@@ -35,7 +45,22 @@ std::vector<shading::source::LightDesc> light_descriptions(const scenes::Scene& 
 /// blend of the eight around it; black / white (above) without a volume.
 shading::source::AmbientCube ambient_cube(const scenes::Scene& scene, const glm::vec3& point, AmbientSampling sampling);
 
-ModelLighting light_model(const scenes::Scene& scene, std::span<const shading::source::LightDesc> lights,
-                          const glm::vec3& centroid, const scenes::Material& material, AmbientSampling sampling);
+/// What the averaging moves towards at `centroid`: the volume's cube there, share 1 for the two
+/// lights the significance rule keeps and 0 for the others.
+AveragedLighting lighting_at(const scenes::Scene& scene, std::span<const shading::source::LightDesc> lights,
+                             const glm::vec3& centroid, AmbientSampling sampling);
+
+/// Moves `averaged` towards `target` over `dt` seconds with time constant `tau` (renderer.hpp).
+/// tau <= 0, or a negative dt (the clock went back): `target` itself.
+void step_towards(AveragedLighting& averaged, const AveragedLighting& target, float dt, float tau);
+
+/// The local-light slots for `shares` at `centroid`: the two largest shares above 0, ties to the
+/// more significant light.
+std::array<int, 2> local_light_slots(std::span<const shading::source::LightDesc> lights, const glm::vec3& centroid,
+                                     std::span<const float> shares);
+
+/// The shader's lighting of a model drawn with `material`, from its averaged lighting.
+ModelLighting light_model(std::span<const shading::source::LightDesc> lights, const glm::vec3& centroid,
+                          const scenes::Material& material, const AveragedLighting& averaged);
 
 }  // namespace luxel::frame

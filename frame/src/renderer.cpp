@@ -10,7 +10,7 @@
 #include "luxel/rasterizer/framebuffer.hpp"
 #include "luxel/rasterizer/msaa.hpp"
 #include "luxel/rasterizer/srgb.hpp"
-#include "luxel/scenes/camera_path.hpp"
+#include "luxel/scenes/paths.hpp"
 #include "luxel/scenes/tangents.hpp"
 #include "luxel/shading/source/normalization_cube.hpp"
 
@@ -37,7 +37,11 @@ using namespace rasterizer;
 
 scenes::Camera frame_camera(const scenes::Scene& scene, const FrameSettings& settings) {
   if (settings.view) return *settings.view;
-  if (settings.path_time) return scenes::camera_at(scene.camera_path, *settings.path_time);
+  if (settings.camera_path) {
+    if (scene.camera_path.empty())
+      throw std::invalid_argument((scene.name.empty() ? std::string("scene") : scene.name) + " has no camera path");
+    return scenes::camera_at(scene.camera_path, settings.time);
+  }
   if (settings.camera < 0 || settings.camera >= static_cast<int>(scene.cameras.size()))
     throw std::invalid_argument((scene.name.empty() ? std::string("scene") : scene.name) + " has no camera " +
                                 std::to_string(settings.camera) + " (it has " + std::to_string(scene.cameras.size()) +
@@ -75,24 +79,25 @@ bool is_trivial_unlit(const scenes::Material& m, Fog fog, float exposure) {
          fog == Fog::none && exposure == 1.0f && m.alpha == scenes::AlphaMode::opaque && !m.translucent;
 }
 
-std::pair<glm::vec3, glm::vec3> mesh_bounds(const scenes::Mesh& m) {
-  if (m.positions.empty()) return {glm::vec3(0.0f), glm::vec3(0.0f)};
+/// The mesh's bounding box, moved by `offset` (its model's, at the clock's time).
+std::pair<glm::vec3, glm::vec3> mesh_bounds(const scenes::Mesh& m, const glm::vec3& offset) {
+  if (m.positions.empty()) return {offset, offset};
   glm::vec3 lo = m.positions[0], hi = lo;
   for (const glm::vec3& p : m.positions) {
     lo = glm::min(lo, p);
     hi = glm::max(hi, p);
   }
-  return {lo, hi};
+  return {lo + offset, hi + offset};
 }
 
-glm::vec3 mesh_center(const scenes::Mesh& m) {
-  const auto [lo, hi] = mesh_bounds(m);
+glm::vec3 mesh_center(const scenes::Mesh& m, const glm::vec3& offset) {
+  const auto [lo, hi] = mesh_bounds(m, offset);
   return 0.5f * (lo + hi);
 }
 
 /// Whether some corner of the mesh's bounding box lies on the kept side of `plane` (n, d).
-bool touches(const scenes::Mesh& m, const glm::vec4& plane) {
-  const auto [lo, hi] = mesh_bounds(m);
+bool touches(const scenes::Mesh& m, const glm::vec3& offset, const glm::vec4& plane) {
+  const auto [lo, hi] = mesh_bounds(m, offset);
   for (int i = 0; i < 8; ++i) {
     const glm::vec3 c(i & 1 ? hi.x : lo.x, i & 2 ? hi.y : lo.y, i & 4 ? hi.z : lo.z);
     if (glm::dot(glm::vec3(plane), c) + plane.w >= 0.0f) return true;
@@ -143,6 +148,11 @@ struct FrameState {
   DrawStats stats;
   std::vector<ShaderUse> shader_uses;
   std::vector<PassTime> pass_times;
+  // The scene's clock (renderer.hpp) and what moves with it, per Scene::models entry.
+  std::vector<glm::vec3> model_offsets;
+  std::vector<AveragedLighting> model_lighting;
+  std::vector<ModelLightingState> model_states;
+  bool views_current = false;
 
   FrameState(const scenes::Scene& s, const FrameSettings& f, std::shared_ptr<const SceneTextures> t)
       : scene(&s), settings(f), color(f.width, f.height, f.samples), depth(f.width, f.height, f.samples), prepared(std::move(t)) {}
@@ -205,6 +215,12 @@ class FrameBuilder {
         if (m >= 0 && m < static_cast<int>(scene_.meshes.size())) model_of_mesh_[static_cast<size_t>(m)] = static_cast<int>(i);
   }
 
+  /// Where mesh `index` is moved to at the clock's time: its model's offset (0 outside models).
+  glm::vec3 offset_of(size_t index) const {
+    const int model = model_of_mesh_[index];
+    return model >= 0 ? st_.model_offsets[static_cast<size_t>(model)] : glm::vec3(0.0f);
+  }
+
   /// Every mesh, the sky, the translucent meshes sorted.
   void build() {
     for (size_t i = 0; i < scene_.meshes.size(); ++i) add_mesh(i);
@@ -221,24 +237,25 @@ class FrameBuilder {
     if (m.family == scenes::ShaderFamily::sky) return;  // Scene::sky_texture draws the sky
     if (st_.settings.cubemap_capture && !captured(index, m)) return;
     if (m.family == scenes::ShaderFamily::water && !(view_.water && st_.water)) return;
-    if (view_.keep && !touches(*mesh, *view_.keep)) return;
+    const glm::vec3 offset = offset_of(index);
+    if (view_.keep && !touches(*mesh, offset, *view_.keep)) return;
     Pass pass;
     pass.state = state_of(m);
     // (A capture is rendered to floats too, which only Source draws can: render_float.)
-    if (is_trivial_unlit(m, fog_, exposure_) && !st_.settings.cubemap_capture) {
+    if (is_trivial_unlit(m, fog_, exposure_) && !st_.settings.cubemap_capture && offset == glm::vec3(0.0f)) {
       pass.geometry = geometry_of(*mesh);
       pass.trivial = UnlitVertex{mesh->positions.data(), data_or_null(mesh->colors), m.color, vp_};
-      queue(m, *mesh, std::move(pass));
+      queue(m, index, std::move(pass));
       return;
     }
     if (needs_tangents(m) && mesh->tangents.empty()) mesh = &with_tangents(index);
     pass.geometry = geometry_of(*mesh);
-    DrawTarget target{pass.state, pass.geometry, vertex_setup(*mesh, m), st_.settings.count_shading,
+    DrawTarget target{pass.state, pass.geometry, vertex_setup(*mesh, m, offset), st_.settings.count_shading,
                       view_.water_fog && !translucent(m) && m.alpha == scenes::AlphaMode::opaque};
     switch (m.family) {
-      case scenes::ShaderFamily::lightmapped_generic: pass.source = lightmapped(*mesh, m, target); break;
+      case scenes::ShaderFamily::lightmapped_generic: pass.source = lightmapped(index, *mesh, m, target); break;
       case scenes::ShaderFamily::vertexlit_generic: pass.source = vertexlit(index, *mesh, m, target); break;
-      case scenes::ShaderFamily::unlit_generic: pass.source = unlit(*mesh, m, target); break;
+      case scenes::ShaderFamily::unlit_generic: pass.source = unlit(index, *mesh, m, target); break;
       case scenes::ShaderFamily::water: {
         const GpuTexture& normal_map = st_.textures[static_cast<size_t>(m.water_normal.texture)];
         std::optional<SourceDraw> draw =
@@ -249,7 +266,7 @@ class FrameBuilder {
       }
       case scenes::ShaderFamily::sky: return;
     }
-    queue(m, *mesh, std::move(pass));
+    queue(m, index, std::move(pass));
   }
 
   void add_sky() {
@@ -345,9 +362,10 @@ class FrameBuilder {
     return *completed;
   }
 
-  VertexSetup* vertex_setup(const scenes::Mesh& mesh, const scenes::Material& m) {
+  VertexSetup* vertex_setup(const scenes::Mesh& mesh, const scenes::Material& m, const glm::vec3& offset) {
     auto s = std::make_unique<VertexSetup>();
     s->positions = mesh.positions.data();
+    if (offset != glm::vec3(0.0f)) s->offset = offset;
     s->normals = data_or_null(mesh.normals);
     s->tangents = data_or_null(mesh.tangents);
     s->uv0 = data_or_null(m.base.uv_set == 1 ? mesh.uv1 : mesh.uv0);
@@ -368,7 +386,7 @@ class FrameBuilder {
   }
 
   /// The cube a material reflects (renderer.hpp), or null for none.
-  const GpuTexture* envmap_of(const scenes::Material& m, const scenes::Mesh& mesh) const {
+  const GpuTexture* envmap_of(const scenes::Material& m, size_t index) const {
     auto cube_at = [&](int t) -> const GpuTexture* {
       if (t < 0 || scene_.textures[static_cast<size_t>(t)].shape != scenes::TextureShape::cube) return nullptr;
       return &st_.textures[static_cast<size_t>(t)];
@@ -377,7 +395,7 @@ class FrameBuilder {
       case scenes::EnvmapSource::none: return nullptr;
       case scenes::EnvmapSource::texture: return cube_at(m.envmap_texture.texture);
       case scenes::EnvmapSource::nearest_sample: {
-        const glm::vec3 c = mesh_center(mesh);
+        const glm::vec3 c = mesh_center(scene_.meshes[index], offset_of(index));
         const scenes::CubemapSample* best = nullptr;
         for (const scenes::CubemapSample& s : scene_.cubemap_samples)
           if (s.texture >= 0 && !st_.settings.cubemap_capture &&
@@ -389,13 +407,13 @@ class FrameBuilder {
     return nullptr;
   }
 
-  SourceDraw lightmapped(const scenes::Mesh& mesh, const scenes::Material& m, const DrawTarget& target) {
+  SourceDraw lightmapped(size_t index, const scenes::Mesh& mesh, const scenes::Material& m, const DrawTarget& target) {
     if (!st_.lightmaps)
       throw std::invalid_argument(scene_.name + ": mesh '" + mesh.name +
                                   "' is LightmappedGeneric and the scene has no baked lightmaps (luxel bake)");
     if (mesh.uv1.empty())
       throw std::invalid_argument(scene_.name + ": mesh '" + mesh.name + "' is LightmappedGeneric and has no lightmap coordinates (uv1)");
-    const GpuTexture* env = envmap_of(m, mesh);
+    const GpuTexture* env = envmap_of(m, index);
     LightmappedMaterial lm;
     lm.bump = m.bump.bound();
     lm.envmap = env != nullptr;
@@ -423,9 +441,13 @@ class FrameBuilder {
   }
 
   SourceDraw vertexlit(size_t index, const scenes::Mesh& mesh, const scenes::Material& m, const DrawTarget& target) {
+    // A model's lighting is its averaged one (renderer.hpp); a vertex-lit mesh outside models
+    // does not move, and is lit as it is now.
     const int model = model_of_mesh_[index];
-    const glm::vec3 centroid = model >= 0 ? scene_.models[static_cast<size_t>(model)].centroid : mesh_center(mesh);
-    const ModelLighting lighting = light_model(scene_, lights_, centroid, m, st_.settings.ambient);
+    const glm::vec3 centroid = model >= 0 ? st_.model_states[static_cast<size_t>(model)].centroid : mesh_center(mesh, glm::vec3(0.0f));
+    const ModelLighting lighting =
+        model >= 0 ? light_model(lights_, centroid, m, st_.model_lighting[static_cast<size_t>(model)])
+                   : light_model(lights_, centroid, m, lighting_at(scene_, lights_, centroid, st_.settings.ambient));
     const bool phong = m.phong && model_ != shading::ShaderModel::ps_2_0;  // Valve's helper turns $phong off on ps_2_0
     VertexLitCombo wanted;
     wanted.lights = lighting.kept > 0 ? 2 : 0;
@@ -462,8 +484,8 @@ class FrameBuilder {
     return vertexlit_draw(*combo, model_, target, p);
   }
 
-  SourceDraw unlit(const scenes::Mesh& mesh, const scenes::Material& m, const DrawTarget& target) {
-    const GpuTexture* env = envmap_of(m, mesh);
+  SourceDraw unlit(size_t index, const scenes::Mesh& mesh, const scenes::Material& m, const DrawTarget& target) {
+    const GpuTexture* env = envmap_of(m, index);
     UnlitCombo combo;
     combo.envmap = env != nullptr;
     if (combo.envmap)
@@ -485,9 +507,9 @@ class FrameBuilder {
     return unlit_draw(combo, model_, target, p, eye_);
   }
 
-  void queue(const scenes::Material& m, const scenes::Mesh& mesh, Pass pass) {
+  void queue(const scenes::Material& m, size_t index, Pass pass) {
     if (translucent(m)) {
-      translucent_.emplace_back(glm::distance(mesh_center(mesh), eye_), std::move(pass));
+      translucent_.emplace_back(glm::distance(mesh_center(scene_.meshes[index], offset_of(index)), eye_), std::move(pass));
     } else {
       out_.opaque.push_back(std::move(pass));
     }
@@ -518,9 +540,43 @@ struct Renderer::State : FrameState {
   using FrameState::FrameState;
 };
 
-Renderer::Renderer(const scenes::Scene& scene, const FrameSettings& settings, std::shared_ptr<const SceneTextures> textures)
-    : state_(std::make_unique<State>(scene, settings, prepared(scene, settings, std::move(textures)))) {
-  State& st = *state_;
+namespace {
+
+/// Moves the models and their lighting to the clock's time, `dt` after the last frame (negative:
+/// restart the averaging).
+void move_models(FrameState& st, float dt) {
+  const scenes::Scene& scene = *st.scene;
+  const std::vector<LightDesc> lights = light_descriptions(scene);
+  const size_t count = scene.models.size();
+  st.model_offsets.resize(count);
+  st.model_lighting.resize(count);
+  st.model_states.resize(count);
+  for (size_t i = 0; i < count; ++i) {
+    const scenes::Model& model = scene.models[i];
+    st.model_offsets[i] = scenes::model_offset(model, st.settings.time);
+    const glm::vec3 centroid = model.centroid + st.model_offsets[i];
+    const AveragedLighting target = lighting_at(scene, lights, centroid, st.settings.ambient);
+    step_towards(st.model_lighting[i], target, dt, st.settings.lighting_time_constant);
+    ModelLightingState& state = st.model_states[i];
+    state.model = model.name;
+    state.centroid = centroid;
+    state.volume = st.model_lighting[i].volume.color;
+    state.light_shares = st.model_lighting[i].shares;
+    state.local_lights.clear();
+    for (int l : local_light_slots(lights, centroid, st.model_lighting[i].shares))
+      if (l >= 0) state.local_lights.push_back(l);
+  }
+  st.views_current = false;
+}
+
+/// The camera's view and the water's views at the clock's time, drawn from scratch.
+void build_views(FrameState& st) {
+  const scenes::Scene& scene = *st.scene;
+  const FrameSettings& settings = st.settings;
+  st.passes = PassList{};
+  st.water.reset();
+  st.vertex_setups.clear();
+  st.sky_quads.clear();
   const scenes::Camera camera = frame_camera(scene, settings);
   const ViewMatrices matrices = view_matrices(camera, settings.width, settings.height);
   ViewSpec view;
@@ -533,12 +589,36 @@ Renderer::Renderer(const scenes::Scene& scene, const FrameSettings& settings, st
   st.clear = glm::vec4(float(linear_to_srgb(std::clamp(background.r, 0.0f, 1.0f))),
                        float(linear_to_srgb(std::clamp(background.g, 0.0f, 1.0f))),
                        float(linear_to_srgb(std::clamp(background.b, 0.0f, 1.0f))), 1.0f);
-  st.completed_meshes.resize(scene.meshes.size());
   const BuildView build = [&st](const ViewSpec& v, PassList& out) { FrameBuilder(st, v, out).build(); };
   // Before the camera's view: its water draws read them. A capture draws no water.
   if (!settings.cubemap_capture) st.water.emplace(scene, settings, matrices, view, build);
   build(view, st.passes);
+  st.views_current = true;
 }
+
+}  // namespace
+
+Renderer::Renderer(const scenes::Scene& scene, const FrameSettings& settings, std::shared_ptr<const SceneTextures> textures)
+    : state_(std::make_unique<State>(scene, settings, prepared(scene, settings, std::move(textures)))) {
+  State& st = *state_;
+  if (!std::isfinite(settings.time)) throw std::invalid_argument("frame time " + std::to_string(settings.time) + " is not finite");
+  if (!(settings.lighting_time_constant >= 0.0f && std::isfinite(settings.lighting_time_constant)))
+    throw std::invalid_argument("lighting time constant " + std::to_string(settings.lighting_time_constant) +
+                                " is not a finite number >= 0");
+  st.completed_meshes.resize(scene.meshes.size());
+  move_models(st, -1.0f);
+  build_views(st);
+}
+
+void Renderer::set_time(float seconds) {
+  State& st = *state_;
+  if (!std::isfinite(seconds)) throw std::invalid_argument("frame time " + std::to_string(seconds) + " is not finite");
+  const float dt = seconds - st.settings.time;
+  st.settings.time = seconds;
+  move_models(st, dt);
+}
+
+float Renderer::time() const { return state_->settings.time; }
 
 Renderer::~Renderer() = default;
 Renderer::Renderer(Renderer&&) noexcept = default;
@@ -546,6 +626,7 @@ Renderer& Renderer::operator=(Renderer&&) noexcept = default;
 
 void Renderer::render(Context& ctx) {
   State& st = *state_;
+  if (!st.views_current) build_views(st);
   ctx.reset_stats();
   st.pass_times.clear();
   PassClock clock(ctx, st.settings.time_passes ? &st.pass_times : nullptr);
@@ -569,6 +650,7 @@ std::vector<glm::vec4> Renderer::render_float(Context& ctx) {
   State& st = *state_;
   if (!st.settings.cubemap_capture || st.settings.samples != 1 || !st.passes.translucent.empty())
     throw std::invalid_argument("a float frame is rendered only for a cube-map capture without MSAA");
+  if (!st.views_current) build_views(st);
   const glm::vec3 background = st.scene->background;
   std::vector<uint32_t> bits(static_cast<size_t>(st.settings.width) * st.settings.height * 3, 0);
   const Framebuffer fb{&st.color, &st.depth};
@@ -594,5 +676,6 @@ const Image& Renderer::image() const { return state_->image; }
 const DrawStats& Renderer::stats() const { return state_->stats; }
 const std::vector<ShaderUse>& Renderer::shader_uses() const { return state_->shader_uses; }
 const std::vector<PassTime>& Renderer::pass_times() const { return state_->pass_times; }
+const std::vector<ModelLightingState>& Renderer::model_lighting() const { return state_->model_states; }
 
 }  // namespace luxel::frame

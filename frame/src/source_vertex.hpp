@@ -19,6 +19,7 @@ namespace luxel::frame {
 /// per-vertex terms. Lives in the renderer's state for as long as its draws.
 struct VertexSetup {
   const glm::vec3* positions = nullptr;
+  std::optional<glm::vec3> offset;      ///< a moving model's translation (scenes/paths.hpp), added to the positions
   const glm::vec3* normals = nullptr;   ///< or null: +Z
   const glm::vec4* tangents = nullptr;  ///< or null: +X, w = 1
   const glm::vec2* uv0 = nullptr;       ///< or null: (0, 0)
@@ -45,7 +46,7 @@ struct SourceVertex {
   void operator()(uint32_t i, rasterizer::VertexOutput<N>& out) const {
     using shading::source::Attribute;
     const VertexSetup& s = *setup;
-    const glm::vec3 p = s.positions[i];
+    const glm::vec3 p = s.offset ? s.positions[i] + *s.offset : s.positions[i];
     glm::vec4 clip = s.view_projection * glm::vec4(p, 1.0f);
     const float proj_z = s.proj_z_row ? glm::dot(*s.proj_z_row, glm::vec4(p, 1.0f)) : clip.z;
     if (s.at_far_plane) clip.z = clip.w;

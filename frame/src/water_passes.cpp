@@ -298,7 +298,7 @@ std::optional<SourceDraw> WaterPasses::surface_draw(size_t index, const scenes::
   c.bump_u = glm::vec3(t.cos_r * t.scale.x, t.sin_r * t.scale.y, t.offset.x);
   c.bump_v = glm::vec3(-t.sin_r * t.scale.x, t.cos_r * t.scale.y, t.offset.y);
   // water.cpp: TexOffsets = time x ($scroll1, $scroll2); scenes have no $scroll2.
-  const float time = settings_.path_time.value_or(0.0f);
+  const float time = settings_.time;
   c.scroll_offsets = glm::vec4(time * m.water_scroll, 0.0f, 0.0f);
   c.inverse_size = glm::vec2(1.0f / float(settings_.width), 1.0f / float(settings_.height));
   return water_draw(combo, settings_.model, target, p, c, frame.eye);

@@ -4,7 +4,8 @@
 // LightmappedGeneric, bump-mapped, env-map specular masked by the base alpha on the floor and by
 // a mask texture on the walls, lightmap charts in uv1). On a pedestal in the middle stands the
 // hero model, a bronze sphere in a ring (VertexLitGeneric: Phong with an exponent texture and a
-// base-alpha mask, rim light, hero boost); around it crates (bumped), barrels and balls (not).
+// base-alpha mask, rim light, hero boost); around it crates (bumped), barrels and balls (not), one
+// ball rolling around the yard along a path.
 // A fountain basin holds a water plane. Lights: the sun and four local lights (two torches on the
 // walls, their flames unlit, and two spots), with Source's quadratic falloff. Environment: five cube-map sample points,
 // an irradiance volume over the yard (bounds and spacing; baked later), an HDR sky cube, range
@@ -421,6 +422,11 @@ Scene make_courtyard() {
     add_sphere(s.meshes[m], {60.0f + 50.0f * i, 300.0f + 30.0f * (i % 2), r}, r, 24, 12);
     b.model(s.meshes[m].name, {m});
   }
+  // Ball 0 rolls around the yard in the camera path's 24 seconds: past the west torch, along the
+  // south wall, back up the east side of the pedestal, across irradiance-volume cells and
+  // through changes of its two most significant lights.
+  s.models[s.models.size() - 3].path = {{0.0f, {0, 0, 0}},       {6.0f, {-380, -300, 0}}, {12.0f, {-380, -620, 0}},
+                                        {18.0f, {0, -620, 0}}, {24.0f, {0, 0, 0}}};
 
   // --- Lights ---
   Light sun;

@@ -196,7 +196,18 @@ class Exporter {
       node.mesh = int(model_.meshes.size()) - 1;
       if (model_of[i] >= 0) {  // the model's own centroid, in the units of its vertices
         tinygltf::Value::Object luxel;
-        luxel["centroid"] = gltf::floats(scene_.models[size_t(model_of[i])].centroid);
+        const Model& model = scene_.models[size_t(model_of[i])];
+        luxel["centroid"] = gltf::floats(model.centroid);
+        if (!model.path.empty()) {
+          tinygltf::Value::Array path;
+          for (const ModelKey& k : model.path) {
+            tinygltf::Value::Object key;
+            key["time"] = tinygltf::Value(double(k.time));
+            key["offset"] = gltf::floats(k.offset);
+            path.emplace_back(std::move(key));
+          }
+          luxel["path"] = tinygltf::Value(std::move(path));
+        }
         tinygltf::Value::Object extras;
         extras["luxel"] = tinygltf::Value(std::move(luxel));
         node.extras = tinygltf::Value(std::move(extras));

@@ -373,7 +373,7 @@ class Importer {
     for (const Item& item : placed) {
       const tinygltf::Node& n = model_.nodes[size_t(item.node)];
       const std::string where = node_name(item.node);
-      if (n.mesh >= 0) add_mesh(n.mesh, item.parent, where, n.extras.Get("luxel").Get("centroid"));
+      if (n.mesh >= 0) add_mesh(n.mesh, item.parent, where, n.extras.Get("luxel"));
       if (n.camera >= 0) add_camera(n.camera, item.parent, where);
       if (auto it = n.extensions.find("KHR_lights_punctual"); it != n.extensions.end() && it->second.Get("light").IsNumber())
         add_light(it->second.Get("light").GetNumberAsInt(), item.parent, where);
@@ -409,8 +409,10 @@ class Importer {
   // --- Meshes ------------------------------------------------------------------------------------
 
   /// The node's mesh; its VertexLitGeneric primitives become one Model, whose centroid is
-  /// `centroid` (extras.luxel.centroid, as luxel exports it) or else the mean of their vertices.
-  void add_mesh(int index, const glm::dmat4& world, const std::string& node, const tinygltf::Value& centroid) {
+  /// `luxel.centroid` (the node's extras, as luxel exports it) or else the mean of their vertices,
+  /// and whose path is `luxel.path` ([{"time": s, "offset": [x, y, z]}...], offsets in the node's
+  /// parent's units, as luxel exports it).
+  void add_mesh(int index, const glm::dmat4& world, const std::string& node, const tinygltf::Value& luxel) {
     if (size_t(index) >= model_.meshes.size()) fail(node + " refers to mesh " + std::to_string(index));
     const tinygltf::Mesh& m = model_.meshes[size_t(index)];
     Model model;
@@ -433,8 +435,20 @@ class Importer {
     if (!model.meshes.empty()) {
       model.centroid = glm::vec3(count ? sum / double(count) : glm::dvec3(0.0));
       glm::vec3 given(std::numeric_limits<float>::quiet_NaN());
-      gltf::read(centroid, given);
+      gltf::read(luxel.Get("centroid"), given);
       if (finite(glm::dvec3(given))) model.centroid = is_identity(world) ? given : glm::vec3(world * glm::dvec4(given, 1.0));
+      const tinygltf::Value& path = luxel.Get("path");
+      for (size_t k = 0; path.IsArray() && k < path.ArrayLen(); ++k) {
+        ModelKey key;
+        key.time = std::numeric_limits<float>::quiet_NaN();
+        key.offset = glm::vec3(std::numeric_limits<float>::quiet_NaN());
+        gltf::read(path.Get(int(k)).Get("time"), key.time);
+        gltf::read(path.Get(int(k)).Get("offset"), key.offset);
+        if (!std::isfinite(key.time) || !finite(glm::dvec3(key.offset)) || (k > 0 && !(key.time > model.path.back().time)))
+          fail(node + ": extras.luxel.path key " + std::to_string(k) + " is not a finite time and offset later than the key before");
+        if (!is_identity(world)) key.offset = glm::vec3(world * glm::dvec4(key.offset, 0.0));
+        model.path.push_back(key);
+      }
       scene_.models.push_back(std::move(model));
     }
   }

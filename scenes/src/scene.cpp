@@ -119,6 +119,14 @@ void validate(const Scene& scene) {
     for (int mesh : scene.models[i].meshes)
       if (mesh < 0 || mesh >= static_cast<int>(scene.meshes.size()))
         fail(scene, "model " + std::to_string(i) + " refers to mesh " + std::to_string(mesh));
+  for (size_t i = 0; i < scene.models.size(); ++i) {
+    const Model& m = scene.models[i];
+    if (!finite(m.centroid)) fail(scene, "model " + std::to_string(i) + " '" + m.name + "' has a centroid that is not finite");
+    for (size_t k = 0; k < m.path.size(); ++k)
+      if (!std::isfinite(m.path[k].time) || !finite(m.path[k].offset) || (k > 0 && !(m.path[k].time > m.path[k - 1].time)))
+        fail(scene, "model " + std::to_string(i) + " '" + m.name + "' path key " + std::to_string(k) +
+                        " is not finite or not later than the one before");
+  }
   for (size_t i = 0; i < scene.lights.size(); ++i) {
     const Light& l = scene.lights[i];
     if (!finite(l.position) || !finite(l.direction) || !finite(l.color))

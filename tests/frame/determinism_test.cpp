@@ -114,7 +114,8 @@ TEST(FrameDeterminism, DemoScene) {
 TEST(FrameDeterminism, CourtyardScene) {
   check("courtyard", {kReduced ? 96 : 240, kReduced ? 64 : 136, 4});
   FrameSettings on_path{kReduced ? 64 : 160, kReduced ? 48 : 90, 2};
-  on_path.path_time = 7.5f;
+  on_path.camera_path = true;
+  on_path.time = 7.5f;
   check("courtyard", on_path);
   for (int camera : {1, 2}) check("courtyard", {kReduced ? 64 : 160, kReduced ? 48 : 90, 1, camera});
 }
@@ -126,7 +127,7 @@ TEST(FrameDeterminism, BadSettingsAndCamerasThrow) {
   EXPECT_THROW(Renderer(fill, {10, 10, 1, 1}), std::invalid_argument);   // fill has one camera
   EXPECT_THROW(Renderer(fill, {10, 10, 1, -1}), std::invalid_argument);
   FrameSettings on_path{10, 10, 1};
-  on_path.path_time = 0.0f;
+  on_path.camera_path = true;
   EXPECT_THROW(Renderer(fill, on_path), std::invalid_argument);         // and no camera path
   scenes::Scene broken = fill;
   broken.meshes[0].material = 99;

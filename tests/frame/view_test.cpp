@@ -75,7 +75,8 @@ TEST(View, FrameCameraPicksACameraOrThePath) {
   EXPECT_THROW(frame_camera(s, second), std::invalid_argument);
   s.camera_path = {{0.0f, a}, {1.0f, b}};
   FrameSettings timed;
-  timed.path_time = 1.0f;
+  timed.camera_path = true;
+  timed.time = 1.0f;
   EXPECT_EQ(frame_camera(s, timed).position, b.position);
 }
 

@@ -43,6 +43,11 @@ void expect_same_geometry(const Scene& a, const Scene& b, const std::string& wha
   for (size_t i = 0; i < a.models.size(); ++i) {
     EXPECT_EQ(a.models[i].meshes, b.models[i].meshes) << what;
     EXPECT_EQ(a.models[i].centroid, b.models[i].centroid) << what;
+    ASSERT_EQ(a.models[i].path.size(), b.models[i].path.size()) << what;
+    for (size_t k = 0; k < a.models[i].path.size(); ++k) {
+      EXPECT_EQ(a.models[i].path[k].time, b.models[i].path[k].time) << what;
+      EXPECT_EQ(a.models[i].path[k].offset, b.models[i].path[k].offset) << what;
+    }
   }
 }
 
@@ -208,6 +213,7 @@ Scene hand_built() {
   for (int m : hero_model.meshes)
     for (const glm::vec3& p : s.meshes[size_t(m)].positions) sum += glm::dvec3(p);
   hero_model.centroid = glm::vec3(sum / 8.0);
+  hero_model.path = {{0.0f, glm::vec3(0.0f)}, {1.25f, glm::vec3(64, -32.5f, 0)}, {4.0f, glm::vec3(0.1f, 0.2f, 0.3f)}};
   s.models.push_back(hero_model);
 
   Light sun;

@@ -262,5 +262,22 @@ TEST(GltfRobustness, NonFinitePositionsAndUnknownRequiredExtensions) {
   expect_gltf_error(path2, "requires extension KHR_draco_mesh_compression, which luxel does not read", [&] { load_gltf(path2); });
 }
 
+TEST(GltfRobustness, BadModelPaths) {
+  TempDir dir;
+  const json bad_keys[] = {
+      json::array({{{"time", 0.0}, {"offset", {0, 0, 0}}}, {{"time", 0.0}, {"offset", {1, 0, 0}}}}),  // not later
+      json::array({{{"time", 1.0}, {"offset", {0, 0}}}}),                                               // two components
+      json::array({{{"offset", {0, 0, 0}}}}),                                                           // no time
+  };
+  int n = 0;
+  for (const json& keys : bad_keys) {
+    GltfBuilder b;
+    const int pos = b.add_positions({0, 0, 0, 1, 0, 0, 0, 1, 0});
+    b.add_node({{"mesh", b.add_mesh({{"POSITION", pos}})}, {"extras", {{"luxel", {{"path", keys}}}}}});
+    const std::string path = b.write(dir, "path" + std::to_string(n++) + ".gltf");
+    expect_gltf_error(path, "extras.luxel.path key", [&] { load_gltf(path); });
+  }
+}
+
 }  // namespace
 }  // namespace luxel::scenes::test

@@ -295,6 +295,39 @@ TEST(SourceVertexLit, FoldedDirectionalLightIsExactForAxisNormals) {
   }
 }
 
+TEST(SourceVertexLit, ALightSplitBetweenASlotAndTheCubeKeepsItsEnergyOnTheAxes) {
+  // The frame's time averaging (frame/renderer.hpp) draws a light at s x its color and folds
+  // (1 - s) of it: for the six axis normals the sum is the light drawn whole, for any s.
+  for (bool hl : {true, false}) {
+    LightDesc d;
+    d.type = LightDesc::Type::directional;
+    d.direction = glm::normalize(glm::vec3(0.6f, -0.2f, -0.75f));
+    d.color = glm::vec3(0.9f, 0.5f, 0.3f);
+    constexpr VertexLitCombo kHL{2, false, false, false, false, true, true};
+    constexpr VertexLitCombo kL{2, false, false, false, false, false, true};
+    VertexLitParams whole;
+    whole.lights[0] = to_local_light(d);
+    for (float share : {0.25f, 0.7f}) {
+      VertexLitParams split;
+      LightDesc part = d;
+      part.color *= share;
+      split.lights[0] = to_local_light(part);
+      fold_light(split.ambient, d, glm::vec3(0.0f), hl, 1.0 - share);
+      AmbientCube once;
+      fold_light(once, d, glm::vec3(0.0f), hl);
+      for (int j = 0; j < 6; ++j) {
+        for (int k = 0; k < 3; ++k)
+          EXPECT_NEAR(split.ambient.color[j][k], (1.0f - share) * once.color[j][k], 1e-6f) << "a share folds that share";
+        float3<float> n(0.0f);
+        n[j / 2] = (j % 2 == 0) ? 1.0f : -1.0f;
+        const float4<float> a = hl ? shade<kHL>(split, float3<float>(0.0f), n) : shade<kL>(split, float3<float>(0.0f), n);
+        const float4<float> b = hl ? shade<kHL>(whole, float3<float>(0.0f), n) : shade<kL>(whole, float3<float>(0.0f), n);
+        for (int k = 0; k < 3; ++k) EXPECT_NEAR(a[k], b[k], 1e-5f) << "axis " << j << " share " << share;
+      }
+    }
+  }
+}
+
 TEST(SourceVertexLit, SignificanceRanksByDeliveredLuminance) {
   LightDesc near_dim, far_bright;
   near_dim.position = glm::vec3(1.0f, 0.0f, 0.0f);

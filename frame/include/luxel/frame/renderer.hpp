@@ -32,7 +32,7 @@
 //    refraction view (what lies below the plane, in the water's height fog, whose factor opaque
 //    materials write to alpha: the water's depth) are drawn into the frame's targets and
 //    resolved into 8-bit textures the size of the frame; the water surface then reads them,
-//    distorted by its normal map (scrolling with FrameSettings::path_time, else time 0), blended
+//    distorted by its normal map (scrolling with the scene's clock), blended
 //    by Fresnel, its reflect tint x 4. Reflection only when the material's reflect tint is not
 //    black, the refraction combo only when its refract amount is not 0. Neither view draws water;
 //    a scene without visible water draws no extra view. Water meshes must be horizontal planes
@@ -56,6 +56,21 @@
 // capture: the result does not depend on the order samples are baked in, nor on cubes attached
 // before); the background scaled by the exposure as the surfaces are (Source scales its clear
 // color by the tone-map scale, SOURCE_FACTS 6.3), so that every exposure sees the same radiance.
+// The scene's clock (FrameSettings::time, then Renderer::set_time): models move along their
+// paths (scenes/paths.hpp), the camera along the scene's camera path when asked
+// (FrameSettings::camera_path), the water's normal map scrolls. A sequence of frames is the same
+// renderer with its clock moved forward before each; a model's lighting is then time-averaged
+// across the frames, as Source averages it so that a model's light does not pop when it crosses
+// into another irradiance-volume cell or another light becomes one of its two (the engine's code
+// is closed, SOURCE_FACTS 12; the rule is luxel's): per model, the volume's ambient cube at its
+// centroid and, per scene light, its share s in [0, 1] of being drawn as one of the two local
+// lights (1 while the significance rule keeps it, 0 while it does not) are each moved towards
+// their value at the new time by 1 - exp(-dt / tau), tau = FrameSettings::lighting_time_constant,
+// dt the time since the last frame; the first frame, and any frame whose time is earlier than the
+// last, starts them at their values. The two lights with the largest shares (ties: the more
+// significant) are drawn as local lights at s x their color, and fold (1 - s) of themselves into
+// the cube; every other light folds wholly; the hero boost follows. A model at rest under
+// unchanging light is therefore lit exactly as without averaging.
 // Not drawn yet: water seen from below, cheap water, detail textures, env maps on models,
 // self-illumination; sky-family meshes (the sky is Scene::sky_texture).
 //
@@ -72,6 +87,7 @@
 #include <glm/mat4x4.hpp>
 #include <glm/vec4.hpp>
 
+#include <array>
 #include <memory>
 #include <cstdint>
 #include <optional>
@@ -93,7 +109,12 @@ struct FrameSettings {
   int height = 720;
   int samples = 4;
   int camera = 0;                   ///< index into Scene::cameras
-  std::optional<float> path_time = std::nullopt;  ///< set: the camera of Scene::camera_path at this time, seconds
+  /// The scene's clock at the first frame, seconds (Renderer::set_time moves it).
+  float time = 0.0f;
+  /// Look through Scene::camera_path at the clock's time instead of Scene::cameras[camera].
+  bool camera_path = false;
+  /// tau of the models' lighting averaging across frames (above), seconds; 0: no averaging.
+  float lighting_time_constant = 0.2f;
   /// The pixel-shader model the Source shaders are drawn as: ps_2_0, ps_2_b or ps_3_0.
   shading::ShaderModel model = shading::ShaderModel::ps_3_0;
   AmbientSampling ambient = AmbientSampling::nearest;
@@ -104,10 +125,20 @@ struct FrameSettings {
   /// Time each pass (Renderer::pass_times). The rasterizer then runs each pass over all tiles
   /// before the next instead of all passes tile by tile, so a timed frame is a little slower.
   bool time_passes = false;
-  /// Set: the frame looks through this camera, not `camera` nor `path_time` (a cube-map face).
+  /// Set: the frame looks through this camera, not `camera` nor the camera path (a cube-map face).
   std::optional<scenes::Camera> view = std::nullopt;
   /// Draw what a cube-map capture draws (above): the world and the sky, unfogged.
   bool cubemap_capture = false;
+};
+
+/// A model's lighting in the last frame, after the time averaging (above), before a material's
+/// folding and hero boost.
+struct ModelLightingState {
+  std::string model;                   ///< Scene::models[i].name
+  glm::vec3 centroid{0.0f};            ///< where its lighting was sampled: its centroid moved along its path
+  std::array<glm::vec3, 6> volume{};   ///< the averaged irradiance-volume cube, +X, -X, +Y, -Y, +Z, -Z
+  std::vector<float> light_shares;     ///< per scene light: its averaged share of being a local light
+  std::vector<int> local_lights;       ///< the scene lights drawn as its local lights (at most two), in slot order
 };
 
 /// One pass of the last frame and its wall time (FrameSettings::time_passes).
@@ -126,8 +157,8 @@ struct ShaderUse {
 };
 
 /// The camera a frame with these settings looks through (FrameSettings::view when set). Throws
-/// std::invalid_argument when the scene has no such camera (an index out of range, a path time
-/// without a path).
+/// std::invalid_argument when the scene has no such camera (an index out of range, a camera path
+/// asked of a scene without one).
 scenes::Camera frame_camera(const scenes::Scene& scene, const FrameSettings& settings);
 
 /// World (inches, +Z up) to Direct3D clip space for `camera` drawn into a width x height image
@@ -149,7 +180,11 @@ class Renderer {
   Renderer(Renderer&&) noexcept;
   Renderer& operator=(Renderer&&) noexcept;
 
-  /// Renders one frame and resolves it into image().
+  /// Moves the scene's clock to `seconds` (finite; else std::invalid_argument): the next frame
+  /// is drawn at that time, and the models' lighting averaging steps to it (above).
+  void set_time(float seconds);
+  float time() const;
+  /// Renders one frame at the clock's time and resolves it into image().
   void render(rasterizer::Context& ctx);
   const rasterizer::Image& image() const;
   /// Renders the frame as HDR_TYPE_FLOAT's float target holds it: per pixel, the linear color the
@@ -167,6 +202,8 @@ class Renderer {
   /// The last frame's passes in the order they ran, the ones the scene has; empty unless
   /// FrameSettings::time_passes.
   const std::vector<PassTime>& pass_times() const;
+  /// Per Scene::models entry, its lighting at the clock's time.
+  const std::vector<ModelLightingState>& model_lighting() const;
 
  private:
   struct State;

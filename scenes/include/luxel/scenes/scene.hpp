@@ -178,12 +178,19 @@ struct Mesh {
   uint32_t vertex_of_corner(size_t i) const;
 };
 
+/// A key of a model's path: at `time` seconds the model is moved by `offset` (paths.hpp).
+struct ModelKey {
+  float time = 0.0f;
+  glm::vec3 offset{0.0f};           ///< inches, added to its meshes' positions and its centroid
+};
+
 /// A VertexLitGeneric object: lighting (ambient cube, two most significant lights) is chosen per
 /// model from its centroid, so a model keeps its identity after flattening.
 struct Model {
   std::string name;
   std::vector<int> meshes;          ///< indices into Scene::meshes
   glm::vec3 centroid{0.0f};         ///< world space, where its lighting is sampled
+  std::vector<ModelKey> path;       ///< empty: the model stays where its meshes are
 };
 
 // --- Lights, camera, environment ----------------------------------------------------------------

@@ -85,31 +85,43 @@ struct FoldedLights {
   AmbientCube cube;             ///< the input cube plus the folded lights
 };
 
-/// Keeps the `keep` most significant lights and folds the others into `cube`.
-inline FoldedLights fold_lights(std::span<const LightDesc> lights, int keep, const glm::vec3& point,
-                                const AmbientCube& cube, bool half_lambert_term) {
+/// The lights' indices, the most significant at `point` first (ties: input order).
+inline std::vector<size_t> significance_order(std::span<const LightDesc> lights, const glm::vec3& point) {
   std::vector<size_t> order(lights.size());
   std::iota(order.begin(), order.end(), size_t{0});
   std::vector<double> sig(lights.size());
   for (size_t i = 0; i < lights.size(); ++i) sig[i] = light_significance(lights[i], point);
   std::stable_sort(order.begin(), order.end(), [&](size_t a, size_t b) { return sig[a] > sig[b]; });
+  return order;
+}
+
+/// Adds `weight` x light `d`, as seen at `point`, to the six sides of `cube` (the file comment).
+inline void fold_light(AmbientCube& cube, const LightDesc& d, const glm::vec3& point, bool half_lambert_term,
+                       double weight = 1.0) {
+  static const glm::dvec3 kAxes[6] = {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}};
+  glm::dvec3 l;
+  const glm::dvec3 intensity = light_at(d, point, l);
+  for (int j = 0; j < 6; ++j) {
+    const double c = glm::dot(kAxes[j], l);
+    const double h = std::clamp(0.5 * c + 0.5, 0.0, 1.0);
+    const double term = half_lambert_term ? h * h : std::clamp(c, 0.0, 1.0);
+    cube.color[static_cast<size_t>(j)] += glm::vec3(intensity * term * weight);
+  }
+}
+
+/// Keeps the `keep` most significant lights and folds the others into `cube`.
+inline FoldedLights fold_lights(std::span<const LightDesc> lights, int keep, const glm::vec3& point,
+                                const AmbientCube& cube, bool half_lambert_term) {
+  const std::vector<size_t> order = significance_order(lights, point);
   FoldedLights r;
   r.cube = cube;
-  static const glm::dvec3 kAxes[6] = {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}};
   for (size_t k = 0; k < order.size(); ++k) {
     const LightDesc& d = lights[order[k]];
     if (static_cast<int>(k) < keep) {
       r.kept.push_back(d);
       continue;
     }
-    glm::dvec3 l;
-    const glm::dvec3 intensity = light_at(d, point, l);
-    for (int j = 0; j < 6; ++j) {
-      const double c = glm::dot(kAxes[j], l);
-      const double h = std::clamp(0.5 * c + 0.5, 0.0, 1.0);
-      const double term = half_lambert_term ? h * h : std::clamp(c, 0.0, 1.0);
-      r.cube.color[static_cast<size_t>(j)] += glm::vec3(intensity * term);
-    }
+    fold_light(r.cube, d, point, half_lambert_term);
   }
   return r;
 }

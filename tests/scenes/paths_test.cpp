@@ -1,6 +1,7 @@
-// camera_at: a uniform Catmull-Rom spline through the keys, clamped at the ends.
+// camera_at: a uniform Catmull-Rom spline through the keys, clamped at the ends; model_offset:
+// linear between the keys, clamped at the ends.
 
-#include "luxel/scenes/camera_path.hpp"
+#include "luxel/scenes/paths.hpp"
 
 #include <gtest/gtest.h>
 
@@ -58,6 +59,44 @@ TEST(CameraPath, ClampsOutsideAndRefusesBadPaths) {
   std::vector<CameraKey> backwards = k;
   backwards[2].time = backwards[1].time;
   EXPECT_THROW(camera_at(backwards, 1.0f), std::invalid_argument);
+}
+
+TEST(ModelPath, LinearBetweenKeysHeldAtTheEnds) {
+  Model m;
+  m.name = "walker";
+  EXPECT_EQ(model_offset(m, 3.0f), glm::vec3(0.0f)) << "no path: no offset";
+  m.path = {{1.0f, {0, 0, 0}}, {3.0f, {40, -20, 8}}, {4.0f, {40, 0, 8}}};
+  EXPECT_EQ(model_offset(m, -5.0f), glm::vec3(0, 0, 0));
+  EXPECT_EQ(model_offset(m, 1.0f), glm::vec3(0, 0, 0));
+  EXPECT_EQ(model_offset(m, 3.0f), glm::vec3(40, -20, 8));
+  EXPECT_EQ(model_offset(m, 9.0f), glm::vec3(40, 0, 8));
+  const glm::vec3 a = model_offset(m, 1.5f);  // a quarter of the way from key 0 to key 1
+  EXPECT_FLOAT_EQ(a.x, 10.0f);
+  EXPECT_FLOAT_EQ(a.y, -5.0f);
+  EXPECT_FLOAT_EQ(a.z, 2.0f);
+  const glm::vec3 b = model_offset(m, 3.75f);  // three quarters from key 1 to key 2
+  EXPECT_FLOAT_EQ(b.y, -5.0f);
+  EXPECT_THROW(model_offset(m, NAN), std::invalid_argument);
+  m.path[2].time = 3.0f;
+  EXPECT_THROW(model_offset(m, 2.0f), std::invalid_argument);
+}
+
+TEST(ModelPath, ValidateRefusesBadKeys) {
+  Scene s;
+  s.name = "paths";
+  Mesh mesh;
+  mesh.positions = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}};
+  s.meshes = {mesh};
+  Model m;
+  m.name = "walker";
+  m.meshes = {0};
+  m.path = {{0.0f, {0, 0, 0}}, {1.0f, {1, 0, 0}}};
+  s.models = {m};
+  EXPECT_NO_THROW(validate(s));
+  s.models[0].path[1].offset.x = INFINITY;
+  EXPECT_THROW(validate(s), std::invalid_argument);
+  s.models[0].path[1] = {0.0f, {1, 0, 0}};
+  EXPECT_THROW(validate(s), std::invalid_argument);
 }
 
 }  // namespace
