@@ -626,10 +626,11 @@ Renderer& Renderer::operator=(Renderer&&) noexcept = default;
 
 void Renderer::render(Context& ctx) {
   State& st = *state_;
-  if (!st.views_current) build_views(st);
   ctx.reset_stats();
   st.pass_times.clear();
   PassClock clock(ctx, st.settings.time_passes ? &st.pass_times : nullptr);
+  // After the clock moved: the views' draws made anew on the CPU (a sequence pays it per frame).
+  if (!st.views_current) clock.run("views", 0, [&] { build_views(st); });
   if (st.water) st.water->render(ctx, st.color, st.depth, clock);  // the water's views first, into the same targets
   clear_color(ctx, st.color, st.clear);
   clear_depth(ctx, st.depth, 1.0f);  // as the peer: stencil neither cleared nor used

@@ -293,6 +293,13 @@ TEST(Renderer, TimesThePassesTheSceneHas) {
   EXPECT_EQ(timed.pass_times()[1].pass, "resolve");
   for (const PassTime& p : timed.pass_times()) EXPECT_GE(p.ms, 0.0);
   EXPECT_TRUE(timed.image().rgba == untimed.image().rgba);
+  // The clock moved: the views' draws are made anew first, a pass of their own.
+  timed.set_time(0.5f);
+  timed.render(ctx);
+  ASSERT_EQ(timed.pass_times().size(), 3u);
+  EXPECT_EQ(timed.pass_times()[0].pass, "views");
+  EXPECT_EQ(timed.pass_times()[1].pass, "opaque");
+  EXPECT_TRUE(timed.image().rgba == untimed.image().rgba);
 }
 
 TEST(Renderer, LinearWriteAndTheBackground) {

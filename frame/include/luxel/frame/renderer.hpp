@@ -143,7 +143,8 @@ struct ModelLightingState {
 
 /// One pass of the last frame and its wall time (FrameSettings::time_passes).
 struct PassTime {
-  std::string pass;  ///< "water reflection", "water refraction", "opaque", "sky", "translucent", "resolve"
+  std::string pass;  ///< "views" (the draws made anew after Renderer::set_time), "water reflection",
+                     ///< "water refraction", "opaque", "sky", "translucent", "resolve"
   double ms = 0.0;
   int draws = 0;
 };
