@@ -323,6 +323,57 @@ class Importer {
     return m;
   }
 
+  /// A translation animation moving a node and everything under it: the channel, the world
+  /// matrix of the animated node's parent, the node's own translation at rest.
+  struct Motion {
+    int channel = -1;
+    glm::dmat4 parent{1.0};
+    glm::dvec3 rest{0.0};
+  };
+
+  /// Per node, the channel of the first animation that animates its translation, or -1. Only
+  /// the first animation plays (a file's other clips are not read); rotation, scale and morph
+  /// weights are not read.
+  std::vector<int> translation_channels() const {
+    std::vector<int> of(model_.nodes.size(), -1);
+    if (model_.animations.empty()) return of;
+    const tinygltf::Animation& a = model_.animations[0];
+    for (size_t c = 0; c < a.channels.size(); ++c) {
+      const tinygltf::AnimationChannel& ch = a.channels[c];
+      if (ch.target_path != "translation") continue;
+      if (ch.target_node < 0 || size_t(ch.target_node) >= model_.nodes.size())
+        fail("animation 0 channel " + std::to_string(c) + " targets node " + std::to_string(ch.target_node));
+      if (of[size_t(ch.target_node)] < 0) of[size_t(ch.target_node)] = int(c);
+    }
+    return of;
+  }
+
+  /// The model path of a translation channel: its keys' times, each offset the animated
+  /// translation's change from rest, in world space. LINEAR is read exactly; STEP and CUBICSPLINE
+  /// as linear between their keys' values.
+  std::vector<ModelKey> animated_path(const Motion& motion, const std::string& node) const {
+    const tinygltf::Animation& a = model_.animations[0];
+    const tinygltf::AnimationChannel& ch = a.channels[size_t(motion.channel)];
+    const std::string where = node + ": animation 0 channel " + std::to_string(motion.channel);
+    if (ch.sampler < 0 || size_t(ch.sampler) >= a.samplers.size()) fail(where + " refers to sampler " + std::to_string(ch.sampler));
+    const tinygltf::AnimationSampler& sampler = a.samplers[size_t(ch.sampler)];
+    const gltf::Floats times = accessors_->attribute(sampler.input, {"input", {TINYGLTF_TYPE_SCALAR}}, where + " input");
+    const gltf::Floats values = accessors_->attribute(sampler.output, {"output", {TINYGLTF_TYPE_VEC3}}, where + " output");
+    const bool cubic = sampler.interpolation == "CUBICSPLINE";
+    if (values.count != times.count * (cubic ? 3 : 1))
+      fail(where + " has " + std::to_string(values.count) + " translations for " + std::to_string(times.count) + " times");
+    std::vector<ModelKey> keys;
+    for (size_t k = 0; k < times.count; ++k) {
+      const float t = *times.at(k);
+      if (!std::isfinite(t) || (k > 0 && !(t > keys.back().time))) fail(where + " key " + std::to_string(k) + " is not finite or not later than the one before");
+      const float* v = values.at(cubic ? 3 * k + 1 : k);  // a cubic key is (in-tangent, value, out-tangent)
+      const glm::dvec3 change = glm::dvec3(v[0], v[1], v[2]) - motion.rest;
+      keys.push_back({t, glm::vec3(motion.parent * glm::dvec4(change, 0.0))});
+      if (!finite(glm::dvec3(keys.back().offset))) fail(where + " key " + std::to_string(k) + " is not finite");
+    }
+    return keys;
+  }
+
   void walk_nodes() {
     std::vector<int> roots;
     if (!model_.scenes.empty()) {
@@ -340,10 +391,12 @@ class Importer {
         if (!child[i]) roots.push_back(int(i));
     }
     // Depth first, without recursion, each node at most once (a cycle or a shared child is an error).
-    struct Item { int node; glm::dmat4 parent; int depth; };  // placed: `parent` is the node's world matrix
+    // placed: `parent` is the node's world matrix; `motion` the translation animation that moves it.
+    struct Item { int node; glm::dmat4 parent; int depth; Motion motion; };
+    const std::vector<int> channel_of = translation_channels();
     std::vector<char> seen(model_.nodes.size(), 0);
     std::vector<Item> stack, placed;
-    for (auto it = roots.rbegin(); it != roots.rend(); ++it) stack.push_back({*it, gltf::gltf_to_source(), 1});
+    for (auto it = roots.rbegin(); it != roots.rend(); ++it) stack.push_back({*it, gltf::gltf_to_source(), 1, {}});
     while (!stack.empty()) {
       const Item item = stack.back();
       stack.pop_back();
@@ -354,8 +407,14 @@ class Importer {
       seen[size_t(item.node)] = 1;
       const tinygltf::Node& n = model_.nodes[size_t(item.node)];
       const glm::dmat4 world = item.parent * local_matrix(n, node_name(item.node));
-      placed.push_back({item.node, world, item.depth});
-      for (auto c = n.children.rbegin(); c != n.children.rend(); ++c) stack.push_back({*c, world, item.depth + 1});
+      Motion motion = item.motion;  // the nearest animated node's, itself included
+      if (const int c = channel_of[size_t(item.node)]; c >= 0) {
+        motion.channel = c;
+        motion.parent = item.parent;
+        motion.rest = n.translation.size() == 3 ? glm::dvec3(n.translation[0], n.translation[1], n.translation[2]) : glm::dvec3(0.0);
+      }
+      placed.push_back({item.node, world, item.depth, motion});
+      for (auto c = n.children.rbegin(); c != n.children.rend(); ++c) stack.push_back({*c, world, item.depth + 1, motion});
     }
     // Instancing multiplies vertices and triangles: the flattened totals are known, and refused,
     // before any is read.
@@ -373,7 +432,7 @@ class Importer {
     for (const Item& item : placed) {
       const tinygltf::Node& n = model_.nodes[size_t(item.node)];
       const std::string where = node_name(item.node);
-      if (n.mesh >= 0) add_mesh(n.mesh, item.parent, where, n.extras.Get("luxel"));
+      if (n.mesh >= 0) add_mesh(n.mesh, item.parent, where, n.extras.Get("luxel"), item.motion);
       if (n.camera >= 0) add_camera(n.camera, item.parent, where);
       if (auto it = n.extensions.find("KHR_lights_punctual"); it != n.extensions.end() && it->second.Get("light").IsNumber())
         add_light(it->second.Get("light").GetNumberAsInt(), item.parent, where);
@@ -412,7 +471,7 @@ class Importer {
   /// `luxel.centroid` (the node's extras, as luxel exports it) or else the mean of their vertices,
   /// and whose path is `luxel.path` ([{"time": s, "offset": [x, y, z]}...], offsets in the node's
   /// parent's units, as luxel exports it).
-  void add_mesh(int index, const glm::dmat4& world, const std::string& node, const tinygltf::Value& luxel) {
+  void add_mesh(int index, const glm::dmat4& world, const std::string& node, const tinygltf::Value& luxel, const Motion& motion) {
     if (size_t(index) >= model_.meshes.size()) fail(node + " refers to mesh " + std::to_string(index));
     const tinygltf::Mesh& m = model_.meshes[size_t(index)];
     Model model;
@@ -449,6 +508,7 @@ class Importer {
         if (!is_identity(world)) key.offset = glm::vec3(world * glm::dvec4(key.offset, 0.0));
         model.path.push_back(key);
       }
+      if (!path.IsArray() && motion.channel >= 0) model.path = animated_path(motion, node);
       scene_.models.push_back(std::move(model));
     }
   }

@@ -402,5 +402,52 @@ TEST(GltfImport, DefaultCameraFramesTheBoundsAndDefaultLightsShowThem) {
   EXPECT_EQ(load_gltf(b.write(dir, "lit.gltf")).lights.size(), 1u);
 }
 
+TEST(GltfImport, TranslationAnimationsMoveModels) {
+  // A parent node scaled x2 holding an animated child with a mesh: the child's translation goes
+  // from its rest (1, 0, 0) m to (1, 2, -3) m and back; its change, through the parent's scale and
+  // glTF's axes (x, y, z) m -> (x, -z, y) inches, is the model's path.
+  for (const char* interpolation : {"LINEAR", "CUBICSPLINE"}) {
+    TempDir dir;
+    GltfBuilder b;
+    const int pos = b.add_positions({0, 0, 0, 1, 0, 0, 0, 1, 0});
+    const int child = b.add_node({{"mesh", b.add_mesh({{"POSITION", pos}})}, {"translation", {1, 0, 0}}}, false);
+    b.add_node({{"children", {child}}, {"scale", {2, 2, 2}}});
+    const bool cubic = std::string(interpolation) == "CUBICSPLINE";
+    std::vector<float> values;
+    for (glm::vec3 v : {glm::vec3(1, 0, 0), glm::vec3(1, 2, -3), glm::vec3(1, 0, 0)}) {
+      if (cubic) values.insert(values.end(), {9, 9, 9});  // in-tangent, ignored
+      values.insert(values.end(), {v.x, v.y, v.z});
+      if (cubic) values.insert(values.end(), {9, 9, 9});  // out-tangent, ignored
+    }
+    const int times = b.add_floats({0.5f, 2.0f, 4.0f}, "SCALAR", 1);
+    const int translations = b.add_floats(values, "VEC3", 3);
+    b.doc["animations"] = json::array(
+        {{{"channels", json::array({{{"sampler", 0}, {"target", {{"node", child}, {"path", "translation"}}}}})},
+          {"samplers", json::array({{{"input", times}, {"output", translations}, {"interpolation", interpolation}}})}}});
+    const Scene s = load_gltf(b.write(dir, "walk.gltf"));
+    ASSERT_EQ(s.models.size(), 1u);
+    const std::vector<ModelKey>& path = s.models[0].path;
+    ASSERT_EQ(path.size(), 3u) << interpolation;
+    const float k = 2.0f / 0.0254f;  // the parent's scale, inches per meter
+    EXPECT_EQ(path[0].time, 0.5f);
+    EXPECT_EQ(path[2].time, 4.0f);
+    expect_near(path[0].offset, glm::vec3(0.0f), 1e-4f, "rest");
+    expect_near(path[1].offset, glm::vec3(0.0f, 3.0f * k, 2.0f * k), 1e-2f, "moved");
+    expect_near(path[2].offset, glm::vec3(0.0f), 1e-4f, "back");
+  }
+  // A channel whose times go back is one line naming it.
+  TempDir dir;
+  GltfBuilder b;
+  const int pos = b.add_positions({0, 0, 0, 1, 0, 0, 0, 1, 0});
+  const int node = b.add_node({{"mesh", b.add_mesh({{"POSITION", pos}})}});
+  const int times = b.add_floats({1.0f, 0.5f}, "SCALAR", 1);
+  const int translations = b.add_floats({0, 0, 0, 1, 1, 1}, "VEC3", 3);
+  b.doc["animations"] = json::array(
+      {{{"channels", json::array({{{"sampler", 0}, {"target", {{"node", node}, {"path", "translation"}}}}})},
+        {"samplers", json::array({{{"input", times}, {"output", translations}}})}}});
+  const std::string path = b.write(dir, "back.gltf");
+  expect_gltf_error(path, "animation 0 channel 0 key 1 is not finite or not later", [&] { load_gltf(path); });
+}
+
 }  // namespace
 }  // namespace luxel::scenes::test

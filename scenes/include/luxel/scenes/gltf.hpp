@@ -31,7 +31,14 @@
 // - Each node with a mesh becomes a Model (a VertexLitGeneric object) holding the meshes of its
 //   primitives whose material is VertexLitGeneric; its centroid is the node's
 //   extras.luxel.centroid (written by save_gltf) or else the mean of their world positions. Primitives with other families (LightmappedGeneric, Water, ...) are world geometry.
-// - Skins, morph targets and animations are ignored (the bind pose is drawn).
+// - A model's path (Model::path) is the node's extras.luxel.path ([{"time", "offset"}...], offsets
+//   in its parent's units, written by save_gltf), or else the translation channel of the file's
+//   first animation that moves the node or its nearest animated ancestor: per key, the change of
+//   that node's translation from its rest, taken to world space by its parent's matrix; LINEAR
+//   exactly, STEP and CUBICSPLINE as linear between their keys' values. World geometry does not
+//   move.
+// - Skins, morph targets, other animations and rotation or scale channels are ignored (the bind
+//   pose is drawn).
 //
 // ## Materials: glTF PBR -> Source
 //   baseColorTexture               -> base (sRGB), its texCoord and KHR_texture_transform
