@@ -219,7 +219,7 @@ WaterPasses::WaterPasses(const scenes::Scene& scene, const FrameSettings& settin
     const double spread = std::min(double(kSpread), 0.5 * (double(eye.z) - h));
     ViewSpec base = camera_view;
     base.water = false;
-    base.scissor = plane->pixels_read;
+    if (settings.water_view_scissor) base.scissor = plane->pixels_read;
     if (plane->reflect) {
       glm::dmat4 mirror(1.0);  // z -> 2h - z
       mirror[2][2] = -1.0;

@@ -6,7 +6,10 @@
 // Every material is unlit (no bake needed). The normal map is flat with alpha 0, so the
 // normal-map offsets vanish and each target is read at the pixel's own place.
 
+#include "frame/frame_support.hpp"
+
 #include "luxel/frame/renderer.hpp"
+#include "luxel/scenes/builtin.hpp"
 
 #include <gtest/gtest.h>
 
@@ -319,6 +322,31 @@ TEST(Water, SameBytesOnOneAndTwoThreads) {
   add_post(s, {0.8f, 0.3f, 0.1f});
   const rasterizer::Image one = render(s, settings(), 1), two = render(s, settings(), 2);
   EXPECT_EQ(one.rgba, two.rgba);
+}
+
+TEST(Water, TheViewsScissorChangesNoPixel) {
+  // The scissor keeps of each view only what the water can read (its rectangle on screen widened
+  // by the largest normal-map offset): drawing the whole views must give the same bytes, on the
+  // test scene (a flat normal map) and on the courtyard (a bumpy one).
+  WaterLook look;
+  scenes::Scene s = water_scene(look, {0.1f, 0.6f, 0.1f}, {0.1f, 0.1f, 0.6f});
+  add_ceiling(s, {0.9f, 0.7f, 0.5f});
+  add_post(s, {0.8f, 0.3f, 0.1f});
+  FrameSettings whole = settings();
+  whole.water_view_scissor = false;
+  EXPECT_EQ(render(s, settings(), 2).rgba, render(s, whole, 2).rgba);
+  scenes::Scene courtyard = scenes::make_builtin_scene("courtyard", {160, 90});
+  attach_test_bake(courtyard);
+  for (int camera : {0, 2}) {  // the overview, the fountain
+    FrameSettings scissored{160, 90, 4, camera};
+    FrameSettings unscissored = scissored;
+    unscissored.water_view_scissor = false;
+    Renderer a(courtyard, scissored), b(courtyard, unscissored);
+    rasterizer::Context ctx(2);
+    a.render(ctx);
+    b.render(ctx);
+    EXPECT_EQ(a.image().rgba, b.image().rgba) << "camera " << camera;
+  }
 }
 
 uint64_t triangles(const scenes::Scene& s, const FrameSettings& f, std::vector<ShaderUse>* uses = nullptr) {

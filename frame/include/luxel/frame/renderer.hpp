@@ -129,6 +129,9 @@ struct FrameSettings {
   std::optional<scenes::Camera> view = std::nullopt;
   /// Draw what a cube-map capture draws (above): the world and the sky, unfogged.
   bool cubemap_capture = false;
+  /// Scissor the water's views to what the water can read of them (water_passes.hpp); off, they
+  /// draw the whole frame: slower, and the same bytes (tested), like the rasterizer's fast paths.
+  bool water_view_scissor = true;
 };
 
 /// A model's lighting in the last frame, after the time averaging (above), before a material's
