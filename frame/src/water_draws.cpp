@@ -9,18 +9,19 @@ namespace {
 using namespace shading::source;
 
 /// Seen from above (the frame draws no water from below, water_passes.hpp): reflection,
-/// refraction or both, with or without MULTITEXTURE; unfogged, each model's range fog or height
-/// fog. No BLURRY: scenes have no $blurrefract.
+/// refraction or both, with or without MULTITEXTURE, with or without BLURRY ($blurrefract, where
+/// it refracts); unfogged, each model's range fog or height fog.
 constexpr auto kAll = [] {
-  detail::ComboList<WaterCombo, 32> l;
+  detail::ComboList<WaterCombo, 64> l;
   for (auto [reflect, refract] : {std::pair{true, true}, std::pair{true, false}, std::pair{false, true}})
     for (bool multitexture : {false, true})
-      for (Fog fog : {Fog::none, Fog::range, Fog::vertex_range, Fog::height}) {
-        const WaterCombo c{reflect, refract, true, multitexture, false, fog};
-        bool on_some_model = false;
-        for (shading::ShaderModel m : kPixelModels) on_some_model = on_some_model || c.valid(m);
-        if (on_some_model) l.add(c);
-      }
+      for (bool blurry : {false, true})
+        for (Fog fog : {Fog::none, Fog::range, Fog::vertex_range, Fog::height}) {
+          const WaterCombo c{reflect, refract, true, multitexture, blurry, fog};
+          bool on_some_model = false;
+          for (shading::ShaderModel m : kPixelModels) on_some_model = on_some_model || c.valid(m);
+          if (on_some_model) l.add(c);
+        }
   return l;
 }();
 constexpr auto kSpace = detail::compact<kAll>();

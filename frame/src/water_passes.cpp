@@ -112,7 +112,9 @@ double largest_offset(const scenes::Material& m, const scenes::Texture& normal_m
     }
   }
   const double amount = std::max(std::abs(double(m.reflect_amount)), std::abs(double(m.refract_amount)));
-  return (xy + 0.02) * alpha * amount;
+  // The blurred refraction reads 5 x 5 taps 0.005 apart around its lookup (water.hpp).
+  const double blur = m.water_blur_refract ? 2 * 0.005 : 0.0;
+  return (xy + 0.02) * alpha * amount + blur;
 }
 
 /// The pixels of a width x height frame that `mesh` covers through `vp`, widened by `margin`
@@ -285,6 +287,8 @@ std::optional<SourceDraw> WaterPasses::surface_draw(size_t index, const scenes::
   combo.refract = m.refract_amount != 0.0f;
   combo.above_water = true;
   combo.multitexture = m.water_scroll != glm::vec2(0.0f);
+  // Valve's helper asks for BLURRY only where it exists (ps_2_b and up) and the water refracts.
+  combo.blurry_refract = m.water_blur_refract && combo.refract && settings_.model != shading::ShaderModel::ps_2_0;
   combo.fog = frame.fog;
   WaterParams p = water_constants(water_material(m), HdrType::integer, frame.tonemap);
   p.refraction = Sampler2D{0, &plane.refraction_texture->texture, plane.refraction_texture->sampler};

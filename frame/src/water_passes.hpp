@@ -21,7 +21,8 @@
 // Neither view draws water, nor any pixel the water cannot read: each view is scissored to the
 // screen rectangle of its plane's meshes, widened by the largest offset their normal maps can
 // add to a lookup (|2 texel - 1| x alpha x the larger of $reflectamount and $refractamount, the
-// depth being at most 1), plus a texel for the bilinear read. The clip plane sits 2 inches past the water plane into the kept side
+// depth being at most 1), plus the reach of $blurrefract's 5 x 5 taps (2 x 0.005 of the view) where
+// the material asks for it, plus a texel for the bilinear read. The clip plane sits 2 inches past the water plane into the kept side
 // (CBaseWorldView::PushView's "spread", which hides seams at the waterline; less when the eye is
 // closer than that), and is the projection's near plane (Lengyel's oblique near plane): the
 // rasterizer clips at z = 0, so nothing of the rasterizer changes. Fog reads the view's ordinary

@@ -40,6 +40,7 @@ constexpr BoolKey kBools[] = {
     {"rimlight", &Material::rim},        {"rimmask", &Material::rim_mask},
     {"halflambert", &Material::half_lambert}, {"selfillum", &Material::self_illum},
     {"translucent", &Material::translucent},  {"nocull", &Material::double_sided},
+    {"blurrefract", &Material::water_blur_refract},
 };
 constexpr TextureKey kTextures[] = {
     {"basetexture", &Material::base, ColorSpace::srgb},

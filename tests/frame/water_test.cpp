@@ -349,6 +349,40 @@ TEST(Water, TheViewsScissorChangesNoPixel) {
   }
 }
 
+TEST(Water, BlurredRefractionWhereTheModelHasIt) {
+  // $blurrefract: ps_2_b and ps_3_0 draw the BLURRY combo (25 taps of the refraction, with the
+  // SDK's overbright), ps_2_0 has none and draws the sharp one; the views' scissor reaches as far
+  // as the taps.
+  WaterLook look;
+  scenes::Scene sharp = water_scene(look, {0.1f, 0.6f, 0.1f}, {0.1f, 0.1f, 0.6f});
+  add_ceiling(sharp, {0.9f, 0.7f, 0.5f});
+  add_post(sharp, {0.8f, 0.3f, 0.1f});
+  scenes::Scene blurred = sharp;
+  int water = 0;
+  for (scenes::Material& m : blurred.materials)
+    if (m.family == scenes::ShaderFamily::water) m.water_blur_refract = true, ++water;
+  ASSERT_EQ(water, 1);
+  auto as = [](shading::ShaderModel model) {
+    FrameSettings f = settings();
+    f.model = model;
+    return f;
+  };
+  EXPECT_EQ(render(sharp, as(shading::ShaderModel::ps_2_0)).rgba, render(blurred, as(shading::ShaderModel::ps_2_0)).rgba);
+  const rasterizer::Image b2b = render(blurred, as(shading::ShaderModel::ps_2_b));
+  EXPECT_NE(render(sharp, as(shading::ShaderModel::ps_2_b)).rgba, b2b.rgba);
+  EXPECT_EQ(b2b.rgba, render(blurred, as(shading::ShaderModel::ps_3_0)).rgba);
+  FrameSettings whole = as(shading::ShaderModel::ps_3_0);
+  whole.water_view_scissor = false;
+  EXPECT_EQ(b2b.rgba, render(blurred, whole).rgba);
+  std::vector<ShaderUse> uses;
+  Renderer r(blurred, [&] { FrameSettings f = as(shading::ShaderModel::ps_3_0); f.count_shading = true; return f; }());
+  rasterizer::Context ctx(2);
+  r.render(ctx);
+  bool blurry = false;
+  for (const ShaderUse& u : r.shader_uses()) blurry = blurry || (u.family == "Water" && u.combo.find("+blurry") != std::string::npos);
+  EXPECT_TRUE(blurry);
+}
+
 uint64_t triangles(const scenes::Scene& s, const FrameSettings& f, std::vector<ShaderUse>* uses = nullptr) {
   Renderer r(s, f);
   rasterizer::Context ctx(2);

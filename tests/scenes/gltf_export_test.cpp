@@ -104,6 +104,7 @@ void expect_same_materials(const Scene& a, const Scene& b, const std::string& wh
     EXPECT_EQ(x.translucent, y.translucent) << w;
     EXPECT_EQ(x.double_sided, y.double_sided) << w;
     EXPECT_EQ(x.water_scroll, y.water_scroll) << w;
+    EXPECT_EQ(x.water_blur_refract, y.water_blur_refract) << w;
     EXPECT_EQ(x.reflect_amount, y.reflect_amount) << w;
     EXPECT_EQ(x.water_fog_color, y.water_fog_color) << w;
   }
@@ -167,6 +168,7 @@ Scene hand_built() {
   water.name = "water";
   water.family = ShaderFamily::water;
   water.water_scroll = {0.01f, -0.02f}, water.reflect_amount = 0.3f, water.water_fog_color = {0.1f, 0.2f, 0.3f};
+  water.water_blur_refract = true;
   water.alpha = AlphaMode::blend, water.translucent = true;
   s.materials.push_back(water);
 

@@ -33,8 +33,10 @@
 //    materials write to alpha: the water's depth) are drawn into the frame's targets and
 //    resolved into 8-bit textures the size of the frame; the water surface then reads them,
 //    distorted by its normal map (scrolling with the scene's clock), blended
-//    by Fresnel, its reflect tint x 4. Reflection only when the material's reflect tint is not
-//    black, the refraction combo only when its refract amount is not 0. Neither view draws water;
+//    by Fresnel, its reflect tint x 4; the refraction blurred (25 taps) where the material asks
+//    ($blurrefract) and the model has the combo (ps_2_b, ps_3_0). Reflection only when the
+//    material's reflect tint is not black, the refraction combo only when its refract amount is
+//    not 0. Neither view draws water;
 //    a scene without visible water draws no extra view. Water meshes must be horizontal planes
 //    with a normal map; water at or above the eye is not drawn (frame/src/water_passes.hpp).
 //  - Fog: the scene's range fog on every shader, the combo each model draws it with (ps_2_0: the

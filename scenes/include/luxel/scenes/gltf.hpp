@@ -69,7 +69,7 @@
 //   selfillum, selfillumtint [3], emissive [3],
 //   alphatestreference, translucent, nocull (alpha test and blending themselves are glTF's alphaMode),
 //   scroll1 [2], reflectamount, refractamount, reflecttint [3], refracttint [3],
-//   fogcolor [3], fogstart, fogend (Water).
+//   fogcolor [3], fogstart, fogend, blurrefract (Water).
 // Export writes every one of them, so a re-import gives the same Source material.
 //
 // ## The scene's own Source data: the glTF scene's extras.luxel

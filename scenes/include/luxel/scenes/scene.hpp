@@ -145,6 +145,7 @@ struct Material {
   // Water.
   TextureRef water_normal;          ///< $normalmap
   glm::vec2 water_scroll{0.0f};     ///< $scroll1 (uv per second); nonzero = the multitexture combo
+  bool water_blur_refract = false;  ///< $blurrefract: the refraction blurred (25 taps), ps_2_b and up
   float reflect_amount = 0.8f, refract_amount = 0.0f;
   glm::vec3 reflect_tint{1.0f}, refract_tint{1.0f};
   glm::vec3 water_fog_color{0.0f};
