@@ -11,6 +11,7 @@
 
 #include <cstdint>
 #include <cstdio>
+#include <string>
 #include <vector>
 
 namespace luxel::frame {
@@ -59,13 +60,19 @@ FrameSettings as_model(FrameSettings s, shading::ShaderModel model) {
   return s;
 }
 
-TEST(FrameDeterminism, EveryBuiltinSceneAsEveryModel) {
-  for (const std::string& name : scenes::builtin_scene_names())
-    for (shading::ShaderModel model : kModels) {
-      SCOPED_TRACE(name + " as " + std::string(shading::caps(model).name));
-      check(name, as_model({kReduced ? 64 : 120, kReduced ? 40 : 72, 4}, model));
-    }
+// One test per scene, so that gtest's shards (tests/CMakeLists.txt) share them out.
+class FrameDeterminismOfScene : public testing::TestWithParam<std::string> {};
+
+TEST_P(FrameDeterminismOfScene, AsEveryModel) {
+  const std::string& name = GetParam();
+  for (shading::ShaderModel model : kModels) {
+    SCOPED_TRACE(name + " as " + std::string(shading::caps(model).name));
+    check(name, as_model({kReduced ? 64 : 120, kReduced ? 40 : 72, 4}, model));
+  }
 }
+
+INSTANTIATE_TEST_SUITE_P(Builtin, FrameDeterminismOfScene, testing::ValuesIn(scenes::builtin_scene_names()),
+                         [](const testing::TestParamInfo<std::string>& info) { return info.param; });
 
 // FNV-1a, 64 bits, of the image bytes: a hash a reader can recompute with a few lines of anything.
 uint64_t fnv1a(const std::vector<uint8_t>& bytes) {
