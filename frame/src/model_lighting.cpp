@@ -90,10 +90,9 @@ void step_towards(AveragedLighting& averaged, const AveragedLighting& target, fl
   for (size_t i = 0; i < target.shares.size(); ++i) averaged.shares[i] += (target.shares[i] - averaged.shares[i]) * a;
 }
 
-std::array<int, 2> local_light_slots(std::span<const LightDesc> lights, const glm::vec3& centroid, std::span<const float> shares) {
-  const std::vector<size_t> order = shading::source::significance_order(lights, centroid);
+std::array<int, 2> local_light_slots(std::span<const size_t> significance, std::span<const float> shares) {
   std::vector<size_t> by_share;
-  for (size_t i : order)
+  for (size_t i : significance)
     if (i < shares.size() && shares[i] > 0.0f) by_share.push_back(i);
   std::stable_sort(by_share.begin(), by_share.end(), [&](size_t a, size_t b) { return shares[a] > shares[b]; });
   std::array<int, 2> slots{-1, -1};
@@ -105,11 +104,12 @@ ModelLighting light_model(std::span<const LightDesc> lights, const glm::vec3& ce
                           const AveragedLighting& averaged) {
   const bool half_lambert = material.half_lambert || material.phong;
   ModelLighting m;
-  m.local = local_light_slots(lights, centroid, averaged.shares);
+  const std::vector<size_t> significance = shading::source::significance_order(lights, centroid);
+  m.local = local_light_slots(significance, averaged.shares);
   // A local light at s x its color folds (1 - s) of itself; every other light folds wholly, in
   // the order of significance (the order fold_lights adds them in).
   shading::source::AmbientCube cube = averaged.volume;
-  for (size_t i : shading::source::significance_order(lights, centroid)) {
+  for (size_t i : significance) {
     const bool local = static_cast<int>(i) == m.local[0] || static_cast<int>(i) == m.local[1];
     const double weight = local ? 1.0 - double(averaged.shares[i]) : 1.0;
     if (weight > 0.0) shading::source::fold_light(cube, lights[i], centroid, half_lambert, weight);

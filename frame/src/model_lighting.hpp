@@ -54,10 +54,9 @@ AveragedLighting lighting_at(const scenes::Scene& scene, std::span<const shading
 /// tau <= 0, or a negative dt (the clock went back): `target` itself.
 void step_towards(AveragedLighting& averaged, const AveragedLighting& target, float dt, float tau);
 
-/// The local-light slots for `shares` at `centroid`: the two largest shares above 0, ties to the
-/// more significant light.
-std::array<int, 2> local_light_slots(std::span<const shading::source::LightDesc> lights, const glm::vec3& centroid,
-                                     std::span<const float> shares);
+/// The local-light slots for `shares`: the two largest shares above 0, ties to the earlier light
+/// in `significance` (light_folding.hpp's significance_order at the model's centroid).
+std::array<int, 2> local_light_slots(std::span<const size_t> significance, std::span<const float> shares);
 
 /// The shader's lighting of a model drawn with `material`, from its averaged lighting.
 ModelLighting light_model(std::span<const shading::source::LightDesc> lights, const glm::vec3& centroid,

@@ -563,7 +563,7 @@ void move_models(FrameState& st, float dt) {
     state.volume = st.model_lighting[i].volume.color;
     state.light_shares = st.model_lighting[i].shares;
     state.local_lights.clear();
-    for (int l : local_light_slots(lights, centroid, st.model_lighting[i].shares))
+    for (int l : local_light_slots(shading::source::significance_order(lights, centroid), st.model_lighting[i].shares))
       if (l >= 0) state.local_lights.push_back(l);
   }
   st.views_current = false;

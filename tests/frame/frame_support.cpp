@@ -4,6 +4,8 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
 #include <map>
 #include <mutex>
 #include <string>
@@ -24,6 +26,11 @@ bake::BakeSettings test_bake_settings() {
 }
 
 }  // namespace
+
+double srgb_encode(double linear) {
+  linear = std::clamp(linear, 0.0, 1.0);
+  return linear <= 0.0031308 ? 12.92 * linear : 1.055 * std::pow(linear, 1 / 2.4) - 0.055;
+}
 
 void attach_test_bake(scenes::Scene& scene) {
   static std::mutex mutex;

@@ -13,6 +13,9 @@ struct RenderedFrame {
   rasterizer::DrawStats stats;
 };
 
+/// The sRGB encode (IEC 61966-2-1), written out here so that tests check the frame's against it.
+double srgb_encode(double linear);
+
 /// Attaches a cheap, deterministic bake (lightmaps, ambient cubes) to `scene`, baked once per
 /// scene name and test binary.
 void attach_test_bake(scenes::Scene& scene);

@@ -3,6 +3,8 @@
 // keeps, their cross-fade when the rule changes its choice, and a model at rest lit exactly as
 // without averaging.
 
+#include "frame/frame_support.hpp"
+
 #include "luxel/frame/renderer.hpp"
 
 #include <gtest/gtest.h>
@@ -18,10 +20,6 @@ namespace {
 constexpr int kSize = 32;
 constexpr float kFps = 30.0f;
 
-double encode(double linear) {  // IEC 61966-2-1
-  linear = std::clamp(linear, 0.0, 1.0);
-  return linear <= 0.0031308 ? 12.92 * linear : 1.055 * std::pow(linear, 1 / 2.4) - 0.055;
-}
 
 /// A 2 x 2 square at the origin facing +Z, filling the view of an orthographic camera above it,
 /// and a two-sample irradiance volume along X whose +Z sides differ: dark at x = 0, bright at
@@ -63,14 +61,20 @@ scenes::Scene walker_scene() {
   return s;
 }
 
-/// Makes the square a model that moves from the dark sample to the bright one between t = 1 and
-/// t = 1.01.
-void add_jump(scenes::Scene& s) {
+/// The square as a model, its centroid at `centroid`, moving along `path`.
+scenes::Model walker(glm::vec3 centroid = glm::vec3(0.0f), std::vector<scenes::ModelKey> path = {}) {
   scenes::Model model;
   model.name = "walker";
   model.meshes = {0};
-  model.path = {{1.0f, glm::vec3(0.0f)}, {1.01f, glm::vec3(100.0f, 0.0f, 0.0f)}};
-  s.models = {model};
+  model.centroid = centroid;
+  model.path = std::move(path);
+  return model;
+}
+
+/// Makes the square a model that moves from the dark sample to the bright one between t = 1 and
+/// t = 1.01.
+void add_jump(scenes::Scene& s) {
+  s.models = {walker(glm::vec3(0.0f), {{1.0f, glm::vec3(0.0f)}, {1.01f, glm::vec3(100.0f, 0.0f, 0.0f)}})};
 }
 
 TEST(ModelMotion, AmbientFollowsTheDocumentedTimeConstant) {
@@ -105,11 +109,7 @@ TEST(ModelMotion, TheAveragedAmbientReachesThePixels) {
   // The square walks from the dark sample into the bright one at once (t = 0 to 0.01), where the
   // camera looks.
   scenes::Scene s = walker_scene();
-  scenes::Model model;
-  model.name = "walker";
-  model.meshes = {0};
-  model.path = {{0.0f, glm::vec3(0.0f)}, {0.01f, glm::vec3(100.0f, 0.0f, 0.0f)}};
-  s.models = {model};
+  s.models = {walker(glm::vec3(0.0f), {{0.0f, glm::vec3(0.0f)}, {0.01f, glm::vec3(100.0f, 0.0f, 0.0f)}})};
   s.cameras[0].position = {100, 0, 10};
   s.cameras[0].target = {100, 0, 0};
   FrameSettings f{kSize, kSize, 1};
@@ -120,7 +120,7 @@ TEST(ModelMotion, TheAveragedAmbientReachesThePixels) {
   const glm::vec3 dark = s.irradiance_volume->cubes[0][4], bright = s.irradiance_volume->cubes[1][4];
   settled.render(ctx);
   for (int c = 0; c < 3; ++c)
-    EXPECT_NEAR(settled.image().pixel(kSize / 2, kSize / 2)[c], 255 * encode(albedo[c] * bright[c]), 1.0);
+    EXPECT_NEAR(settled.image().pixel(kSize / 2, kSize / 2)[c], 255 * srgb_encode(albedo[c] * bright[c]), 1.0);
   f.time = 0.0f;
   Renderer walking(s, f);  // starts dark (off screen)
   for (int n = 1; n <= 6; ++n) walking.set_time(static_cast<float>(n) / kFps);
@@ -129,9 +129,9 @@ TEST(ModelMotion, TheAveragedAmbientReachesThePixels) {
   const double remaining = std::exp(-(6.0 / kFps) / 0.2);
   int differs = 0;
   for (int c = 0; c < 3; ++c) {
-    const double expected = 255 * encode(albedo[c] * (bright[c] + (dark[c] - bright[c]) * remaining));
+    const double expected = 255 * srgb_encode(albedo[c] * (bright[c] + (dark[c] - bright[c]) * remaining));
     EXPECT_NEAR(walking.image().pixel(kSize / 2, kSize / 2)[c], expected, 1.0) << c;
-    differs += std::abs(expected - 255 * encode(albedo[c] * bright[c])) > 3.0;
+    differs += std::abs(expected - 255 * srgb_encode(albedo[c] * bright[c])) > 3.0;
   }
   EXPECT_GT(differs, 0) << "the averaging must be visible for the test to mean anything";
 }
@@ -164,14 +164,10 @@ TEST(ModelMotion, TheTwoLocalLightsAreTheTwoTheRulePicks) {
   scenes::Scene s = walker_scene();
   s.irradiance_volume.reset();
   s.lights = four_lights();
-  scenes::Model model;
-  model.name = "walker";
-  model.meshes = {0};
-  model.centroid = {0.5f, -0.25f, 0.0f};
-  s.models = {model};
+  s.models = {walker(glm::vec3{0.5f, -0.25f, 0.0f})};
   std::vector<int> order = {0, 1, 2, 3};
   std::stable_sort(order.begin(), order.end(),
-                   [&](int a, int b) { return delivered(s.lights[a], model.centroid) > delivered(s.lights[b], model.centroid); });
+                   [&](int a, int b) { return delivered(s.lights[a], s.models[0].centroid) > delivered(s.lights[b], s.models[0].centroid); });
   Renderer r(s, {kSize, kSize, 1});
   const ModelLightingState& state = r.model_lighting().at(0);
   ASSERT_EQ(state.local_lights.size(), 2u);
@@ -193,12 +189,7 @@ TEST(ModelMotion, LocalLightsCrossFadeWhenTheRuleChangesItsChoice) {
     return l;
   };
   s.lights = {point({-50, 0, 5}, 400), point({0, 0, 400}, 5e4f), point({50, 0, 5}, 400)};  // A, B (overhead), C
-  scenes::Model model;
-  model.name = "walker";
-  model.meshes = {0};
-  model.centroid = {-45, 0, 0};
-  model.path = {{0.0f, glm::vec3(0.0f)}, {0.01f, glm::vec3(90, 0, 0)}};
-  s.models = {model};
+  s.models = {walker(glm::vec3{-45, 0, 0}, {{0.0f, glm::vec3(0.0f)}, {0.01f, glm::vec3(90, 0, 0)}})};
   Renderer r(s, {kSize, kSize, 1});
   ASSERT_EQ(r.model_lighting()[0].local_lights, (std::vector<int>{0, 1}));
   for (int n = 1; n <= 12; ++n) {
@@ -219,11 +210,7 @@ TEST(ModelMotion, LocalLightsCrossFadeWhenTheRuleChangesItsChoice) {
 TEST(ModelMotion, AModelAtRestIsLitAsWithoutAveraging) {
   scenes::Scene s = walker_scene();
   s.lights = four_lights();
-  scenes::Model model;
-  model.name = "walker";
-  model.meshes = {0};
-  model.centroid = {20, 0, 0};
-  s.models = {model};
+  s.models = {walker(glm::vec3{20, 0, 0})};
   FrameSettings no_averaging{kSize, kSize, 4};
   no_averaging.lighting_time_constant = 0.0f;
   rasterizer::Context ctx(2);
@@ -240,11 +227,7 @@ TEST(ModelMotion, AModelAtRestIsLitAsWithoutAveraging) {
 TEST(ModelMotion, MovingModelsMoveOnScreenAndSequencesRepeat) {
   scenes::Scene s = walker_scene();
   s.lights = four_lights();
-  scenes::Model model;
-  model.name = "walker";
-  model.meshes = {0};
-  model.path = {{0.0f, glm::vec3(0.0f)}, {1.0f, glm::vec3(0.5f, 0.0f, 0.0f)}};
-  s.models = {model};
+  s.models = {walker(glm::vec3(0.0f), {{0.0f, glm::vec3(0.0f)}, {1.0f, glm::vec3(0.5f, 0.0f, 0.0f)}})};
   auto sequence = [&](int threads) {
     Renderer r(s, {kSize, kSize, 4});
     rasterizer::Context ctx(threads);

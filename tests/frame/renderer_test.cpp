@@ -3,6 +3,8 @@
 // a light and lightmaps, what differs per shader model, $linearwrite, the background, culling
 // and depth order.
 
+#include "frame/frame_support.hpp"
+
 #include "luxel/frame/renderer.hpp"
 
 #include <gtest/gtest.h>
@@ -17,11 +19,6 @@ namespace {
 
 constexpr int kSize = 32;
 
-/// The sRGB encode (IEC 61966-2-1), written out here.
-double encode(double linear) {
-  linear = std::clamp(linear, 0.0, 1.0);
-  return linear <= 0.0031308 ? 12.92 * linear : 1.055 * std::pow(linear, 1 / 2.4) - 0.055;
-}
 
 /// A camera looking straight down at [-1, 1]^2 (screen right +X, up +Y).
 scenes::Scene top_down() {
@@ -120,7 +117,7 @@ TEST(Renderer, VertexLitTakesTheAmbientCubeAndTheLight) {
     const double term = half_lambert ? 0.9 * 0.9 : 0.8;
     const double albedo[3] = {0.8, 0.6, 0.4}, cube[3] = {0.5, 0.25, 0.125}, light[3] = {0.5, 0.375, 0.25};
     double expected[3];
-    for (int c = 0; c < 3; ++c) expected[c] = 255 * encode(albedo[c] * (cube[c] + light[c] * term));
+    for (int c = 0; c < 3; ++c) expected[c] = 255 * srgb_encode(albedo[c] * (cube[c] + light[c] * term));
     const scenes::Scene s = lit_by_cube_and_sun(half_lambert);
     expect_everywhere(render_as(s, shading::ShaderModel::ps_3_0), 0, kSize, expected, "ps_3_0");
     expect_everywhere(render_as(s, shading::ShaderModel::ps_2_b), 0, kSize, expected, "ps_2_b");
@@ -152,13 +149,13 @@ TEST(Renderer, AmbientFromTheNearestSampleOrTrilinear) {
   const auto side = [](int x, int y, int z, int c) { return c == 0 ? 0.1 + 0.3 * x : c == 1 ? 0.05 + 0.2 * y : 0.1 + 0.5 * z; };
   double nearest[3], trilinear[3];
   for (int c = 0; c < 3; ++c) {
-    nearest[c] = 255 * encode(albedo[c] * side(0, 1, 0, c));
+    nearest[c] = 255 * srgb_encode(albedo[c] * side(0, 1, 0, c));
     double sum = 0;
     for (int z = 0; z < 2; ++z)
       for (int y = 0; y < 2; ++y)
         for (int x = 0; x < 2; ++x)
           sum += (x ? g[0] : 1 - g[0]) * (y ? g[1] : 1 - g[1]) * (z ? g[2] : 1 - g[2]) * side(x, y, z, c);
-    trilinear[c] = 255 * encode(albedo[c] * sum);
+    trilinear[c] = 255 * srgb_encode(albedo[c] * sum);
   }
   expect_everywhere(render(s), 0, kSize, nearest, "nearest sample");
   FrameSettings f{kSize, kSize, 4};
@@ -247,10 +244,10 @@ TEST(Renderer, LightmappedReadsTheFlatMapOrWeighsTheBasisMaps) {
   const double tint[3] = {0.5, 1.0, 0.8}, flat_light[3] = {0.2, 0.4, 0.6};
   double expected_flat[3], expected_bump[3];
   for (int c = 0; c < 3; ++c) {
-    expected_flat[c] = 255 * encode(tint[c] * flat_light[c]);
+    expected_flat[c] = 255 * srgb_encode(tint[c] * flat_light[c]);
     double weighted = 0;
     for (int i = 0; i < 3; ++i) weighted += d[i] * basis[i][c];
-    expected_bump[c] = 255 * encode(tint[c] * weighted / sum);
+    expected_bump[c] = 255 * srgb_encode(tint[c] * weighted / sum);
   }
   const rasterizer::Image image30 = render_as(s, shading::ShaderModel::ps_3_0);
   expect_everywhere(image30, 0, kSize / 2, expected_flat, "flat lightmap");
@@ -314,7 +311,7 @@ TEST(Renderer, LinearWriteAndTheBackground) {
   s.meshes[0].colors.assign(4, {0.6f, 0.3f, 0.1f, 1.0f});
   const rasterizer::Image image = render(s);
   expect_everywhere(image, 0, kSize / 2, {255 * 0.3, 255 * 0.3, 255 * 0.1}, "written as it is");
-  expect_everywhere(image, kSize / 2, kSize, {255 * encode(0.2), 255 * encode(0.05), 255 * encode(0.6)},
+  expect_everywhere(image, kSize / 2, kSize, {255 * srgb_encode(0.2), 255 * srgb_encode(0.05), 255 * srgb_encode(0.6)},
                     "the background, encoded");
 }
 
