@@ -1,0 +1,41 @@
+#include "luxel/postfx/histogram_buckets.hpp"
+
+#include <array>
+#include <cmath>
+
+namespace luxel::postfx {
+namespace {
+
+constexpr HistogramBucket kCalibration{0.0f, 100000.0f};
+
+std::array<HistogramBucket, 17> percentile_buckets() {
+  std::array<HistogramBucket, 17> b{};
+  for (int i = 0; i < 16; ++i) b[i] = {std::pow(i / 16.0f, 1.5f), std::pow((i + 1) / 16.0f, 1.5f)};
+  b[16] = kCalibration;
+  return b;
+}
+
+// The SDK's float expression: -0.01 + exp(ln(0.01) + (ln(1.01) - ln(0.01)) * t), in float.
+float log_bound(int i) {
+  const float lo = std::log(0.01f), hi = std::log(1.01f);
+  const float t = float(i) / 30.0f;
+  return -0.01f + std::exp(lo + (hi - lo) * t);
+}
+
+std::array<HistogramBucket, 31> mean_buckets() {
+  std::array<HistogramBucket, 31> b{};
+  for (int i = 0; i < 30; ++i) b[i] = {log_bound(i), log_bound(i + 1)};
+  b[30] = kCalibration;
+  return b;
+}
+
+}  // namespace
+
+std::span<const HistogramBucket> histogram_buckets(ExposureAlgorithm algorithm) {
+  static const std::array<HistogramBucket, 17> percentile = percentile_buckets();
+  static const std::array<HistogramBucket, 31> mean = mean_buckets();
+  if (algorithm == ExposureAlgorithm::percentile) return percentile;
+  return mean;
+}
+
+}  // namespace luxel::postfx
