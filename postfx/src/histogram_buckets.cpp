@@ -15,11 +15,13 @@ std::array<HistogramBucket, 17> percentile_buckets() {
   return b;
 }
 
-// The SDK's float expression: -0.01 + exp(ln(0.01) + (ln(1.01) - ln(0.01)) * t), in float.
+// The SDK's expression, - 0.01 + exp(FLerp(log(.01), log(.01 + 1), 0, 30, i)), with its types:
+// the logs in double rounded to FLerp's float parameters, FLerp and exp in float, the sum in
+// double rounded to the float it is stored in.
 float log_bound(int i) {
-  const float lo = std::log(0.01f), hi = std::log(1.01f);
-  const float t = float(i) / 30.0f;
-  return -0.01f + std::exp(lo + (hi - lo) * t);
+  const float lo = float(std::log(0.01)), hi = float(std::log(0.01 + 1));
+  const float lerped = lo + (hi - lo) * (float(i) - 0.0f) / (30.0f - 0.0f);
+  return float(-0.01 + double(std::exp(lerped)));
 }
 
 std::array<HistogramBucket, 31> mean_buckets() {

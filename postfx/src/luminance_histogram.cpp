@@ -1,0 +1,162 @@
+#include "luxel/postfx/luminance_histogram.hpp"
+
+#include "luxel/rasterizer/draw.hpp"
+#include "luxel/rasterizer/srgb.hpp"
+
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
+namespace luxel::postfx {
+namespace {
+
+using shading::source::LuminancePass;
+using shading::source::LuminanceRangeCombo;
+using shading::source::LuminanceRangeParams;
+using shading::source::LuminanceReject;
+
+/// DrawScreenSpaceRectangle: the region as two triangles; varying 0 is the frame texture's
+/// coordinate, so each pixel center reads its own texel's center.
+struct RegionVertexShader {
+  static constexpr int kVaryings = 1;
+  int width = 0, height = 0;
+  HistogramRegion region;
+  void operator()(uint32_t i, rasterizer::VertexOutput<1>& out) const {
+    static constexpr int kCorner[6][2] = {{0, 0}, {1, 0}, {0, 1}, {1, 0}, {1, 1}, {0, 1}};
+    const float x = float(kCorner[i][0] ? region.x1 : region.x0), y = float(kCorner[i][1] ? region.y1 : region.y0);
+    out.position = glm::vec4(2.0f * x / float(width) - 1.0f, 1.0f - 2.0f * y / float(height), 0.0f, 1.0f);
+    out.varyings[0] = glm::vec4(x / float(width), y / float(height), 0.0f, 0.0f);
+  }
+};
+
+/// dev/no_pixel_write: the stencil method's counting draw; the stencil alone decides.
+struct NoPixelWrite {
+  static constexpr bool kCanDiscard = false, kWritesDepth = false;
+  void operator()(const rasterizer::PixelInput<1>&, rasterizer::PixelOutput& out) const {
+    const rasterizer::simd::Float zero(0.0f);
+    out.color = {zero, zero, zero, zero};
+  }
+};
+
+template <LuminanceRangeCombo C>
+void draw_range_test(rasterizer::Context& ctx, rasterizer::DepthStencilTarget& target, LuminancePass pass,
+                     const RegionVertexShader& vs, const LuminanceRangeParams& params) {
+  const shading::source::LuminanceRangePixelShader<C> ps{&params};
+  rasterizer::draw(ctx, rasterizer::Framebuffer{nullptr, &target}, shading::source::luminance_range_pipeline_state(C.reject, pass),
+                   rasterizer::Geometry::non_indexed(6), vs, ps);
+}
+
+void draw_range_test(rasterizer::Context& ctx, rasterizer::DepthStencilTarget& target, LuminanceReject reject,
+                     LuminancePass pass, const RegionVertexShader& vs, const LuminanceRangeParams& params) {
+  if (reject == LuminanceReject::alpha_test) {
+    draw_range_test<LuminanceRangeCombo{LuminanceReject::alpha_test}>(ctx, target, pass, vs, params);
+  } else {
+    draw_range_test<LuminanceRangeCombo{LuminanceReject::texkill}>(ctx, target, pass, vs, params);
+  }
+}
+
+double srgb_decode(uint8_t code) {
+  const double s = code / 255.0;
+  return s <= 0.04045 ? s / 12.92 : std::pow((s + 0.055) / 1.055, 2.4);
+}
+
+}  // namespace
+
+HistogramRegion histogram_region(int width, int height, float center_region_x, float center_region_y) {
+  // viewpostprocess.cpp: skip = int((1 + max - min) * 0.5f * (1 - region)), all in float.
+  const int skip_x = int(float(width) * (0.5f * (1.0f - center_region_x)));
+  const int skip_y = int(float(height) * (0.5f * (1.0f - center_region_y)));
+  return HistogramRegion{skip_x, skip_y, width - skip_x, height - skip_y};
+}
+
+LuminanceHistogram::LuminanceHistogram(const HistogramSettings& settings) : settings_(settings) {
+  if (settings.query_latency < 1)
+    throw std::invalid_argument("histogram query latency " + std::to_string(settings.query_latency) + " is not at least 1 frame");
+  for (float r : {settings.center_region_x, settings.center_region_y}) {
+    if (!(r > 0.0f && r <= 1.0f)) throw std::invalid_argument("exposure center region " + std::to_string(r) + " is not in (0, 1]");
+  }
+  for (const HistogramBucket& b : histogram_buckets(settings.algorithm)) buckets_.push_back(BucketCount{b});
+  pending_.resize(buckets_.size());
+}
+
+void LuminanceHistogram::update(rasterizer::Context& ctx, const rasterizer::Image& frame, int samples) {
+  ++frame_;
+  last_issued_ = -1;
+  bool issued = false;
+  for (size_t i = 0; i < buckets_.size(); ++i) {
+    BucketCount& b = buckets_[i];
+    if (b.state == BucketCount::State::initial) {
+      if (!issued) {
+        issue(ctx, frame, int(i), samples);
+        issued = true;
+      }
+    } else if (b.state != BucketCount::State::done && frame_ >= b.frame_queued + settings_.query_latency) {
+      b.in_range = *pending_[i];
+      pending_[i].reset();
+      b.state = BucketCount::State::done;
+    }
+  }
+  if (issued) return;
+  int oldest = -1;
+  for (size_t i = 0; i < buckets_.size(); ++i) {
+    if (buckets_[i].state == BucketCount::State::done && (oldest < 0 || buckets_[i].frame_queued < buckets_[size_t(oldest)].frame_queued))
+      oldest = int(i);
+  }
+  if (oldest >= 0) issue(ctx, frame, oldest, samples);
+}
+
+void LuminanceHistogram::issue(rasterizer::Context& ctx, const rasterizer::Image& frame, int bucket, int samples) {
+  const int w = frame.width, h = frame.height;
+  // UpdateScreenEffectTexture: the frame copied into a texture the range test reads.
+  if (!frame_texture_ || frame_texture_->width() != w || frame_texture_->height() != h)
+    frame_texture_ = rasterizer::Texture::create_2d(w, h, rasterizer::TextureFormat::RGBA8_sRGB, 1);
+  frame_texture_->upload(0, frame.rgba);
+  if (!target_ || target_->width() != w || target_->height() != h || target_->samples() != samples) target_.emplace(w, h, samples);
+  viewport_pixels_ = uint64_t(w) * uint64_t(h);
+
+  BucketCount& b = buckets_[size_t(bucket)];
+  LuminanceRangeParams params;
+  params.frame.texture = &*frame_texture_;
+  params.frame.state.min = params.frame.state.mag = rasterizer::Filter::Point;
+  params.frame.state.mip = rasterizer::MipFilter::None;
+  params.frame.state.u = params.frame.state.v = rasterizer::Address::Clamp;
+  params.min_max_scale = shading::source::luminance_range_constant(b.range.min, b.range.max);
+  const RegionVertexShader vs{w, h, histogram_region(w, h, settings_.center_region_x, settings_.center_region_y)};
+
+  rasterizer::OcclusionQuery query;
+  if (settings_.count == HistogramCount::direct_query) {
+    ctx.begin_query(query);
+    draw_range_test(ctx, *target_, settings_.reject, LuminancePass::query, vs, params);
+    ctx.end_query();
+  } else {
+    // The engine clears the stencil at the start of each frame; one mark per frame follows.
+    rasterizer::clear_depth_stencil(ctx, *target_, 1.0f, 0);
+    draw_range_test(ctx, *target_, settings_.reject, LuminancePass::stencil_mark, vs, params);
+    ctx.begin_query(query);
+    rasterizer::draw(ctx, rasterizer::Framebuffer{nullptr, &*target_},
+                     shading::source::luminance_range_pipeline_state(settings_.reject, LuminancePass::stencil_count),
+                     rasterizer::Geometry::non_indexed(6), vs, NoPixelWrite{});
+    ctx.end_query();
+  }
+  pending_[size_t(bucket)] = ctx.query_result(query);  // flushes: `params` outlives the draws
+  b.state = b.state == BucketCount::State::initial ? BucketCount::State::first_query_in_flight : BucketCount::State::query_in_flight;
+  b.frame_queued = frame_;
+  last_issued_ = bucket;
+}
+
+std::vector<uint64_t> exact_histogram(const rasterizer::Image& frame, const HistogramRegion& region, ExposureAlgorithm algorithm) {
+  const std::span<const HistogramBucket> buckets = histogram_buckets(algorithm);
+  std::vector<uint64_t> counts(buckets.size(), 0);
+  for (int y = region.y0; y < region.y1; ++y) {
+    for (int x = region.x0; x < region.x1; ++x) {
+      const uint8_t* p = frame.pixel(x, y);
+      const double luminance = 0.2125 * srgb_decode(p[0]) + 0.7154 * srgb_decode(p[1]) + 0.0721 * srgb_decode(p[2]);
+      for (size_t b = 0; b < buckets.size(); ++b) {
+        counts[b] += luminance >= double(buckets[b].min) && luminance <= double(range_test_max(buckets[b]));
+      }
+    }
+  }
+  return counts;
+}
+
+}  // namespace luxel::postfx
