@@ -166,13 +166,13 @@ std::optional<ModelRun> run_model(const FrameOptions& options, const scenes::Sce
   settings.model = model;
   settings.count_shading = true;
   {
-    const std::unique_ptr<frame::Renderer> counted = options.make_renderer("compare", scene, settings, code);
+    const std::unique_ptr<frame::Renderer> counted = options.make_renderer("compare", scene, settings, ctx, code);
     if (!counted) return std::nullopt;
     counted->render(ctx);
     run.uses = counted->shader_uses();
   }
   settings.count_shading = false;
-  const std::unique_ptr<frame::Renderer> timed = options.make_renderer("compare", scene, settings, code);
+  const std::unique_ptr<frame::Renderer> timed = options.make_renderer("compare", scene, settings, ctx, code);
   if (!timed) return std::nullopt;
   timed->render(ctx);
   // The first frame, as `luxel render --model` writes it: a frame carries state into the next

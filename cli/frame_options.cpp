@@ -6,12 +6,15 @@
 #include "luxel/rasterizer/fast_paths.hpp"
 #include "luxel/scenes/builtin.hpp"
 
+#include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 #include <iostream>
 #include <map>
 #include <stdexcept>
 #include <utility>
+
+#include <unistd.h>
 
 namespace luxel::cli {
 
@@ -46,6 +49,26 @@ void FrameOptions::add_to(CLI::App& cmd) {
                  "A model's ambient cube from the irradiance volume: nearest (the nearest sample's, the default) or "
                  "trilinear (blended from the eight samples around it)")
       ->transform(CLI::CheckedTransformer(ambient, CLI::ignore_case));
+  cmd.add_option("--exposure", exposure,
+                 "A fixed tone-map scale; without it the scene's exposure range decides (auto exposure from the "
+                 "luminance histogram, or the range's one value)")
+      ->check(CLI::PositiveNumber);
+  const std::map<std::string, postfx::ExposureAlgorithm> algorithms{{"percentile", postfx::ExposureAlgorithm::percentile},
+                                                                     {"mean", postfx::ExposureAlgorithm::mean}};
+  cmd.add_option("--tonemap-algorithm", settings.histogram.algorithm,
+                 "Auto exposure's rule (mat_tonemap_algorithm): percentile (17 buckets, the 98th percentile and the "
+                 "median term, the default) or mean (31 log-spaced buckets; Day of Defeat, Counter-Strike, Lost Coast)")
+      ->transform(CLI::CheckedTransformer(algorithms, CLI::ignore_case));
+  const std::map<std::string, postfx::HistogramCount> counts{{"direct", postfx::HistogramCount::direct_query},
+                                                             {"stencil", postfx::HistogramCount::stencil}};
+  cmd.add_option("--histogram", settings.histogram.count,
+                 "How the histogram counts a bucket: direct (the range test inside the occlusion query, the default) "
+                 "or stencil (the test marks the stencil, a second draw counts it; mat_tonemapping_occlusion_use_stencil)")
+      ->transform(CLI::CheckedTransformer(counts, CLI::ignore_case));
+  cmd.add_option("--query-latency", settings.histogram.query_latency,
+                 "Frames before a histogram query is read back (the engine waited 3)")
+      ->check(CLI::Range(1, 64))
+      ->capture_default_str();
 }
 
 std::optional<rasterizer::ContextOptions> FrameOptions::context_options(const std::string& command, int& code) const {
@@ -107,12 +130,23 @@ std::optional<scenes::Scene> FrameOptions::prepare_scene(const std::string& comm
 }
 
 std::unique_ptr<frame::Renderer> FrameOptions::make_renderer(const std::string& command, const scenes::Scene& scene,
-                                                             const frame::FrameSettings& settings, int& code) const {
+                                                             const frame::FrameSettings& settings, rasterizer::Context& ctx,
+                                                             int& code) const {
   try {
     frame::FrameSettings first = settings;
     first.time = 0.0f;
+    first.exposure = exposure;
     auto renderer = std::make_unique<frame::Renderer>(scene, first);
-    for (int n = 1; n <= frame; ++n) renderer->set_time(static_cast<float>(double(n) / fps));
+    const bool carried = renderer->auto_exposure() != nullptr;
+    const bool terminal = isatty(STDERR_FILENO);
+    for (int n = 0; n < frame; ++n) {
+      if (carried) {
+        renderer->render(ctx);
+        if (terminal) std::fprintf(stderr, "\rluxel %s: frames before %d for the exposure: %d/%d", command.c_str(), frame, n + 1, frame);
+      }
+      renderer->set_time(static_cast<float>(double(n + 1) / fps));
+    }
+    if (carried && terminal && frame > 0) std::fprintf(stderr, "\n");
     return renderer;
   } catch (const std::invalid_argument& e) {
     std::cerr << "luxel " << command << ": " << e.what() << "\n";

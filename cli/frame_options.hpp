@@ -25,9 +25,10 @@ struct FrameOptions {
   std::string bake = "full";      ///< the bake made on demand: full or quick
   int frame = 0;                  ///< the frame of the scene's sequence, at time frame / fps
   float fps = 30.0f;
+  std::optional<float> exposure;  ///< --exposure: a fixed tone-map scale
 
   /// Registers --scene --width --height --msaa --camera --camera-path --frame --fps --threads
-  /// --bake --ambient on `cmd`.
+  /// --bake --ambient --exposure --tonemap-algorithm --histogram --query-latency on `cmd`.
   void add_to(CLI::App& cmd);
 
   /// The rasterizer context's options: the threads and LUXEL_NO_FASTPATH; nullopt after printing
@@ -45,10 +46,12 @@ struct FrameOptions {
 
   /// A renderer of `scene` (which must outlive it) with `settings`, its clock at `frame`: started
   /// at frame 0 and moved through every frame before, so that the models' lighting is averaged
-  /// as in the sequence (frame/renderer.hpp). nullptr after printing one line for settings the
-  /// renderer refuses, exit code 2 in `code`.
+  /// as in the sequence (frame/renderer.hpp); with auto exposure those frames are rendered on
+  /// `ctx`, since each one's exposure comes from the frames before it (progress on a terminal).
+  /// nullptr after printing one line for settings the renderer refuses, exit code 2 in `code`.
   std::unique_ptr<frame::Renderer> make_renderer(const std::string& command, const scenes::Scene& scene,
-                                                 const frame::FrameSettings& settings, int& code) const;
+                                                 const frame::FrameSettings& settings, rasterizer::Context& ctx,
+                                                 int& code) const;
 };
 
 }  // namespace luxel::cli

@@ -76,6 +76,12 @@ void print_stats(const frame::Renderer& renderer, const rasterizer::ContextOptio
               << " slot_pixels=" << u.pixels * static_cast<uint64_t>(u.slots) << "\n";
   for (const frame::PassTime& p : renderer.pass_times())
     std::cout << "pass=" << p.pass << " draws=" << p.draws << " ms=" << p.ms << "\n";
+  if (const postfx::AutoExposure* a = renderer.auto_exposure()) {
+    std::cout << "exposure=" << renderer.exposure() << " goal=" << a->goal() << " target=" << a->last_target()
+              << " bucket=" << a->histogram().last_issued() << "\n";
+  } else {
+    std::cout << "exposure=" << renderer.exposure() << " fixed\n";
+  }
 }
 
 }  // namespace
@@ -118,9 +124,9 @@ Runner add_render_command(CLI::App& app) {
     settings.time_passes = options->stats;
     const std::optional<scenes::Scene> scene = options->frame.prepare_scene("render", settings, first_out, code);
     if (!scene) return code;
-    const std::unique_ptr<frame::Renderer> renderer = options->frame.make_renderer("render", *scene, settings, code);
-    if (!renderer) return code;
     rasterizer::Context ctx(*context_options);
+    const std::unique_ptr<frame::Renderer> renderer = options->frame.make_renderer("render", *scene, settings, ctx, code);
+    if (!renderer) return code;
     const int first = options->frame.frame, last = range ? range->second : first;
     for (int n = first; n <= last; ++n) {
       if (n > first) renderer->set_time(static_cast<float>(double(n) / options->frame.fps));

@@ -105,9 +105,24 @@ bool touches(const scenes::Mesh& m, const glm::vec3& offset, const glm::vec4& pl
   return false;
 }
 
-/// The tone-map scale of the frame (renderer.hpp).
+/// The tone-map scale of the first frame (renderer.hpp).
 float frame_exposure(const scenes::Scene& scene, const FrameSettings& settings) {
   return settings.exposure ? *settings.exposure : std::clamp(1.0f, scene.exposure.min_scale, scene.exposure.max_scale);
+}
+
+/// Auto exposure as the scene's Exposure sets it, when the exposure is not fixed (renderer.hpp).
+std::optional<postfx::AutoExposureSettings> auto_exposure_settings(const scenes::Scene& scene, const FrameSettings& settings) {
+  const scenes::Exposure& e = scene.exposure;
+  if (settings.exposure || settings.cubemap_capture || !(e.min_scale < e.max_scale)) return std::nullopt;
+  postfx::AutoExposureSettings a;
+  a.histogram = settings.histogram;
+  a.min_scale = e.min_scale;
+  a.max_scale = e.max_scale;
+  a.rate = e.rate;
+  a.percent_target = e.percent_target;
+  a.percent_bright = e.percent_bright;
+  a.initial_scale = frame_exposure(scene, settings);
+  return a;
 }
 
 EnvmapMask lightmapped_mask(scenes::EnvmapMask m) {
@@ -153,6 +168,11 @@ struct FrameState {
   std::vector<AveragedLighting> model_lighting;
   std::vector<ModelLightingState> model_states;
   bool views_current = false;
+  // The exposure (renderer.hpp): the scale the views are drawn with, the auto exposure that moves
+  // it, and the clock at the last frame rendered (the next frame's duration).
+  float exposure = 1.0f;
+  std::optional<postfx::AutoExposure> auto_exposure;
+  std::optional<float> last_frame_time;
 
   FrameState(const scenes::Scene& s, const FrameSettings& f, std::shared_ptr<const SceneTextures> t)
       : scene(&s), settings(f), color(f.width, f.height, f.samples), depth(f.width, f.height, f.samples), prepared(std::move(t)) {}
@@ -583,7 +603,7 @@ void build_views(FrameState& st) {
   view.eye = camera.position;
   view.view_projection = glm::mat4(matrices.projection * matrices.view);
   view.far_plane = camera.far_plane;
-  view.exposure = frame_exposure(scene, settings);
+  view.exposure = st.exposure;
   // A capture's background is exposed as its surfaces are (renderer.hpp).
   const glm::vec3 background = scene.background * (settings.cubemap_capture ? view.exposure : 1.0f);
   st.clear = glm::vec4(float(linear_to_srgb(std::clamp(background.r, 0.0f, 1.0f))),
@@ -606,6 +626,8 @@ Renderer::Renderer(const scenes::Scene& scene, const FrameSettings& settings, st
     throw std::invalid_argument("lighting time constant " + std::to_string(settings.lighting_time_constant) +
                                 " is not a finite number >= 0");
   st.completed_meshes.resize(scene.meshes.size());
+  st.exposure = frame_exposure(scene, settings);
+  if (const auto a = auto_exposure_settings(scene, settings)) st.auto_exposure.emplace(*a);
   move_models(st, -1.0f);
   build_views(st);
 }
@@ -626,6 +648,14 @@ Renderer& Renderer::operator=(Renderer&&) noexcept = default;
 
 void Renderer::render(Context& ctx) {
   State& st = *state_;
+  // The frame's duration moves the exposure; a clock that went back starts it again.
+  const float dt = st.last_frame_time ? st.settings.time - *st.last_frame_time : 0.0f;
+  if (st.auto_exposure && dt < 0.0f) {
+    st.auto_exposure.emplace(st.auto_exposure->settings());
+    if (st.exposure != st.auto_exposure->scale()) st.views_current = false;
+    st.exposure = st.auto_exposure->scale();
+  }
+  st.last_frame_time = st.settings.time;
   ctx.reset_stats();
   st.pass_times.clear();
   PassClock clock(ctx, st.settings.time_passes ? &st.pass_times : nullptr);
@@ -639,7 +669,14 @@ void Renderer::render(Context& ctx) {
   // The target's alpha holds what the shaders wrote there (base alpha, blend results, the water's
   // fog factor), which a screen never shows: the image is what is shown, opaque.
   for (size_t i = 3; i < st.image.rgba.size(); i += 4) st.image.rgba[i] = 255;
-  st.stats = ctx.stats();
+  st.stats = ctx.stats();  // the 3D frame's draws, not the passes on the finished image
+  if (st.auto_exposure) {
+    clock.run("histogram", 1, [&] { st.auto_exposure->measure(ctx, st.image, st.settings.samples, std::max(dt, 0.0f)); });
+    if (st.auto_exposure->scale() != st.exposure) {
+      st.exposure = st.auto_exposure->scale();
+      st.views_current = false;  // the draws carry the scale in their constants
+    }
+  }
   st.shader_uses.clear();
   if (st.settings.count_shading) {
     if (st.water) st.water->add_shader_uses(st.shader_uses);
@@ -678,5 +715,7 @@ const DrawStats& Renderer::stats() const { return state_->stats; }
 const std::vector<ShaderUse>& Renderer::shader_uses() const { return state_->shader_uses; }
 const std::vector<PassTime>& Renderer::pass_times() const { return state_->pass_times; }
 const std::vector<ModelLightingState>& Renderer::model_lighting() const { return state_->model_states; }
+float Renderer::exposure() const { return state_->exposure; }
+const postfx::AutoExposure* Renderer::auto_exposure() const { return state_->auto_exposure ? &*state_->auto_exposure : nullptr; }
 
 }  // namespace luxel::frame

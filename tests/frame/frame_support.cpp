@@ -12,6 +12,32 @@
 
 namespace luxel::frame {
 
+scenes::Scene top_down() {
+  scenes::Scene s;
+  s.name = "test";
+  scenes::Camera c;
+  c.projection = scenes::Projection::orthographic;
+  c.position = {0, 0, 10};
+  c.target = {0, 0, 0};
+  c.up = {0, 1, 0};
+  c.ortho_height = 2;
+  c.aspect = 1;
+  c.near_plane = 1;
+  c.far_plane = 20;
+  s.cameras.push_back(c);
+  return s;
+}
+
+scenes::Mesh square(float x0, float y0, float x1, float y1, float z, int material, bool flip) {
+  scenes::Mesh m;
+  m.material = material;
+  m.positions = {{x0, y0, z}, {x1, y0, z}, {x1, y1, z}, {x0, y1, z}};
+  m.normals.assign(4, {0, 0, 1});
+  m.uv0 = {{0, 1}, {1, 1}, {1, 0}, {0, 0}};
+  m.indices = flip ? std::vector<uint16_t>{0, 2, 1, 0, 3, 2} : std::vector<uint16_t>{0, 1, 2, 0, 2, 3};
+  return m;
+}
+
 namespace {
 
 /// A bake cheap enough for every test binary, sanitizers included: the frame's tests need baked

@@ -16,6 +16,14 @@ struct RenderedFrame {
 /// The sRGB encode (IEC 61966-2-1), written out here so that tests check the frame's against it.
 double srgb_encode(double linear);
 
+/// A scene with one camera looking straight down at [-1, 1]^2 (orthographic; screen right +X, up
+/// +Y), nothing else.
+scenes::Scene top_down();
+
+/// The square [x0, x1] x [y0, y1] at height z, facing +Z (counter-clockwise seen from above)
+/// unless `flip`.
+scenes::Mesh square(float x0, float y0, float x1, float y1, float z, int material, bool flip = false);
+
 /// Attaches a cheap, deterministic bake (lightmaps, ambient cubes) to `scene`, baked once per
 /// scene name and test binary.
 void attach_test_bake(scenes::Scene& scene);

@@ -19,36 +19,6 @@ namespace {
 
 constexpr int kSize = 32;
 
-
-/// A camera looking straight down at [-1, 1]^2 (screen right +X, up +Y).
-scenes::Scene top_down() {
-  scenes::Scene s;
-  s.name = "test";
-  scenes::Camera c;
-  c.projection = scenes::Projection::orthographic;
-  c.position = {0, 0, 10};
-  c.target = {0, 0, 0};
-  c.up = {0, 1, 0};
-  c.ortho_height = 2;
-  c.aspect = 1;
-  c.near_plane = 1;
-  c.far_plane = 20;
-  s.cameras.push_back(c);
-  return s;
-}
-
-/// The square [x0, x1] x [y0, y1] at height z, facing +Z (counter-clockwise seen from above)
-/// unless `flip`.
-scenes::Mesh square(float x0, float y0, float x1, float y1, float z, int material, bool flip = false) {
-  scenes::Mesh m;
-  m.material = material;
-  m.positions = {{x0, y0, z}, {x1, y0, z}, {x1, y1, z}, {x0, y1, z}};
-  m.normals.assign(4, {0, 0, 1});
-  m.uv0 = {{0, 1}, {1, 1}, {1, 0}, {0, 0}};
-  m.indices = flip ? std::vector<uint16_t>{0, 2, 1, 0, 3, 2} : std::vector<uint16_t>{0, 1, 2, 0, 2, 3};
-  return m;
-}
-
 rasterizer::Image render(const scenes::Scene& s) {
   Renderer r(s, {kSize, kSize, 4});
   rasterizer::Context ctx(2);
@@ -283,20 +253,36 @@ TEST(Renderer, TimesThePassesTheSceneHas) {
   f.time_passes = true;
   Renderer timed(s, f);
   timed.render(ctx);
-  // One opaque mesh, no sky, nothing translucent: two passes, the image the same bytes.
-  ASSERT_EQ(timed.pass_times().size(), 2u);
+  // One opaque mesh, no sky, nothing translucent, an exposure range (auto exposure): three
+  // passes, the image the same bytes.
+  ASSERT_EQ(timed.pass_times().size(), 3u);
   EXPECT_EQ(timed.pass_times()[0].pass, "opaque");
   EXPECT_EQ(timed.pass_times()[0].draws, 1);
   EXPECT_EQ(timed.pass_times()[1].pass, "resolve");
+  EXPECT_EQ(timed.pass_times()[2].pass, "histogram");
   for (const PassTime& p : timed.pass_times()) EXPECT_GE(p.ms, 0.0);
   EXPECT_TRUE(timed.image().rgba == untimed.image().rgba);
-  // The clock moved: the views' draws are made anew first, a pass of their own.
+  // The clock moved: the views' draws are made anew first, a pass of their own (the first frame
+  // took no time, so the exposure has not moved: the same bytes).
   timed.set_time(0.5f);
   timed.render(ctx);
-  ASSERT_EQ(timed.pass_times().size(), 3u);
+  ASSERT_EQ(timed.pass_times().size(), 4u);
   EXPECT_EQ(timed.pass_times()[0].pass, "views");
   EXPECT_EQ(timed.pass_times()[1].pass, "opaque");
   EXPECT_TRUE(timed.image().rgba == untimed.image().rgba);
+  // A fixed exposure, given or a range of one value: no histogram pass.
+  for (int fixed = 0; fixed < 2; ++fixed) {
+    FrameSettings g = f;
+    scenes::Scene t = s;
+    if (fixed == 0) g.exposure = 1.0f;
+    else t.exposure.min_scale = t.exposure.max_scale = 1.0f;
+    Renderer r(t, g);
+    r.render(ctx);
+    ASSERT_EQ(r.pass_times().size(), 2u);
+    EXPECT_EQ(r.pass_times()[1].pass, "resolve");
+    EXPECT_EQ(r.auto_exposure(), nullptr);
+    EXPECT_TRUE(r.image().rgba == untimed.image().rgba);
+  }
 }
 
 TEST(Renderer, LinearWriteAndTheBackground) {

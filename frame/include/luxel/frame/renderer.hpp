@@ -41,10 +41,16 @@
 //    with a normal map; water at or above the eye is not drawn (frame/src/water_passes.hpp).
 //  - Fog: the scene's range fog on every shader, the combo each model draws it with (ps_2_0: the
 //    fixed-function vertex fog).
-//  - Every shader ends in the tone-map epilogue with a fixed exposure (FrameSettings::exposure,
-//    else the scene's Exposure clamped around 1) and writes 8-bit RGBA, sRGB-encoded unless the
+//  - Every shader ends in the tone-map epilogue and writes 8-bit RGBA, sRGB-encoded unless the
 //    material says $linearwrite; MSAA resolves to the image, whose alpha is 255 (the target's
 //    alpha holds what shaders and blending left there, which a screen never shows).
+//  - The tone-map scale: FrameSettings::exposure when set (fixed); else, when the scene's
+//    Exposure leaves a range (min_scale < max_scale), Source's auto exposure
+//    (postfx/auto_exposure.hpp): the first frame is drawn at 1 clamped to the range, and after
+//    each frame the luminance histogram counts one bucket of it (the "histogram" pass) and the
+//    scale moves for the next frame, by the time since the last frame (the clock); a clock that
+//    goes back starts the exposure again. With min_scale = max_scale, that scale, fixed, and no
+//    histogram pass.
 // Order: the water's views, then opaque meshes in scene order (depth LESS, single-sided materials
 // cull their back faces, front faces counter-clockwise), alpha-tested ones with D3D9's alpha test (GREATEREQUAL
 // $alphatestreference), then the sky, then translucent meshes back to front by the distance of
@@ -80,6 +86,7 @@
 // [0, 1]). The view-projection matrix is computed in double and rounded once, so that a camera
 // whose exact matrix has float entries (the workloads' orthographic cameras) gets exactly those.
 
+#include "luxel/postfx/auto_exposure.hpp"
 #include "luxel/rasterizer/context.hpp"
 #include "luxel/rasterizer/draw.hpp"
 #include "luxel/rasterizer/image.hpp"
@@ -120,8 +127,11 @@ struct FrameSettings {
   /// The pixel-shader model the Source shaders are drawn as: ps_2_0, ps_2_b or ps_3_0.
   shading::ShaderModel model = shading::ShaderModel::ps_3_0;
   AmbientSampling ambient = AmbientSampling::nearest;
-  /// The tone-map scale (LINEAR_LIGHT_SCALE); unset: the scene's Exposure clamped around 1.
+  /// A fixed tone-map scale (LINEAR_LIGHT_SCALE); unset: the scene's Exposure decides (above).
   std::optional<float> exposure = std::nullopt;
+  /// How auto exposure counts its histogram: target algorithm, counting method, query latency,
+  /// region (the scene's Exposure gives the range, rate and percentages).
+  postfx::HistogramSettings histogram{};
   /// Count the pixels each shader combo shades (Renderer::shader_uses); off, a frame counts nothing.
   bool count_shading = false;
   /// Time each pass (Renderer::pass_times). The rasterizer then runs each pass over all tiles
@@ -148,8 +158,9 @@ struct ModelLightingState {
 
 /// One pass of the last frame and its wall time (FrameSettings::time_passes).
 struct PassTime {
-  std::string pass;  ///< "views" (the draws made anew after Renderer::set_time), "water reflection",
-                     ///< "water refraction", "opaque", "sky", "translucent", "resolve"
+  std::string pass;  ///< "views" (the draws made anew after the clock or the exposure moved), "water
+                     ///< reflection", "water refraction", "opaque", "sky", "translucent", "resolve",
+                     ///< "histogram"
   double ms = 0.0;
   int draws = 0;
 };
@@ -210,6 +221,10 @@ class Renderer {
   const std::vector<PassTime>& pass_times() const;
   /// Per Scene::models entry, its lighting at the clock's time.
   const std::vector<ModelLightingState>& model_lighting() const;
+  /// The tone-map scale the next frame is drawn with.
+  float exposure() const;
+  /// The auto exposure (histogram, goal, last target), or null when the exposure is fixed.
+  const postfx::AutoExposure* auto_exposure() const;
 
  private:
   struct State;

@@ -1,0 +1,88 @@
+// Auto exposure through the frame: each frame is drawn at the scale the frames before it chose,
+// a grey scene settles where the percentile rule says, a clock that goes back starts the exposure
+// again, and a courtyard sequence gives the same bytes on 1 and 2 threads.
+
+#include "frame/frame_support.hpp"
+
+#include "luxel/frame/renderer.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+namespace luxel::frame {
+namespace {
+
+constexpr int kSize = 32;
+constexpr double kGrey = 0.15;  // the scene's linear luminance before the tone map
+
+/// An unlit grey square filling the view: the frame's luminance is kGrey x the scale.
+scenes::Scene grey_scene() {
+  scenes::Scene s = top_down();
+  scenes::Material m;
+  m.family = scenes::ShaderFamily::unlit_generic;
+  m.color = {float(kGrey), float(kGrey), float(kGrey), 1.0f};
+  s.materials = {m};
+  s.meshes = {square(-1, -1, 1, 1, 0, 0)};
+  s.exposure.min_scale = 0.5f;
+  s.exposure.max_scale = 8.0f;
+  return s;
+}
+
+double decode(uint8_t code) {
+  const double v = code / 255.0;
+  return v <= 0.04045 ? v / 12.92 : std::pow((v + 0.055) / 1.055, 2.4);
+}
+
+TEST(FrameAutoExposure, EachFrameIsDrawnAtTheScaleTheFramesBeforeChose) {
+  const scenes::Scene s = grey_scene();
+  Renderer r(s, {kSize, kSize, 4});
+  ASSERT_NE(r.auto_exposure(), nullptr);
+  rasterizer::Context ctx(2);
+  EXPECT_EQ(r.exposure(), 1.0f) << "the first frame: 1 in the range";
+  for (int f = 0; f < 900; ++f) {
+    r.set_time(float(f) / 30.0f);
+    const float scale = r.exposure();
+    r.render(ctx);
+    const uint8_t code = r.image().pixel(kSize / 2, kSize / 2)[1];
+    EXPECT_EQ(code, uint8_t(std::lround(255.0 * srgb_encode(std::min(1.0, kGrey * scale))))) << "frame " << f;
+    if (::testing::Test::HasFailure()) break;
+  }
+  // Settled in the percentile rule's sticky bin [0.5700, 0.6495], which holds 0.60.
+  const double settled = decode(r.image().pixel(kSize / 2, kSize / 2)[1]);
+  EXPECT_GE(settled, 0.5700);
+  EXPECT_LE(settled, 0.6495);
+  EXPECT_GT(r.exposure(), 0.56 / kGrey);
+  EXPECT_LT(r.exposure(), 0.66 / kGrey);
+  std::printf("grey %.2f settles at scale %.4f (luminance %.4f)\n", kGrey, r.exposure(), settled);
+
+  // The clock goes back: the exposure starts again, and frame 0 is frame 0 again.
+  Renderer fresh(s, {kSize, kSize, 4});
+  fresh.render(ctx);
+  r.set_time(0.0f);
+  r.render(ctx);
+  EXPECT_EQ(r.image().rgba, fresh.image().rgba);
+}
+
+TEST(FrameAutoExposure, CourtyardSequenceIsTheSameOnOneAndTwoThreads) {
+  scenes::Scene scene = scenes::make_builtin_scene("courtyard", {96, 54});
+  attach_test_bake(scene);
+  FrameSettings settings{96, 54, 4};
+  settings.camera_path = true;
+  settings.histogram.count = postfx::HistogramCount::stencil;
+  Renderer one(scene, settings), two(scene, settings);
+  ASSERT_NE(one.auto_exposure(), nullptr) << "the courtyard has an exposure range";
+  rasterizer::Context ctx1(1), ctx2(2);
+  for (int f = 0; f < 30; ++f) {
+    one.set_time(float(f) / 30.0f);
+    two.set_time(float(f) / 30.0f);
+    one.render(ctx1);
+    two.render(ctx2);
+    ASSERT_EQ(one.image().rgba, two.image().rgba) << "frame " << f;
+    ASSERT_EQ(one.exposure(), two.exposure()) << "frame " << f;
+  }
+  EXPECT_NE(one.exposure(), 1.0f) << "the exposure moved within the second";
+}
+
+}  // namespace
+}  // namespace luxel::frame
