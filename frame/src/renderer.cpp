@@ -671,7 +671,7 @@ void Renderer::render(Context& ctx) {
   for (size_t i = 3; i < st.image.rgba.size(); i += 4) st.image.rgba[i] = 255;
   st.stats = ctx.stats();  // the 3D frame's draws, not the passes on the finished image
   if (st.auto_exposure) {
-    clock.run("histogram", 1, [&] { st.auto_exposure->measure(ctx, st.image, st.settings.samples, std::max(dt, 0.0f)); });
+    clock.run("histogram", 1, [&] { st.auto_exposure->measure(ctx, st.image, st.depth, std::max(dt, 0.0f)); });
     if (st.auto_exposure->scale() != st.exposure) {
       st.exposure = st.auto_exposure->scale();
       st.views_current = false;  // the draws carry the scale in their constants

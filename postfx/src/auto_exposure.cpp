@@ -130,8 +130,9 @@ void ToneMapScale::push(float target, float dt) {
 AutoExposure::AutoExposure(const AutoExposureSettings& settings)
     : settings_(settings), histogram_(settings.histogram), scale_(settings) {}
 
-void AutoExposure::measure(rasterizer::Context& ctx, const rasterizer::Image& frame, int samples, float dt) {
-  histogram_.update(ctx, frame, samples);
+void AutoExposure::measure(rasterizer::Context& ctx, const rasterizer::Image& frame, rasterizer::DepthStencilTarget& target,
+                           float dt) {
+  histogram_.update(ctx, frame, target);
   last_target_ = target_scale(histogram_.buckets(), settings_, scale_.current(), histogram_.viewport_pixels());
   scale_.push(last_target_, dt);
 }

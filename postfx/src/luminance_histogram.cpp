@@ -79,7 +79,10 @@ LuminanceHistogram::LuminanceHistogram(const HistogramSettings& settings) : sett
   pending_.resize(buckets_.size());
 }
 
-void LuminanceHistogram::update(rasterizer::Context& ctx, const rasterizer::Image& frame, int samples) {
+void LuminanceHistogram::update(rasterizer::Context& ctx, const rasterizer::Image& frame, rasterizer::DepthStencilTarget& target) {
+  if (target.width() != frame.width || target.height() != frame.height)
+    throw std::invalid_argument("histogram: a " + std::to_string(target.width()) + "x" + std::to_string(target.height()) +
+                                " target for a " + std::to_string(frame.width) + "x" + std::to_string(frame.height) + " frame");
   ++frame_;
   last_issued_ = -1;
   bool issued = false;
@@ -87,7 +90,7 @@ void LuminanceHistogram::update(rasterizer::Context& ctx, const rasterizer::Imag
     BucketCount& b = buckets_[i];
     if (b.state == BucketCount::State::initial) {
       if (!issued) {
-        issue(ctx, frame, int(i), samples);
+        issue(ctx, frame, target, int(i));
         issued = true;
       }
     } else if (b.state != BucketCount::State::done && frame_ >= b.frame_queued + settings_.query_latency) {
@@ -102,16 +105,16 @@ void LuminanceHistogram::update(rasterizer::Context& ctx, const rasterizer::Imag
     if (buckets_[i].state == BucketCount::State::done && (oldest < 0 || buckets_[i].frame_queued < buckets_[size_t(oldest)].frame_queued))
       oldest = int(i);
   }
-  if (oldest >= 0) issue(ctx, frame, oldest, samples);
+  if (oldest >= 0) issue(ctx, frame, target, oldest);
 }
 
-void LuminanceHistogram::issue(rasterizer::Context& ctx, const rasterizer::Image& frame, int bucket, int samples) {
+void LuminanceHistogram::issue(rasterizer::Context& ctx, const rasterizer::Image& frame, rasterizer::DepthStencilTarget& target,
+                               int bucket) {
   const int w = frame.width, h = frame.height;
   // UpdateScreenEffectTexture: the frame copied into a texture the range test reads.
   if (!frame_texture_ || frame_texture_->width() != w || frame_texture_->height() != h)
     frame_texture_ = rasterizer::Texture::create_2d(w, h, rasterizer::TextureFormat::RGBA8_sRGB, 1);
   frame_texture_->upload(0, frame.rgba);
-  if (!target_ || target_->width() != w || target_->height() != h || target_->samples() != samples) target_.emplace(w, h, samples);
   viewport_pixels_ = uint64_t(w) * uint64_t(h);
 
   BucketCount& b = buckets_[size_t(bucket)];
@@ -126,14 +129,14 @@ void LuminanceHistogram::issue(rasterizer::Context& ctx, const rasterizer::Image
   rasterizer::OcclusionQuery query;
   if (settings_.count == HistogramCount::direct_query) {
     ctx.begin_query(query);
-    draw_range_test(ctx, *target_, settings_.reject, LuminancePass::query, vs, params);
+    draw_range_test(ctx, target, settings_.reject, LuminancePass::query, vs, params);
     ctx.end_query();
   } else {
     // The engine clears the stencil at the start of each frame; one mark per frame follows.
-    rasterizer::clear_depth_stencil(ctx, *target_, 1.0f, 0);
-    draw_range_test(ctx, *target_, settings_.reject, LuminancePass::stencil_mark, vs, params);
+    rasterizer::clear_depth_stencil(ctx, target, 1.0f, 0);
+    draw_range_test(ctx, target, settings_.reject, LuminancePass::stencil_mark, vs, params);
     ctx.begin_query(query);
-    rasterizer::draw(ctx, rasterizer::Framebuffer{nullptr, &*target_},
+    rasterizer::draw(ctx, rasterizer::Framebuffer{nullptr, &target},
                      shading::source::luminance_range_pipeline_state(settings_.reject, LuminancePass::stencil_count),
                      rasterizer::Geometry::non_indexed(6), vs, NoPixelWrite{});
     ctx.end_query();

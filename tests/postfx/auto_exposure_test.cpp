@@ -174,9 +174,10 @@ double decoded(const rasterizer::Image& image) {
 template <class Y>
 std::vector<float> run(AutoExposure& exposure, rasterizer::Context& ctx, int frames, Y&& y) {
   std::vector<float> scales;
+  rasterizer::DepthStencilTarget target(32, 20, 4);
   for (int f = 0; f < frames; ++f) {
     const rasterizer::Image frame = grey_frame(32, 20, y(f), exposure.scale());
-    exposure.measure(ctx, frame, 4, 1.0f / 30.0f);
+    exposure.measure(ctx, frame, target, 1.0f / 30.0f);
     scales.push_back(exposure.scale());
   }
   return scales;

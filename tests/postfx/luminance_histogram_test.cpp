@@ -42,13 +42,14 @@ TEST(LuminanceHistogram, RegionIsTheSdksFloatBorderTruncated) {
 TEST(LuminanceHistogram, OneBucketPerFrameReadAfterTheLatency) {
   const rasterizer::Image frame = random_frame(40, 24, 7);
   rasterizer::Context ctx(1);
+  rasterizer::DepthStencilTarget target(frame.width, frame.height);
   for (int latency : {1, 2, 3, 5}) {
     HistogramSettings s;
     s.query_latency = latency;
     LuminanceHistogram h(s);
     std::vector<int> valid_from(17, 0);
     for (int f = 1; f <= 40; ++f) {
-      h.update(ctx, frame, 1);
+      h.update(ctx, frame, target);
       if (f <= 17) {
         EXPECT_EQ(h.last_issued(), f - 1) << "frame " << f << ": unmeasured buckets first, in order";
       }
@@ -65,23 +66,24 @@ TEST(LuminanceHistogram, OneBucketPerFrameReadAfterTheLatency) {
 TEST(LuminanceHistogram, ReissuesTheOldestCountAndWaitsWhenNoneIsBack) {
   const rasterizer::Image frame = random_frame(16, 16, 9);
   rasterizer::Context ctx(1);
+  rasterizer::DepthStencilTarget target(16, 16);
   HistogramSettings s;
   s.query_latency = 3;
   LuminanceHistogram h(s);
-  for (int f = 1; f <= 17; ++f) h.update(ctx, frame, 1);
+  for (int f = 1; f <= 17; ++f) h.update(ctx, frame, target);
   for (int f = 18; f <= 60; ++f) {
-    h.update(ctx, frame, 1);
+    h.update(ctx, frame, target);
     EXPECT_EQ(h.last_issued(), (f - 18) % 17) << "frame " << f << ": the oldest count is measured again";
   }
   // A latency longer than the bucket count leaves frames with nothing back to re-measure.
   s.query_latency = 20;
   LuminanceHistogram slow(s);
-  for (int f = 1; f <= 17; ++f) slow.update(ctx, frame, 1);
+  for (int f = 1; f <= 17; ++f) slow.update(ctx, frame, target);
   for (int f = 18; f <= 20; ++f) {
-    slow.update(ctx, frame, 1);
+    slow.update(ctx, frame, target);
     EXPECT_EQ(slow.last_issued(), -1) << "frame " << f << ": bucket 0 is not back before frame 21";
   }
-  slow.update(ctx, frame, 1);
+  slow.update(ctx, frame, target);
   EXPECT_EQ(slow.last_issued(), 0);
 }
 
@@ -102,8 +104,9 @@ TEST(LuminanceHistogram, CountsEqualTheExactHistogramOnceEveryBucketIsBack) {
             s.reject = reject;
             LuminanceHistogram histogram(s);
             rasterizer::Context ctx(threads);
+            rasterizer::DepthStencilTarget target(w, h, samples);
             const int buckets = int(exact.size());
-            for (int f = 0; f < buckets + s.query_latency; ++f) histogram.update(ctx, frame, samples);
+            for (int f = 0; f < buckets + s.query_latency; ++f) histogram.update(ctx, frame, target);
             for (int b = 0; b < buckets; ++b) {
               const BucketCount& c = histogram.buckets()[size_t(b)];
               ASSERT_TRUE(c.valid()) << b;
@@ -131,7 +134,11 @@ TEST(LuminanceHistogram, WhiteIsInTheTopPercentileBucketAndInNoMeanBucket) {
   EXPECT_EQ(m[30], 400u);
 }
 
-TEST(LuminanceHistogram, RefusesBadSettings) {
+TEST(LuminanceHistogram, RefusesBadSettingsAndATargetOfAnotherSize) {
+  rasterizer::Context ctx(1);
+  rasterizer::DepthStencilTarget target(8, 8);
+  LuminanceHistogram h({});
+  EXPECT_THROW(h.update(ctx, random_frame(8, 9, 1), target), std::invalid_argument);
   HistogramSettings s;
   s.query_latency = 0;
   EXPECT_THROW(LuminanceHistogram{s}, std::invalid_argument);

@@ -84,9 +84,9 @@ class AutoExposure {
   float goal() const { return scale_.goal(); }
   /// The unclamped target of the last measure(), or 0 before it.
   float last_target() const { return last_target_; }
-  /// After a frame drawn at scale(): measures it (`samples` per pixel) and moves the scale for the
-  /// frame's duration `dt` (seconds, >= 0).
-  void measure(rasterizer::Context& ctx, const rasterizer::Image& frame, int samples, float dt);
+  /// After a frame drawn at scale(): measures it (LuminanceHistogram::update, into `target`) and
+  /// moves the scale for the frame's duration `dt` (seconds, >= 0).
+  void measure(rasterizer::Context& ctx, const rasterizer::Image& frame, rasterizer::DepthStencilTarget& target, float dt);
   const LuminanceHistogram& histogram() const { return histogram_; }
   const AutoExposureSettings& settings() const { return settings_; }
 

@@ -75,9 +75,11 @@ class LuminanceHistogram {
   /// Throws std::invalid_argument for a latency below 1 or a region outside (0, 1].
   explicit LuminanceHistogram(const HistogramSettings& settings);
 
-  /// One frame's update (above) on `frame`: the finished 8-bit image, sRGB-encoded, measured as a
-  /// target with `samples` samples per pixel (1, 2, 4 or 8).
-  void update(rasterizer::Context& ctx, const rasterizer::Image& frame, int samples);
+  /// One frame's update (above) on `frame`: the finished 8-bit image, sRGB-encoded. `target` is
+  /// the depth-stencil target the range test draws into, the size of the frame, with the frame's
+  /// samples (the frame's own, whose depth and stencil it may overwrite, as the engine draws into
+  /// its back buffer's).
+  void update(rasterizer::Context& ctx, const rasterizer::Image& frame, rasterizer::DepthStencilTarget& target);
 
   const HistogramSettings& settings() const { return settings_; }
   /// The buckets, the calibration bucket last.
@@ -91,7 +93,7 @@ class LuminanceHistogram {
   uint64_t viewport_pixels() const { return viewport_pixels_; }
 
  private:
-  void issue(rasterizer::Context& ctx, const rasterizer::Image& frame, int bucket, int samples);
+  void issue(rasterizer::Context& ctx, const rasterizer::Image& frame, rasterizer::DepthStencilTarget& target, int bucket);
 
   HistogramSettings settings_;
   std::vector<BucketCount> buckets_;
@@ -100,7 +102,6 @@ class LuminanceHistogram {
   int last_issued_ = -1;
   uint64_t viewport_pixels_ = 0;
   std::optional<rasterizer::Texture> frame_texture_;  ///< _rt_FullFrameFB
-  std::optional<rasterizer::DepthStencilTarget> target_;
 };
 
 /// Per bucket of `algorithm`, the pixels of `region` whose luminance (in double from the sRGB
