@@ -74,6 +74,16 @@ float target_scale(std::span<const BucketCount> buckets, const AutoExposureSetti
   return float(0.005 / average);
 }
 
+float exact_target(const rasterizer::Image& frame, const AutoExposureSettings& settings, float drawn_scale) {
+  const HistogramSettings& h = settings.histogram;
+  const std::vector<uint64_t> counts =
+      exact_histogram(frame, histogram_region(frame.width, frame.height, h.center_region_x, h.center_region_y), h.algorithm);
+  const std::span<const HistogramBucket> ranges = histogram_buckets(h.algorithm);
+  std::vector<BucketCount> buckets(ranges.size());
+  for (size_t i = 0; i < buckets.size(); ++i) buckets[i] = {ranges[i], BucketCount::State::done, counts[i], 0};
+  return target_scale(buckets, settings, drawn_scale, uint64_t(frame.width) * uint64_t(frame.height));
+}
+
 ToneMapScale::ToneMapScale(const AutoExposureSettings& s) : settings_(s) {
   check(s.min_scale, "min scale");
   check(s.max_scale, "max scale");

@@ -227,6 +227,29 @@ TEST(AutoExposure, MeanSettlesWhereTheBucketCenterRuleHasItsFixedPoint) {
   EXPECT_NEAR(scales.back(), fixed_point, 0.01 * fixed_point);
 }
 
+TEST(AutoExposure, ExactTargetIsTheOcclusionTargetOnceEveryBucketIsBack) {
+  // A frame of four greys; once every bucket's query is back, the occlusion histogram counts what
+  // the exact one does, so both rules give the same target.
+  rasterizer::Image frame(48, 32);
+  for (int y = 0; y < 32; ++y)
+    for (int x = 0; x < 48; ++x) {
+      uint8_t* p = frame.pixel(x, y);
+      p[0] = p[1] = p[2] = uint8_t(40 + 60 * ((x / 12 + y / 16) % 4));
+      p[3] = 255;
+    }
+  for (ExposureAlgorithm algorithm : {ExposureAlgorithm::percentile, ExposureAlgorithm::mean}) {
+    AutoExposureSettings s;
+    s.histogram.algorithm = algorithm;
+    LuminanceHistogram histogram(s.histogram);
+    rasterizer::Context ctx(2);
+    rasterizer::DepthStencilTarget target(48, 32, 4);
+    for (int f = 0; f < 40; ++f) histogram.update(ctx, frame, target);
+    const float occlusion = target_scale(histogram.buckets(), s, 1.3f, histogram.viewport_pixels());
+    EXPECT_NEAR(exact_target(frame, s, 1.3f), occlusion, 1e-6f * occlusion);
+    EXPECT_NE(occlusion, 1.3f) << "the frame is not at the target";
+  }
+}
+
 TEST(AutoExposure, SameScalesOnOneAndTwoThreads) {
   for (ExposureAlgorithm algorithm : {ExposureAlgorithm::percentile, ExposureAlgorithm::mean}) {
     for (HistogramCount count : {HistogramCount::direct_query, HistogramCount::stencil}) {

@@ -57,6 +57,11 @@ float percent_bright_location(std::span<const BucketCount> buckets, ExposureAlgo
 float target_scale(std::span<const BucketCount> buckets, const AutoExposureSettings& settings, float current_scale,
                    uint64_t viewport_pixels);
 
+/// The target the exact histogram of `frame` gives (exact_histogram over the region, every bucket
+/// counted and current), for a frame drawn at `drawn_scale`: what step 2 would say without
+/// occlusion queries, their latency and one bucket per frame. For tests and reports.
+float exact_target(const rasterizer::Image& frame, const AutoExposureSettings& settings, float drawn_scale);
+
 /// Steps 3 and 4: the history, the goal and the current scale.
 class ToneMapScale {
  public:
