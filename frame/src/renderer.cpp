@@ -105,15 +105,28 @@ bool touches(const scenes::Mesh& m, const glm::vec3& offset, const glm::vec4& pl
   return false;
 }
 
-/// The tone-map scale of the first frame (renderer.hpp).
-float frame_exposure(const scenes::Scene& scene, const FrameSettings& settings) {
-  return settings.exposure ? *settings.exposure : std::clamp(1.0f, scene.exposure.min_scale, scene.exposure.max_scale);
+/// The exposure controls where the frame's camera is (renderer.hpp).
+const scenes::Exposure& frame_controls(const scenes::Scene& scene, const FrameSettings& settings) {
+  return scenes::exposure_at(scene, frame_camera(scene, settings).position);
 }
 
-/// Auto exposure as the scene's Exposure sets it, when the exposure is not fixed (renderer.hpp).
-std::optional<postfx::AutoExposureSettings> auto_exposure_settings(const scenes::Scene& scene, const FrameSettings& settings) {
-  const scenes::Exposure& e = scene.exposure;
-  if (settings.exposure || settings.cubemap_capture || !(e.min_scale < e.max_scale)) return std::nullopt;
+/// The tone-map scale of the first frame (renderer.hpp).
+float frame_exposure(const scenes::Scene& scene, const FrameSettings& settings) {
+  if (settings.exposure) return *settings.exposure;
+  const scenes::Exposure& e = frame_controls(scene, settings);
+  return std::clamp(1.0f, e.min_scale, std::max(e.min_scale, e.max_scale));
+}
+
+/// Whether the frames run auto exposure: no fixed scale, and a range somewhere in the scene.
+bool uses_auto_exposure(const scenes::Scene& scene, const FrameSettings& settings) {
+  if (settings.exposure || settings.cubemap_capture) return false;
+  const auto ranged = [](const scenes::Exposure& e) { return e.min_scale < e.max_scale; };
+  return ranged(scene.exposure) ||
+         std::any_of(scene.exposure_zones.begin(), scene.exposure_zones.end(), [&](const auto& z) { return ranged(z.exposure); });
+}
+
+/// Auto exposure's settings under the controls `e`.
+postfx::AutoExposureSettings auto_exposure_settings(const scenes::Exposure& e, const FrameSettings& settings) {
   postfx::AutoExposureSettings a;
   a.histogram = settings.histogram;
   a.min_scale = e.min_scale;
@@ -121,7 +134,7 @@ std::optional<postfx::AutoExposureSettings> auto_exposure_settings(const scenes:
   a.rate = e.rate;
   a.percent_target = e.percent_target;
   a.percent_bright = e.percent_bright;
-  a.initial_scale = frame_exposure(scene, settings);
+  a.initial_scale = std::clamp(1.0f, e.min_scale, std::max(e.min_scale, e.max_scale));
   return a;
 }
 
@@ -627,7 +640,7 @@ Renderer::Renderer(const scenes::Scene& scene, const FrameSettings& settings, st
                                 " is not a finite number >= 0");
   st.completed_meshes.resize(scene.meshes.size());
   st.exposure = frame_exposure(scene, settings);
-  if (const auto a = auto_exposure_settings(scene, settings)) st.auto_exposure.emplace(*a);
+  if (uses_auto_exposure(scene, settings)) st.auto_exposure.emplace(auto_exposure_settings(frame_controls(scene, settings), settings));
   move_models(st, -1.0f);
   build_views(st);
 }
@@ -650,10 +663,15 @@ void Renderer::render(Context& ctx) {
   State& st = *state_;
   // The frame's duration moves the exposure; a clock that went back starts it again.
   const float dt = st.last_frame_time ? st.settings.time - *st.last_frame_time : 0.0f;
-  if (st.auto_exposure && dt < 0.0f) {
-    st.auto_exposure.emplace(st.auto_exposure->settings());
-    if (st.exposure != st.auto_exposure->scale()) st.views_current = false;
-    st.exposure = st.auto_exposure->scale();
+  if (st.auto_exposure) {
+    const postfx::AutoExposureSettings controls = auto_exposure_settings(frame_controls(*st.scene, st.settings), st.settings);
+    if (dt < 0.0f) {
+      st.auto_exposure.emplace(controls);
+      if (st.exposure != st.auto_exposure->scale()) st.views_current = false;
+      st.exposure = st.auto_exposure->scale();
+    } else {
+      st.auto_exposure->set_controls(controls);  // the zone the camera is in
+    }
   }
   st.last_frame_time = st.settings.time;
   ctx.reset_stats();

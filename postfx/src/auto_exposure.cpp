@@ -84,7 +84,14 @@ float exact_target(const rasterizer::Image& frame, const AutoExposureSettings& s
   return target_scale(buckets, settings, drawn_scale, uint64_t(frame.width) * uint64_t(frame.height));
 }
 
-ToneMapScale::ToneMapScale(const AutoExposureSettings& s) : settings_(s) {
+ToneMapScale::ToneMapScale(const AutoExposureSettings& s) {
+  set_controls(s);
+  if (!(std::isfinite(s.initial_scale) && s.initial_scale > 0.0f))
+    throw std::invalid_argument("auto exposure: initial scale " + std::to_string(s.initial_scale) + " is not positive and finite");
+  current_ = goal_ = s.initial_scale;
+}
+
+void ToneMapScale::set_controls(const AutoExposureSettings& s) {
   check(s.min_scale, "min scale");
   check(s.max_scale, "max scale");
   check(s.rate, "rate");
@@ -92,10 +99,8 @@ ToneMapScale::ToneMapScale(const AutoExposureSettings& s) : settings_(s) {
   check(s.percent_target, "percent target");
   check(s.percent_bright, "percent of bright pixels");
   check(s.min_average_luminance, "minimum average luminance");
-  if (!(std::isfinite(s.initial_scale) && s.initial_scale > 0.0f))
-    throw std::invalid_argument("auto exposure: initial scale " + std::to_string(s.initial_scale) + " is not positive and finite");
+  settings_ = s;
   settings_.max_scale = std::max(s.min_scale, s.max_scale);  // GetExposureRange: min <= max
-  current_ = goal_ = settings_.initial_scale;
 }
 
 void ToneMapScale::push(float target, float dt) {
@@ -139,6 +144,14 @@ void ToneMapScale::push(float target, float dt) {
 
 AutoExposure::AutoExposure(const AutoExposureSettings& settings)
     : settings_(settings), histogram_(settings.histogram), scale_(settings) {}
+
+void AutoExposure::set_controls(const AutoExposureSettings& controls) {
+  AutoExposureSettings s = controls;
+  s.histogram = settings_.histogram;
+  s.initial_scale = settings_.initial_scale;
+  scale_.set_controls(s);
+  settings_ = s;
+}
 
 void AutoExposure::measure(rasterizer::Context& ctx, const rasterizer::Image& frame, rasterizer::DepthStencilTarget& target,
                            float dt) {

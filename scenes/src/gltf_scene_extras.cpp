@@ -33,6 +33,27 @@ void read_camera(const Value& v, Camera& c) {
   read(v.Get("far"), c.far_plane);
 }
 
+Value exposure_value(const Exposure& e) {
+  Value::Object o;
+  o["minscale"] = Value(double(e.min_scale));
+  o["maxscale"] = Value(double(e.max_scale));
+  o["rate"] = Value(double(e.rate));
+  o["percenttarget"] = Value(double(e.percent_target));
+  o["percentbright"] = Value(double(e.percent_bright));
+  o["bloomscale"] = Value(double(e.bloom_scale));
+  return Value(std::move(o));
+}
+
+void read_exposure(const Value& v, Exposure& e) {
+  if (!v.IsObject()) return;
+  read(v.Get("minscale"), e.min_scale);
+  read(v.Get("maxscale"), e.max_scale);
+  read(v.Get("rate"), e.rate);
+  read(v.Get("percenttarget"), e.percent_target);
+  read(v.Get("percentbright"), e.percent_bright);
+  read(v.Get("bloomscale"), e.bloom_scale);
+}
+
 }  // namespace
 
 Value scene_extras(const Scene& s) {
@@ -47,14 +68,16 @@ Value scene_extras(const Scene& s) {
   fog["maxdensity"] = Value(double(s.fog.max_density));
   fog["waterz"] = Value(double(s.fog.water_z));
   x["fog"] = Value(std::move(fog));
-  Value::Object e;
-  e["minscale"] = Value(double(s.exposure.min_scale));
-  e["maxscale"] = Value(double(s.exposure.max_scale));
-  e["rate"] = Value(double(s.exposure.rate));
-  e["percenttarget"] = Value(double(s.exposure.percent_target));
-  e["percentbright"] = Value(double(s.exposure.percent_bright));
-  e["bloomscale"] = Value(double(s.exposure.bloom_scale));
-  x["exposure"] = Value(std::move(e));
+  x["exposure"] = exposure_value(s.exposure);
+  Value::Array zones;
+  for (const ExposureZone& z : s.exposure_zones) {
+    Value::Object o;
+    o["min"] = floats(z.min);
+    o["max"] = floats(z.max);
+    o["exposure"] = exposure_value(z.exposure);
+    zones.emplace_back(std::move(o));
+  }
+  x["exposurezones"] = Value(std::move(zones));
   Value::Array samples;
   for (const CubemapSample& c : s.cubemap_samples) {
     Value::Object o;
@@ -109,13 +132,15 @@ void read_scene_extras(const Value& extras, Scene& s) {
     read(fog.Get("maxdensity"), s.fog.max_density);
     read(fog.Get("waterz"), s.fog.water_z);
   }
-  if (const Value& e = x.Get("exposure"); e.IsObject()) {
-    read(e.Get("minscale"), s.exposure.min_scale);
-    read(e.Get("maxscale"), s.exposure.max_scale);
-    read(e.Get("rate"), s.exposure.rate);
-    read(e.Get("percenttarget"), s.exposure.percent_target);
-    read(e.Get("percentbright"), s.exposure.percent_bright);
-    read(e.Get("bloomscale"), s.exposure.bloom_scale);
+  read_exposure(x.Get("exposure"), s.exposure);
+  const Value& zones = x.Get("exposurezones");
+  for (size_t i = 0; zones.IsArray() && i < zones.ArrayLen(); ++i) {
+    const Value& o = zones.Get(int(i));
+    ExposureZone z;
+    read(o.Get("min"), z.min);
+    read(o.Get("max"), z.max);
+    read_exposure(o.Get("exposure"), z.exposure);
+    s.exposure_zones.push_back(z);
   }
   const Value& samples = x.Get("cubemapsamples");
   for (size_t i = 0; samples.IsArray() && i < samples.ArrayLen(); ++i) {

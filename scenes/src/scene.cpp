@@ -1,5 +1,7 @@
 #include "luxel/scenes/scene.hpp"
 
+#include <glm/vector_relational.hpp>
+
 #include <glm/common.hpp>
 
 #include <algorithm>
@@ -102,6 +104,14 @@ void check_mesh(const Scene& scene, const Mesh& m, size_t i) {
 
 }  // namespace
 
+const Exposure& exposure_at(const Scene& scene, glm::vec3 p) {
+  for (size_t i = scene.exposure_zones.size(); i-- > 0;) {
+    const ExposureZone& z = scene.exposure_zones[i];
+    if (glm::all(glm::greaterThanEqual(p, z.min)) && glm::all(glm::lessThanEqual(p, z.max))) return z.exposure;
+  }
+  return scene.exposure;
+}
+
 void validate(const Scene& scene) {
   for (size_t i = 0; i < scene.textures.size(); ++i) check_texture(scene, scene.textures[i], i);
   for (size_t i = 0; i < scene.materials.size(); ++i) {
@@ -150,6 +160,19 @@ void validate(const Scene& scene) {
   if (scene.lightmaps) {
     check_texture_index(scene.lightmaps->flat, "the flat lightmap");
     for (int t : scene.lightmaps->textures) check_texture_index(t, "the lightmaps");
+  }
+  auto check_exposure = [&](const Exposure& e, const std::string& where) {
+    for (float v : {e.min_scale, e.max_scale, e.rate, e.percent_target, e.percent_bright, e.bloom_scale})
+      if (!(std::isfinite(v) && v >= 0.0f)) fail(scene, where + " has a value that is negative or not finite");
+    if (!(e.min_scale > 0.0f)) fail(scene, where + " has a minimum scale that is not positive");
+  };
+  check_exposure(scene.exposure, "the exposure");
+  for (size_t i = 0; i < scene.exposure_zones.size(); ++i) {
+    const ExposureZone& z = scene.exposure_zones[i];
+    const std::string where = "exposure zone " + std::to_string(i);
+    if (!finite(z.min) || !finite(z.max) || z.min.x > z.max.x || z.min.y > z.max.y || z.min.z > z.max.z)
+      fail(scene, where + " has bounds that are not finite or not ordered");
+    check_exposure(z.exposure, where);
   }
   if (const auto& v = scene.irradiance_volume) {
     const size_t samples = static_cast<size_t>(std::max(v->counts.x, 0)) * std::max(v->counts.y, 0) * std::max(v->counts.z, 0);

@@ -5,6 +5,7 @@
 #include "frame/frame_support.hpp"
 
 #include "luxel/frame/renderer.hpp"
+#include "luxel/scenes/paths.hpp"
 
 #include <gtest/gtest.h>
 
@@ -62,6 +63,45 @@ TEST(FrameAutoExposure, EachFrameIsDrawnAtTheScaleTheFramesBeforeChose) {
   r.set_time(0.0f);
   r.render(ctx);
   EXPECT_EQ(r.image().rgba, fresh.image().rgba);
+}
+
+TEST(FrameAutoExposure, EnteringAnExposureZoneChangesTheControlsWithoutAJump) {
+  // The camera rises along its path (an orthographic view: the image does not change) and enters
+  // a zone fixing the scale at 1 after 4 s; outside, the range lets the grey settle near 3.8.
+  scenes::Scene s = grey_scene();
+  for (float t : {0.0f, 10.0f}) {
+    scenes::CameraKey key{t, s.cameras[0]};
+    key.camera.position.z = 10.0f + 0.5f * t;
+    s.camera_path.push_back(key);
+  }
+  scenes::ExposureZone zone{{-5, -5, 12}, {5, 5, 20}, {}};
+  zone.exposure.min_scale = zone.exposure.max_scale = 1.0f;
+  s.exposure_zones = {zone};
+  FrameSettings settings{kSize, kSize, 4};
+  settings.camera_path = true;
+  Renderer r(s, settings);
+  rasterizer::Context ctx(2);
+  std::vector<float> scales;
+  for (int f = 0; f < 600; ++f) {
+    r.set_time(float(f) / 30.0f);
+    scales.push_back(r.exposure());
+    r.render(ctx);
+  }
+  EXPECT_EQ(scales[0], 1.0f);
+  EXPECT_GT(scales[119], 1.5f) << "outside the zone the scale rose";
+  // From the frame the camera enters, the scale falls towards 1, each frame by at most 1/64 of
+  // the gap (the percentile rule's cap): no jump.
+  int entered = 0;
+  while (scenes::camera_at(s.camera_path, float(entered) / 30.0f).position.z < 12.0f) ++entered;
+  int turned = 0;
+  for (int f = 1; f + 1 < 600 && turned == 0; ++f)
+    if (scales[size_t(f) + 1] < scales[size_t(f)]) turned = f;
+  EXPECT_EQ(turned, entered) << "the frame drawn inside the zone sets the new goal";
+  for (int f = turned; f + 1 < 600; ++f) {
+    EXPECT_LE(scales[size_t(f)] - scales[size_t(f) + 1], (scales[size_t(f)] - 1.0f) / 64.0f + 1e-5f) << "frame " << f;
+    EXPECT_GE(scales[size_t(f) + 1], 1.0f - 1e-5f) << "frame " << f;
+  }
+  EXPECT_NEAR(scales[599], 1.0f, 0.01f) << "settled at the zone's fixed scale";
 }
 
 TEST(FrameAutoExposure, CourtyardSequenceIsTheSameOnOneAndTwoThreads) {

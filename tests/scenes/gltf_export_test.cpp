@@ -239,6 +239,7 @@ Scene hand_built() {
   s.fog.max_density = 0.7f, s.fog.water_z = -5.0f;
   s.exposure.min_scale = 0.25f, s.exposure.max_scale = 3.0f, s.exposure.rate = 0.5f, s.exposure.percent_target = 55.0f;
   s.exposure.percent_bright = 3.0f, s.exposure.bloom_scale = 1.25f;
+  s.exposure_zones = {{{-10, -20, -30}, {10, 20, 30}, Exposure{1.5f, 4.0f, 2.0f, 50.0f, 1.0f, 0.5f}}};
   s.cubemap_samples = {{{1, 2, 3}, 32, -1}, {{-100, 50, 64}, 128, -1}};
   s.color_corrections = {{"builtin:warm", {10, 20, 30}, 64.0f, 256.0f, 0.8f}};
   s.irradiance_volume = IrradianceVolume{{-1000, 0, -10}, {0, 10, 130}, {128, 64, 32}, {9, 2, 5}, {}};
@@ -376,6 +377,12 @@ TEST(GltfExport, HandBuiltSceneRoundTrips) {
     EXPECT_EQ(back.exposure.min_scale, s.exposure.min_scale);
     EXPECT_EQ(back.exposure.percent_target, s.exposure.percent_target);
     EXPECT_EQ(back.exposure.bloom_scale, s.exposure.bloom_scale);
+    ASSERT_EQ(back.exposure_zones.size(), 1u);
+    EXPECT_EQ(back.exposure_zones[0].min, s.exposure_zones[0].min);
+    EXPECT_EQ(back.exposure_zones[0].max, s.exposure_zones[0].max);
+    EXPECT_EQ(back.exposure_zones[0].exposure.max_scale, 4.0f);
+    EXPECT_EQ(back.exposure_zones[0].exposure.rate, 2.0f);
+    EXPECT_EQ(back.exposure_zones[0].exposure.bloom_scale, 0.5f);
     ASSERT_EQ(back.cubemap_samples.size(), 2u);
     EXPECT_EQ(back.cubemap_samples[1].position, s.cubemap_samples[1].position);
     EXPECT_EQ(back.cubemap_samples[1].size, 128);

@@ -45,12 +45,13 @@
 //    material says $linearwrite; MSAA resolves to the image, whose alpha is 255 (the target's
 //    alpha holds what shaders and blending left there, which a screen never shows).
 //  - The tone-map scale: FrameSettings::exposure when set (fixed); else, when the scene's
-//    Exposure leaves a range (min_scale < max_scale), Source's auto exposure
-//    (postfx/auto_exposure.hpp): the first frame is drawn at 1 clamped to the range, and after
-//    each frame the luminance histogram counts one bucket of it (the "histogram" pass) and the
-//    scale moves for the next frame, by the time since the last frame (the clock); a clock that
-//    goes back starts the exposure again. With min_scale = max_scale, that scale, fixed, and no
-//    histogram pass.
+//    Exposure or one of its exposure zones leaves a range (min_scale < max_scale), Source's auto
+//    exposure (postfx/auto_exposure.hpp): the first frame is drawn at 1 clamped to the range, and
+//    after each frame the luminance histogram counts one bucket of it (the "histogram" pass) and
+//    the scale moves for the next frame, by the time since the last frame (the clock), under the
+//    controls where the camera is (scenes::exposure_at: the zone holding it, else the scene's);
+//    a clock that goes back starts the exposure again. Without a range anywhere, the one scale,
+//    fixed, and no histogram pass.
 // Order: the water's views, then opaque meshes in scene order (depth LESS, single-sided materials
 // cull their back faces, front faces counter-clockwise), alpha-tested ones with D3D9's alpha test (GREATEREQUAL
 // $alphatestreference), then the sky, then translucent meshes back to front by the distance of

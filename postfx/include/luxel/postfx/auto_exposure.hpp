@@ -72,6 +72,9 @@ class ToneMapScale {
   float goal() const { return goal_; }
   /// A new target (step 3, clamped here), then the chase over `dt` seconds (step 4).
   void push(float target, float dt);
+  /// New controls (range, rate, acceleration) from the next push on; the history, goal and
+  /// current scale carry on. Checked as the constructor checks them.
+  void set_controls(const AutoExposureSettings& settings);
 
  private:
   AutoExposureSettings settings_;
@@ -89,6 +92,10 @@ class AutoExposure {
   float goal() const { return scale_.goal(); }
   /// The unclamped target of the last measure(), or 0 before it.
   float last_target() const { return last_target_; }
+  /// New designer controls (everything but the histogram's settings and the initial scale) from
+  /// the next measure() on, as an env_tonemap_controller input changes them in Source: the
+  /// histogram, the history and the scale carry on.
+  void set_controls(const AutoExposureSettings& controls);
   /// After a frame drawn at scale(): measures it (LuminanceHistogram::update, into `target`) and
   /// moves the scale for the frame's duration `dt` (seconds, >= 0).
   void measure(rasterizer::Context& ctx, const rasterizer::Image& frame, rasterizer::DepthStencilTarget& target, float dt);

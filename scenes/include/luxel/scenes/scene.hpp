@@ -274,12 +274,22 @@ struct Fog {
 };
 
 /// The auto-exposure controller (Source's env_tonemap_controller). min == max fixes the exposure.
+/// Scene::exposure holds everywhere outside the scene's exposure zones.
 struct Exposure {
   float min_scale = 0.5f, max_scale = 2.0f;
   float rate = 1.0f;                ///< adaptation per second
   float percent_target = 60.0f;     ///< the histogram percentile aimed at
   float percent_bright = 2.0f;
   float bloom_scale = 1.0f;
+};
+
+/// A box where other exposure controls hold while the camera is inside it: what a level designer
+/// does in Source with a trigger that sends env_tonemap_controller new values on entering
+/// (SetAutoExposureMin/Max, SetTonemapRate, SetBloomScale) and the defaults back on leaving.
+/// The scale does not jump: auto exposure carries on towards the new range at the new rate.
+struct ExposureZone {
+  glm::vec3 min{0.0f}, max{0.0f};   ///< world bounds, inches
+  Exposure exposure;
 };
 
 /// Baked radiosity normal mapping: the flat (un-bumped) lightmap and three directional lightmaps,
@@ -308,6 +318,7 @@ struct Scene {
   std::vector<ColorCorrection> color_corrections;
   Fog fog;
   Exposure exposure;
+  std::vector<ExposureZone> exposure_zones;  ///< the last zone holding the camera wins
   int sky_texture = -1;             ///< an HDR cube (Scene::textures) drawn behind everything, or -1
   glm::vec3 background{0.0f};       ///< linear, where there is no sky
   /// Inches per lightmap luxel (Source's "lightmapscale"; vbsp's DEFAULT_LUXEL_SIZE is 16): the
@@ -315,6 +326,10 @@ struct Scene {
   float lightmap_luxel_size = 16.0f;
   std::optional<Lightmaps> lightmaps;
 };
+
+/// The exposure controls at `position`: the last of Scene::exposure_zones whose box holds it
+/// (bounds inclusive), else Scene::exposure.
+const Exposure& exposure_at(const Scene& scene, glm::vec3 position);
 
 struct Bounds {
   glm::vec3 min{0.0f}, max{0.0f};
