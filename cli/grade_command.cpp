@@ -1,0 +1,176 @@
+// luxel grade IN OUT --lut LUT [--lut LUT ...] [--weight W ...] [--exact] [--save-cube FILE] [--threads N]:
+// color-corrects an 8-bit image with up to four LUTs (postfx/color_correction.hpp). A LUT is a
+// file OpenColorIO reads (.cube, .3dl, .csp, .spi3d, .clf...) or builtin:NAME (a grade preset).
+//
+// The engine's way (the default): each LUT sampled on the 32^3 lattice with 8-bit entries,
+// blended by colorcorrection_ps2x drawn through the rasterizer, 8 bits out. --exact: the same
+// blend in float, each LUT applied at its own resolution and interpolation (a file through
+// OpenColorIO, a preset exactly), to measure what the engine's way loses; written as floats
+// where OUT's format holds them (.exr), else rounded to 8 bits.
+//
+// Weights: one per LUT, each in [0, 1], summing to at most 1 (beyond 1 the blend no longer mixes
+// but brightens); the frame keeps 1 - sum (luxel's rule, SOURCE_FACTS §9.2 leaves it closed).
+// Without --weight, the LUTs share the frame equally (1/n each).
+//
+// Exit codes: 2 for bad arguments (weights, counts, an unknown builtin:NAME), 1 for files that
+// cannot be read or written; one line on stderr each.
+
+#include "commands.hpp"
+
+#include "luxel/postfx/color_correction.hpp"
+#include "luxel/postfx/lut_file.hpp"
+#include "luxel/postfx/lut_source.hpp"
+#include "luxel/scenes/image_io.hpp"
+
+#include <cmath>
+#include <cstdio>
+#include <iostream>
+#include <memory>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace luxel::cli {
+
+namespace {
+
+struct GradeOptions {
+  std::string in, out;
+  std::vector<std::string> luts;
+  std::vector<float> weights;
+  bool exact = false;
+  std::string save_cube;
+  int threads = 0;
+};
+
+std::string number(float v) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%g", v);
+  return text;
+}
+
+/// The weights the LUTs get, or an error message for bad ones.
+std::vector<float> weights_of(const GradeOptions& o, std::string& error) {
+  if (o.weights.empty()) return std::vector<float>(o.luts.size(), 1.0f / float(o.luts.size()));
+  if (o.weights.size() != o.luts.size()) {
+    error = std::to_string(o.weights.size()) + " --weight for " + std::to_string(o.luts.size()) +
+            " --lut: give one per LUT, or none";
+    return {};
+  }
+  float sum = 0.0f;
+  for (float w : o.weights) {
+    if (!(w >= 0.0f && w <= 1.0f)) {
+      error = "--weight " + number(w) + ": must be in [0, 1]";
+      return {};
+    }
+    sum += w;
+  }
+  if (sum > 1.0f + 1e-6f) {
+    error = "--weight: the weights sum to " + number(sum) + "; at most 1 (the frame keeps 1 - sum)";
+    return {};
+  }
+  return o.weights;
+}
+
+/// The input as an 8-bit frame; throws std::runtime_error "IN: problem".
+rasterizer::Image read_frame(const std::string& path) {
+  scenes::PixelImage image = scenes::read_image(path);
+  if (image.is_hdr()) {
+    throw std::runtime_error(path + ": a float image; luxel grade takes 8-bit frames (the engine grades its 8-bit back buffer)");
+  }
+  rasterizer::Image frame(image.width, image.height);
+  frame.rgba = std::move(image.rgba8);
+  return frame;
+}
+
+int run_grade(const GradeOptions& o) {
+  std::string error;
+  const std::vector<float> weights = weights_of(o, error);
+  if (!error.empty()) {
+    std::cerr << "luxel grade: " << error << "\n";
+    return 2;
+  }
+  if (o.luts.size() > size_t(postfx::kMaxLuts)) {
+    std::cerr << "luxel grade: " << o.luts.size() << " --lut: the engine blends at most " << postfx::kMaxLuts << "\n";
+    return 2;
+  }
+  if (!o.save_cube.empty() && o.luts.size() != 1) {
+    std::cerr << "luxel grade: --save-cube writes one LUT; " << o.luts.size() << " --lut given\n";
+    return 2;
+  }
+  std::vector<postfx::ColorTransform> transforms;
+  try {
+    for (const std::string& name : o.luts) transforms.push_back(postfx::color_transform_named(name));
+  } catch (const std::invalid_argument& e) {
+    std::cerr << "luxel grade: " << e.what() << "\n";
+    return 2;
+  } catch (const std::exception& e) {
+    std::cerr << "luxel grade: " << e.what() << "\n";
+    return 1;
+  }
+  try {
+    const rasterizer::Image frame = read_frame(o.in);
+    std::string what;
+    for (size_t k = 0; k < transforms.size(); ++k) {
+      what += (k ? ", " : "") + transforms[k].name + " (" + transforms[k].description + ") x " + number(weights[k]);
+    }
+    if (o.exact) {
+      std::vector<postfx::WeightedTransform> weighted;
+      for (size_t k = 0; k < transforms.size(); ++k) weighted.push_back({&transforms[k], weights[k]});
+      scenes::PixelImage image;
+      image.width = frame.width, image.height = frame.height;
+      image.rgba32f = postfx::color_correct_exact(frame, weighted);
+      scenes::write_image(image, o.out);
+      std::printf("%s -> %s: %s, exact (float, each LUT at its own resolution)\n", o.in.c_str(), o.out.c_str(), what.c_str());
+    } else {
+      std::vector<postfx::Lut> luts;
+      for (const postfx::ColorTransform& t : transforms) luts.push_back(postfx::sample_lut(t));
+      std::vector<postfx::WeightedLut> weighted;
+      for (size_t k = 0; k < luts.size(); ++k) weighted.push_back({&luts[k], weights[k]});
+      rasterizer::Context ctx(o.threads);
+      const rasterizer::Image graded = postfx::color_correct(ctx, frame, weighted);
+      scenes::write_image(graded.width, graded.height, graded.rgba, o.out);
+      std::printf("%s -> %s: %s, the engine's way (32^3 LUTs, 8 bits in and out)\n", o.in.c_str(), o.out.c_str(),
+                  what.c_str());
+    }
+    if (!o.save_cube.empty()) postfx::write_cube(postfx::sample_lut(transforms[0]), o.save_cube, transforms[0].name);
+  } catch (const std::invalid_argument& e) {
+    std::cerr << "luxel grade: " << e.what() << "\n";
+    return 2;
+  } catch (const std::exception& e) {
+    std::cerr << "luxel grade: " << e.what() << "\n";
+    return 1;
+  }
+  return 0;
+}
+
+}  // namespace
+
+Runner add_grade_command(CLI::App& app) {
+  auto o = std::make_shared<GradeOptions>();
+  CLI::App* cmd = app.add_subcommand(
+      "grade", "Color-correct an 8-bit image with up to four LUTs, the way Source's engine does (or exactly, --exact)");
+  cmd->add_option("in", o->in, "Input image (8-bit: PNG, JPEG, TGA, TIFF...)")->required();
+  cmd->add_option("out", o->out, "Output image; its extension picks the format")->required();
+  cmd->add_option("--lut", o->luts,
+                  "A LUT file OpenColorIO reads (.cube, .3dl, .csp, .spi3d, .clf...) or builtin:NAME (day-for-night, "
+                  "archival, warm, cool); up to 4")
+      ->required()
+      ->allow_extra_args(false);  // one value per --lut: what follows stays IN and OUT
+  cmd->add_option("--weight", o->weights,
+                  "One weight in [0, 1] per --lut, in order, summing to at most 1; the image keeps 1 - sum "
+                  "(default: 1/n each)")
+      ->allow_extra_args(false);
+  cmd->add_flag("--exact", o->exact,
+                "Blend in float with each LUT at its own resolution and interpolation (OpenColorIO for files), "
+                "instead of the engine's 32^3 8-bit volumes");
+  cmd->add_option("--save-cube", o->save_cube, "Also write the (one) LUT's 32^3 engine lattice as a .cube file");
+  cmd->add_option("--threads", o->threads, "Worker threads (default: all cores); never changes the result")
+      ->check(CLI::Range(0, 256));
+  return [cmd, o]() -> int {
+    if (!cmd->parsed()) return -1;
+    return run_grade(*o);
+  };
+}
+
+}  // namespace luxel::cli
