@@ -1,7 +1,8 @@
-// The color-correction pass: identity within one step on every 8-bit color, the rasterizer's
-// bytes equal to the shader's scalar lane run per pixel, the same bytes for 1, 2 and 3 threads,
-// weights blending as luxel's rule says (checked in double), the engine's 32^3 8-bit way against
-// the exact float path within a measured bound, and the argument checks.
+// The color-correction pass: identity on every 8-bit color, the rasterizer's bytes equal to the
+// shader's scalar lane run per pixel, the same bytes for 1, 2 and 3 threads, weights blending as
+// luxel's rule says (checked in double), the exact path as the trilinear interpolation of a file's
+// own lattice, the engine's 32^3 8-bit way against the exact path within a measured bound, and the
+// argument checks.
 
 #include "lut_support.hpp"
 #include "scenes/temp_dir.hpp"
@@ -174,6 +175,32 @@ TEST(ColorCorrection, WeightsBlendAsTheFormulaSays) {
   }
   EXPECT_EQ(worst, 0) << "away from half steps the bytes are the double formula's";
   EXPECT_LT(near_half, 10);
+}
+
+TEST(ColorCorrection, ExactPathAppliesEachLutAtItsOwnResolutionAndBlends) {
+  const scenes::test::TempDir dir;
+  const test::Lattice lattice = test::analytic_lattice(17);
+  test::write_cube_file(lattice, dir.file("analytic.cube"));
+  const ColorTransform file = read_lut_file(dir.file("analytic.cube"));
+  const ColorTransform night = color_transform_named("builtin:day-for-night");
+  const Grade night_grade = *grade_preset("day-for-night");
+  const rasterizer::Image frame = random_frame(64, 32, 3);
+  const WeightedTransform alone[] = {{&file, 1.0f}};
+  const WeightedTransform blend[] = {{&file, 0.25f}, {&night, 0.5f}};  // the frame keeps 0.25
+  const std::vector<float> a = color_correct_exact(frame, alone), b = color_correct_exact(frame, blend);
+  double worst_alone = 0.0, worst_blend = 0.0;
+  for (size_t p = 0; p < size_t(frame.width) * frame.height; ++p) {
+    const glm::dvec3 in = glm::dvec3(frame.rgba[4 * p], frame.rgba[4 * p + 1], frame.rgba[4 * p + 2]) / 255.0;
+    const glm::dvec3 lut = test::trilinear(lattice, in);
+    const glm::dvec3 mixed = 0.25 * in + 0.25 * lut + 0.5 * glm::dvec3(apply_grade(night_grade, glm::vec3(in)));
+    for (int c = 0; c < 3; ++c) {
+      worst_alone = std::max(worst_alone, std::abs(a[4 * p + c] - lut[c]));
+      worst_blend = std::max(worst_blend, std::abs(b[4 * p + c] - mixed[c]));
+    }
+    EXPECT_EQ(a[4 * p + 3], frame.rgba[4 * p + 3] / 255.0f);
+  }
+  EXPECT_LE(worst_alone, 1e-5) << "the 17^3 lattice, trilinear, in float";
+  EXPECT_LE(worst_blend, 1e-5);
 }
 
 /// Largest byte difference between the engine's way and the exact path rounded to 8 bits.
