@@ -20,6 +20,7 @@
 #include "luxel/postfx/color_correction.hpp"
 #include "luxel/postfx/lut_file.hpp"
 #include "luxel/postfx/lut_source.hpp"
+#include "luxel/rasterizer/limits.hpp"
 #include "luxel/scenes/image_io.hpp"
 
 #include <cmath>
@@ -123,6 +124,11 @@ int run_grade(const GradeOptions& o) {
       scenes::write_image(image, o.out);
       std::printf("%s -> %s: %s, exact (float, each LUT at its own resolution)\n", o.in.c_str(), o.out.c_str(), what.c_str());
     } else {
+      if (frame.width > rasterizer::kMaxTargetSize || frame.height > rasterizer::kMaxTargetSize) {
+        throw std::runtime_error(o.in + ": " + std::to_string(frame.width) + "x" + std::to_string(frame.height) +
+                                 " is larger than the rasterizer's targets (" + std::to_string(rasterizer::kMaxTargetSize) +
+                                 " on a side); --exact has no such limit");
+      }
       std::vector<postfx::Lut> luts;
       for (const postfx::ColorTransform& t : transforms) luts.push_back(postfx::sample_lut(t));
       std::vector<postfx::WeightedLut> weighted;

@@ -66,7 +66,7 @@ struct Grade {
 /// The gamma-space luma of §10.6.
 float grade_luma(glm::vec3 c);
 
-/// One color through the grade.
+/// One color through the grade (one that grade_transform accepts).
 glm::vec3 apply_grade(const Grade& grade, glm::vec3 color);
 
 /// The grade as a transform named `name`. Throws std::invalid_argument, naming the operator and
