@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <initializer_list>
 #include <stdexcept>
 
 namespace luxel::postfx {
@@ -40,6 +41,10 @@ std::vector<float> monotone_tangents(const std::vector<glm::vec2>& p) {
   return m;
 }
 
+bool finite(std::initializer_list<float> values) {
+  return std::all_of(values.begin(), values.end(), [](float v) { return std::isfinite(v); });
+}
+
 void check_curve(const Curve& c, const char* which) {
   if (c.points.empty()) return;
   auto fail = [&](const std::string& why) { throw std::invalid_argument(std::string("curves: ") + which + " curve " + why); };
@@ -58,8 +63,15 @@ void check(const GradeOperator& op) {
     check_curve(c->green, "green");
     check_curve(c->blue, "blue");
   } else if (const auto* l = std::get_if<Levels>(&op)) {
+    if (!finite({l->in_black, l->in_white, l->gamma, l->out_black, l->out_white})) {
+      throw std::invalid_argument("levels: every value must be finite");
+    }
     if (!(l->in_black < l->in_white)) throw std::invalid_argument("levels: in_black must be below in_white");
-    if (!(l->gamma > 0.0f) || !std::isfinite(l->gamma)) throw std::invalid_argument("levels: gamma must be above 0");
+    if (!(l->gamma > 0.0f)) throw std::invalid_argument("levels: gamma must be above 0");
+  } else if (const auto* b = std::get_if<ColorBalance>(&op)) {
+    const glm::vec3 o[3] = {b->shadows, b->midtones, b->highlights};
+    for (const glm::vec3& v : o)
+      if (!finite({v.x, v.y, v.z})) throw std::invalid_argument("color balance: every offset must be finite");
   } else if (const auto* s = std::get_if<Saturation>(&op)) {
     if (!(s->amount >= 0.0f) || !std::isfinite(s->amount)) throw std::invalid_argument("saturation: amount must be 0 or more");
   }

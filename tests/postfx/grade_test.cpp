@@ -92,6 +92,8 @@ TEST(Grade, ParametersOutOfRangeAreRefusedNamingTheOperator) {
   };
   refused(Levels{0.5f, 0.5f}, "levels: in_black must be below in_white");
   refused(Levels{0.0f, 1.0f, 0.0f}, "levels: gamma");
+  refused(Levels{0.0f, 1.0f, 1.0f, 0.0f, INFINITY}, "levels: every value must be finite");
+  refused(ColorBalance{{0.0f, std::nanf(""), 0.0f}, {}, {}}, "color balance: every offset must be finite");
   refused(Saturation{-1.0f}, "saturation");
   refused(Curves{Curve{{{0.0f, 0.0f}}}, {}, {}, {}}, "curves: master curve needs at least two points");
   refused(Curves{{}, Curve{{{0.5f, 0.0f}, {0.5f, 1.0f}}}, {}, {}}, "curves: red curve needs strictly increasing x");

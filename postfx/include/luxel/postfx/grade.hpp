@@ -70,7 +70,7 @@ float grade_luma(glm::vec3 c);
 glm::vec3 apply_grade(const Grade& grade, glm::vec3 color);
 
 /// The grade as a transform named `name`. Throws std::invalid_argument, naming the operator and
-/// the problem, for parameters outside the ranges above.
+/// the problem, for parameters outside the ranges above or not finite.
 ColorTransform grade_transform(Grade grade, std::string name);
 
 /// The preset's grade, or nullopt for an unknown name.
