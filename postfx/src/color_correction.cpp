@@ -16,11 +16,10 @@ namespace {
 
 namespace src = shading::source;
 
-/// Two triangles covering a width x height target; varying 0 is the frame's texture coordinate,
-/// so each pixel center reads its own texel.
+/// Two triangles covering the target; varying 0 is the frame's texture coordinate, so each pixel
+/// center reads its own texel.
 struct FullScreenVS {
   static constexpr int kVaryings = 1;
-  int width, height;
   void operator()(uint32_t i, rasterizer::VertexOutput<1>& out) const {
     static constexpr int kCorner[6][2] = {{0, 0}, {1, 0}, {0, 1}, {1, 0}, {1, 1}, {0, 1}};
     const float u = float(kCorner[i][0]), v = float(kCorner[i][1]);
@@ -84,7 +83,7 @@ rasterizer::Image color_correct(rasterizer::Context& ctx, const rasterizer::Imag
   state.rasterizer.cull = rasterizer::CullMode::None;
   state.depth_stencil.depth_enable = false;
   rasterizer::ColorTarget target(frame.width, frame.height);
-  const FullScreenVS vs{frame.width, frame.height};
+  const FullScreenVS vs;
   src::for_each_color_correction_combo([&]<src::ColorCorrectionCombo C>() {
     if (C.luts != int(luts.size())) return;
     rasterizer::draw(ctx, rasterizer::Framebuffer{&target, nullptr}, state, rasterizer::Geometry::non_indexed(6), vs,
