@@ -84,66 +84,68 @@ rasterizer::Image read_frame(const std::string& path) {
   return frame;
 }
 
+/// "t1.cube (3D LUT 17^3, trilinear) x 0.5, builtin:warm (grade: color balance) x 0.5"
+std::string describe(const std::vector<postfx::ColorTransform>& transforms, const std::vector<float>& weights) {
+  std::string what;
+  for (size_t k = 0; k < transforms.size(); ++k) {
+    what += (k ? ", " : "") + transforms[k].name + " (" + transforms[k].description + ") x " + number(weights[k]);
+  }
+  return what;
+}
+
+void grade_exact(const GradeOptions& o, const rasterizer::Image& frame,
+                 const std::vector<postfx::ColorTransform>& transforms, const std::vector<float>& weights) {
+  std::vector<postfx::WeightedTransform> weighted;
+  for (size_t k = 0; k < transforms.size(); ++k) weighted.push_back({&transforms[k], weights[k]});
+  scenes::PixelImage image;
+  image.width = frame.width, image.height = frame.height;
+  image.rgba32f = postfx::color_correct_exact(frame, weighted);
+  scenes::write_image(image, o.out);
+  std::printf("%s -> %s: %s, exact (float, each LUT at its own resolution)\n", o.in.c_str(), o.out.c_str(),
+              describe(transforms, weights).c_str());
+}
+
+void grade_engine(const GradeOptions& o, const rasterizer::Image& frame,
+                  const std::vector<postfx::ColorTransform>& transforms, const std::vector<float>& weights) {
+  if (frame.width > rasterizer::kMaxTargetSize || frame.height > rasterizer::kMaxTargetSize) {
+    throw std::runtime_error(o.in + ": " + std::to_string(frame.width) + "x" + std::to_string(frame.height) +
+                             " is larger than the rasterizer's targets (" + std::to_string(rasterizer::kMaxTargetSize) +
+                             " on a side); --exact has no such limit");
+  }
+  std::vector<postfx::Lut> luts;
+  for (const postfx::ColorTransform& t : transforms) luts.push_back(postfx::sample_lut(t));
+  std::vector<postfx::WeightedLut> weighted;
+  for (size_t k = 0; k < luts.size(); ++k) weighted.push_back({&luts[k], weights[k]});
+  rasterizer::Context ctx(o.threads);
+  const rasterizer::Image graded = postfx::color_correct(ctx, frame, weighted);
+  scenes::write_image(graded.width, graded.height, graded.rgba, o.out);
+  std::printf("%s -> %s: %s, the engine's way (32^3 LUTs, 8 bits in and out)\n", o.in.c_str(), o.out.c_str(),
+              describe(transforms, weights).c_str());
+}
+
 int run_grade(const GradeOptions& o) {
   std::string error;
   const std::vector<float> weights = weights_of(o, error);
+  if (o.luts.size() > size_t(postfx::kMaxLuts)) {
+    error = std::to_string(o.luts.size()) + " --lut: the engine blends at most " + std::to_string(postfx::kMaxLuts);
+  } else if (!o.save_cube.empty() && o.luts.size() != 1) {
+    error = "--save-cube writes one LUT; " + std::to_string(o.luts.size()) + " --lut given";
+  }
   if (!error.empty()) {
     std::cerr << "luxel grade: " << error << "\n";
     return 2;
   }
-  if (o.luts.size() > size_t(postfx::kMaxLuts)) {
-    std::cerr << "luxel grade: " << o.luts.size() << " --lut: the engine blends at most " << postfx::kMaxLuts << "\n";
-    return 2;
-  }
-  if (!o.save_cube.empty() && o.luts.size() != 1) {
-    std::cerr << "luxel grade: --save-cube writes one LUT; " << o.luts.size() << " --lut given\n";
-    return 2;
-  }
-  std::vector<postfx::ColorTransform> transforms;
   try {
+    std::vector<postfx::ColorTransform> transforms;
     for (const std::string& name : o.luts) transforms.push_back(postfx::color_transform_named(name));
-  } catch (const std::invalid_argument& e) {
-    std::cerr << "luxel grade: " << e.what() << "\n";
-    return 2;
-  } catch (const std::exception& e) {
-    std::cerr << "luxel grade: " << e.what() << "\n";
-    return 1;
-  }
-  try {
     const rasterizer::Image frame = read_frame(o.in);
-    std::string what;
-    for (size_t k = 0; k < transforms.size(); ++k) {
-      what += (k ? ", " : "") + transforms[k].name + " (" + transforms[k].description + ") x " + number(weights[k]);
-    }
-    if (o.exact) {
-      std::vector<postfx::WeightedTransform> weighted;
-      for (size_t k = 0; k < transforms.size(); ++k) weighted.push_back({&transforms[k], weights[k]});
-      scenes::PixelImage image;
-      image.width = frame.width, image.height = frame.height;
-      image.rgba32f = postfx::color_correct_exact(frame, weighted);
-      scenes::write_image(image, o.out);
-      std::printf("%s -> %s: %s, exact (float, each LUT at its own resolution)\n", o.in.c_str(), o.out.c_str(), what.c_str());
-    } else {
-      if (frame.width > rasterizer::kMaxTargetSize || frame.height > rasterizer::kMaxTargetSize) {
-        throw std::runtime_error(o.in + ": " + std::to_string(frame.width) + "x" + std::to_string(frame.height) +
-                                 " is larger than the rasterizer's targets (" + std::to_string(rasterizer::kMaxTargetSize) +
-                                 " on a side); --exact has no such limit");
-      }
-      std::vector<postfx::Lut> luts;
-      for (const postfx::ColorTransform& t : transforms) luts.push_back(postfx::sample_lut(t));
-      std::vector<postfx::WeightedLut> weighted;
-      for (size_t k = 0; k < luts.size(); ++k) weighted.push_back({&luts[k], weights[k]});
-      rasterizer::Context ctx(o.threads);
-      const rasterizer::Image graded = postfx::color_correct(ctx, frame, weighted);
-      scenes::write_image(graded.width, graded.height, graded.rgba, o.out);
-      std::printf("%s -> %s: %s, the engine's way (32^3 LUTs, 8 bits in and out)\n", o.in.c_str(), o.out.c_str(),
-                  what.c_str());
-    }
+    if (o.exact) grade_exact(o, frame, transforms, weights);
+    else grade_engine(o, frame, transforms, weights);
     if (!o.save_cube.empty()) postfx::write_cube(postfx::sample_lut(transforms[0]), o.save_cube, transforms[0].name);
-  } catch (const std::invalid_argument& e) {
+  } catch (const std::invalid_argument& e) {  // an unknown builtin:NAME
     std::cerr << "luxel grade: " << e.what() << "\n";
     return 2;
-  } catch (const std::exception& e) {
+  } catch (const std::exception& e) {  // files: "PATH: problem"
     std::cerr << "luxel grade: " << e.what() << "\n";
     return 1;
   }
