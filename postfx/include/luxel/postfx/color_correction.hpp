@@ -11,10 +11,10 @@
 //
 // How far apart the two are depends on the LUT: the engine resamples it on 32 points per axis,
 // clamps and rounds the entries to 8 bits, and interpolates again. Measured over every 8-bit color
-// (tests/postfx/color_correction_test.cpp checks every third level): a smooth 17^3 LUT and the
-// built-in presets within 4 steps; real looks with steep or out-of-range regions much further
-// in those regions (a 16^3 teal-and-orange look with negative entries, 21 steps; the 33^3 Lustre
-// .3dl, 13), which is what `luxel grade --exact` is there to show.
+// (tests/postfx/color_correction_test.cpp checks every third level): a smooth 17^3 LUT within 4
+// steps, the built-in presets within 2; real looks with steep or out-of-range regions much further
+// in those regions (a 16^3 teal-and-orange look with negative entries up to 22 steps, more than 2
+// in 1.4% of the channels; the 33^3 Lustre .3dl up to 13), which `luxel grade --exact` shows.
 //
 // Weights. The engine blends out = frame * defaultWeight + sum_k LUT_k(frame) * w_k with up to
 // four lookups (§9.2); how it derives defaultWeight from the entities' weights is closed (§9.2,
