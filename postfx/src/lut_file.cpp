@@ -24,9 +24,10 @@ namespace {
   throw std::runtime_error(path + ": " + problem);
 }
 
-/// OpenColorIO's message on one line: the first reader's complaint without the boilerplate
-/// around it and without the path, which the caller puts first.
-std::string condensed(std::string what, const std::string& absolute) {
+/// OpenColorIO's message on one printable line: the first reader's complaint without the
+/// boilerplate around it, the path (which the caller puts first) left out where it is quoted and
+/// shortened to the name given elsewhere, and the bytes of a binary file's "line" as '?'.
+std::string condensed(std::string what, const std::string& absolute, const std::string& path) {
   const std::string marker = "failed with: ";
   if (const size_t at = what.find(marker); at != std::string::npos) {
     what = what.substr(at + marker.size());
@@ -35,11 +36,13 @@ std::string condensed(std::string what, const std::string& absolute) {
   for (const std::string& quoted : {" (" + absolute + ")", "'" + absolute + "'"}) {
     for (size_t at; (at = what.find(quoted)) != std::string::npos;) what.erase(at, quoted.size());
   }
+  for (size_t at; (at = what.find(absolute)) != std::string::npos;) what.replace(at, absolute.size(), path);
   std::string line;
   for (char c : what) {
-    const bool space = std::isspace(static_cast<unsigned char>(c));
+    const unsigned char u = static_cast<unsigned char>(c);
+    const bool space = std::isspace(u);
     if (space && (line.empty() || line.back() == ' ')) continue;
-    line += space ? ' ' : c;
+    line += space ? ' ' : (u < 0x20 || u >= 0x7f) ? '?' : c;
   }
   while (!line.empty() && line.back() == ' ') line.pop_back();
   return line;
@@ -140,7 +143,7 @@ ColorTransform read_lut_file(const std::string& path) {
     description = describe_and_check(processor, path);
     cpu = processor->getOptimizedCPUProcessor(OCIO::BIT_DEPTH_F32, OCIO::BIT_DEPTH_F32, OCIO::OPTIMIZATION_LOSSLESS);
   } catch (const OCIO::Exception& e) {
-    fail(path, "not a LUT OpenColorIO reads: " + condensed(e.what(), absolute.string()));
+    fail(path, "not a LUT OpenColorIO reads: " + condensed(e.what(), absolute.string(), path));
   } catch (const std::bad_alloc&) {
     fail(path, "too large to read");
   }

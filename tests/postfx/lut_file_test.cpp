@@ -13,6 +13,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -170,6 +171,7 @@ void expect_one_line(const std::string& path, const std::string& problem) {
     const std::string what = e.what();
     EXPECT_EQ(what.rfind(path + ": ", 0), 0u) << what;
     EXPECT_EQ(what.find('\n'), std::string::npos) << what;
+    EXPECT_TRUE(std::all_of(what.begin(), what.end(), [](char c) { return c >= 0x20 && c < 0x7f; })) << what;
     EXPECT_NE(what.find(problem), std::string::npos) << "'" << problem << "' not in: " << what;
     std::printf("%s\n", what.c_str());
   }
@@ -190,6 +192,7 @@ TEST(LutFile, BadFilesGiveOneLineNamingTheFile) {
   write(dir.file("one.spi3d"), "SPILUT 1.0\n3 3\n1 1 1\n0 0 0 0.5 0.5 0.5\n");
   write(dir.file("big.spi3d"), "SPILUT 1.0\n3 3\n1000 1000 1000\n0 0 0 0 0 0\n");
   write(dir.file("notes.txt"), "dear diary\n");
+  write(dir.file("image.cube"), "\x89PNG\r\n\x1a\n\x01\x02");
   std::filesystem::create_directory(dir.file("folder.cube"));
 
   expect_one_line(dir.file("missing.cube"), "cannot open it");
@@ -206,6 +209,7 @@ TEST(LutFile, BadFilesGiveOneLineNamingTheFile) {
   expect_one_line(dir.file("one.spi3d"), "a 3D LUT of 1 point per axis cannot interpolate");
   expect_one_line(dir.file("big.spi3d"), "Grid size '1000' must not be greater than '129'");
   expect_one_line(dir.file("notes.txt"), "not a LUT OpenColorIO reads: ");  // every reader tried
+  expect_one_line(dir.file("image.cube"), "At line (1): '?PNG'. Malformed");
 }
 
 TEST(LutSource, NamesPickPresetsOrFiles) {
