@@ -1,6 +1,7 @@
-// luxel grade IN OUT --lut LUT [--lut LUT ...] [--weight W ...] [--exact] [--save-cube FILE] [--threads N]:
+// luxel grade IN OUT --lut LUT [--lut LUT ...] [--weight W ...] [--exact] [--save-lut FILE] [--threads N]:
 // color-corrects an 8-bit image with up to four LUTs (postfx/color_correction.hpp). A LUT is a
-// file OpenColorIO reads (.cube, .3dl, .csp, .spi3d, .clf...) or builtin:NAME (a grade preset).
+// file OpenColorIO reads (.cube, .3dl, .csp, .spi3d, .clf...), a Source .raw, or builtin:NAME (a
+// grade preset). --save-lut writes the engine's 32^3 lattice of the one LUT as .cube or .raw.
 //
 // The engine's way (the default): each LUT sampled on the 32^3 lattice with 8-bit entries,
 // blended by colorcorrection_ps2x drawn through the rasterizer, 8 bits out. --exact: the same
@@ -20,8 +21,10 @@
 #include "luxel/postfx/color_correction.hpp"
 #include "luxel/postfx/lut_file.hpp"
 #include "luxel/postfx/lut_source.hpp"
+#include "luxel/postfx/raw_lut_file.hpp"
 #include "luxel/rasterizer/limits.hpp"
 #include "luxel/scenes/image_io.hpp"
+#include "luxel/scenes/load.hpp"
 
 #include <cmath>
 #include <cstdio>
@@ -40,7 +43,7 @@ struct GradeOptions {
   std::vector<std::string> luts;
   std::vector<float> weights;
   bool exact = false;
-  std::string save_cube;
+  std::string save_lut;
   int threads = 0;
 };
 
@@ -123,13 +126,20 @@ void grade_engine(const GradeOptions& o, const rasterizer::Image& frame,
               describe(transforms, weights).c_str());
 }
 
+void save_lut(const postfx::Lut& lut, const std::string& path, const std::string& name) {
+  if (scenes::has_extension(path, ".raw")) postfx::write_raw_lut(lut, path);
+  else postfx::write_cube(lut, path, name);
+}
+
 int run_grade(const GradeOptions& o) {
   std::string error;
   const std::vector<float> weights = weights_of(o, error);
   if (o.luts.size() > size_t(postfx::kMaxLuts)) {
     error = std::to_string(o.luts.size()) + " --lut: the engine blends at most " + std::to_string(postfx::kMaxLuts);
-  } else if (!o.save_cube.empty() && o.luts.size() != 1) {
-    error = "--save-cube writes one LUT; " + std::to_string(o.luts.size()) + " --lut given";
+  } else if (!o.save_lut.empty() && o.luts.size() != 1) {
+    error = "--save-lut writes one LUT; " + std::to_string(o.luts.size()) + " --lut given";
+  } else if (!o.save_lut.empty() && !scenes::has_extension(o.save_lut, ".cube") && !scenes::has_extension(o.save_lut, ".raw")) {
+    error = "--save-lut " + o.save_lut + ": the name must end in .cube or .raw";
   }
   if (!error.empty()) {
     std::cerr << "luxel grade: " << error << "\n";
@@ -141,7 +151,7 @@ int run_grade(const GradeOptions& o) {
     const rasterizer::Image frame = read_frame(o.in);
     if (o.exact) grade_exact(o, frame, transforms, weights);
     else grade_engine(o, frame, transforms, weights);
-    if (!o.save_cube.empty()) postfx::write_cube(postfx::sample_lut(transforms[0]), o.save_cube, transforms[0].name);
+    if (!o.save_lut.empty()) save_lut(postfx::sample_lut(transforms[0]), o.save_lut, transforms[0].name);
   } catch (const std::invalid_argument& e) {  // an unknown builtin:NAME
     std::cerr << "luxel grade: " << e.what() << "\n";
     return 2;
@@ -161,8 +171,8 @@ Runner add_grade_command(CLI::App& app) {
   cmd->add_option("in", o->in, "Input image (8-bit: PNG, JPEG, TGA, TIFF...)")->required();
   cmd->add_option("out", o->out, "Output image; its extension picks the format")->required();
   cmd->add_option("--lut", o->luts,
-                  "A LUT file OpenColorIO reads (.cube, .3dl, .csp, .spi3d, .clf...) or builtin:NAME (day-for-night, "
-                  "archival, warm, cool); up to 4")
+                  "A LUT file OpenColorIO reads (.cube, .3dl, .csp, .spi3d, .clf...), a Source .raw, or builtin:NAME "
+                  "(day-for-night, archival, warm, cool); up to 4")
       ->required()
       ->allow_extra_args(false);  // one value per --lut: what follows stays IN and OUT
   cmd->add_option("--weight", o->weights,
@@ -172,7 +182,8 @@ Runner add_grade_command(CLI::App& app) {
   cmd->add_flag("--exact", o->exact,
                 "Blend in float with each LUT at its own resolution and interpolation (OpenColorIO for files), "
                 "instead of the engine's 32^3 8-bit volumes");
-  cmd->add_option("--save-cube", o->save_cube, "Also write the (one) LUT's 32^3 engine lattice as a .cube file");
+  cmd->add_option("--save-lut", o->save_lut,
+                  "Also write the (one) LUT's 32^3 engine lattice: FILE.cube, or FILE.raw (Source's own format)");
   cmd->add_option("--threads", o->threads, "Worker threads (default: all cores); never changes the result")
       ->check(CLI::Range(0, 256));
   return [cmd, o]() -> int {

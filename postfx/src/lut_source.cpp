@@ -4,6 +4,10 @@
 
 #include "luxel/postfx/grade.hpp"
 #include "luxel/postfx/lut_file.hpp"
+#include "luxel/postfx/raw_lut_file.hpp"
+
+#include <cctype>
+#include <filesystem>
 
 #include <stdexcept>
 
@@ -11,7 +15,11 @@ namespace luxel::postfx {
 
 ColorTransform color_transform_named(const std::string& name) {
   const std::string prefix = "builtin:";
-  if (name.rfind(prefix, 0) != 0) return read_lut_file(name);
+  if (name.rfind(prefix, 0) != 0) {
+    std::string extension = std::filesystem::path(name).extension().string();
+    for (char& c : extension) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    return extension == ".raw" ? raw_lut_transform(read_raw_lut(name), name) : read_lut_file(name);
+  }
   const std::string preset = name.substr(prefix.size());
   if (std::optional<Grade> grade = grade_preset(preset)) return grade_transform(std::move(*grade), name);
   std::string known;

@@ -1,7 +1,7 @@
 // `luxel grade` checked by what it writes: the engine's way gives the bytes postfx::color_correct
 // gives for the same image, LUTs and weights, for 1 and 2 threads alike; --exact gives
-// postfx::color_correct_exact's floats in an EXR; --save-cube writes the engine's lattice; an
-// image with alpha keeps it.
+// postfx::color_correct_exact's floats in an EXR; --save-lut writes the engine's lattice as .cube
+// or .raw.
 
 #include "cli/run_luxel.hpp"
 #include "scenes/temp_dir.hpp"
@@ -67,13 +67,15 @@ TEST(GradeCommand, ExactWritesTheFloatBlendAsExr) {
   EXPECT_LE(worst, 1e-6) << "float EXR: the floats as computed";
 }
 
-TEST(GradeCommand, SaveCubeWritesTheEngineLattice) {
+TEST(GradeCommand, SaveLutWritesTheEngineLatticeAsCubeOrRaw) {
   const scenes::test::TempDir dir;
   write_random_png(dir.file("in.png"));
-  const test::Process run = run_luxel("grade " + dir.file("in.png") + " " + dir.file("out.png") +
-                                      " --lut builtin:archival --save-cube " + dir.file("archival.cube") + " 2>&1");
-  ASSERT_EQ(run.exit_code, 0) << run.out;
-  EXPECT_EQ(postfx::resolve_lut(dir.file("archival.cube")), postfx::resolve_lut("builtin:archival"));
+  for (const char* file : {"archival.cube", "archival.raw"}) {
+    const test::Process run = run_luxel("grade " + dir.file("in.png") + " " + dir.file("out.png") +
+                                        " --lut builtin:archival --save-lut " + dir.file(file) + " 2>&1");
+    ASSERT_EQ(run.exit_code, 0) << run.out;
+    EXPECT_EQ(postfx::resolve_lut(dir.file(file)), postfx::resolve_lut("builtin:archival")) << file;
+  }
 }
 
 }  // namespace
