@@ -1,4 +1,5 @@
-// luxel: render stills, compare shader models, count shader costs, export and describe scenes, bake lightmaps (see `luxel --help`).
+// luxel: render stills, compare shader models, count shader costs, export and describe scenes, bake lightmaps,
+// color-correct images (see `luxel --help`).
 
 #include "commands.hpp"
 
@@ -15,7 +16,7 @@ int main(int argc, char** argv) {
   std::vector<luxel::cli::Runner> runners = {luxel::cli::add_render_command(app), luxel::cli::add_compare_command(app),
                                             luxel::cli::add_cost_command(app),
                                             luxel::cli::add_export_command(app), luxel::cli::add_info_command(app),
-                                            luxel::cli::add_bake_command(app)};
+                                            luxel::cli::add_bake_command(app), luxel::cli::add_grade_command(app)};
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {

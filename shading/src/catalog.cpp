@@ -2,6 +2,7 @@
 
 #include "luxel/shading/source/catalog.hpp"
 
+#include "luxel/shading/source/color_correction.hpp"
 #include "luxel/shading/source/lightmapped_generic.hpp"
 #include "luxel/shading/source/luminance_range.hpp"
 #include "luxel/shading/source/sky.hpp"
@@ -253,6 +254,24 @@ void add_luminance_range(std::vector<ShaderVariant>& out) {
   });
 }
 
+void add_color_correction(std::vector<ShaderVariant>& out) {
+  static const ColorCorrectionParams p = [] {
+    ColorCorrectionParams q;
+    q.lut_weights = glm::vec4(0.2f, 0.15f, 0.1f, 0.05f);
+    q.default_weight = 0.5f;
+    return q;
+  }();
+  for_each_color_correction_combo([&]<ColorCorrectionCombo C>() {
+    auto shade = []<class L>(const auto& get) {
+      std::array<float3<L>, kMaxColorCorrectionLuts> lookups;
+      for (int k = 0; k < kMaxColorCorrectionLuts; ++k) lookups[k] = float3<L>(get(3 + 3 * k), get(4 + 3 * k), get(5 + 3 * k));
+      return float4<L>(color_correction_combine<C>(float3<L>(get(0), get(1), get(2)), lookups, p), L(1.0f));
+    };
+    out.push_back(variant("ColorCorrection", "colorcorrection", C, 3 + 3 * kMaxColorCorrectionLuts, shade,
+                          [](ShaderModel m) { return measure_color_correction<C>(m); }));
+  });
+}
+
 }  // namespace
 
 const std::vector<ShaderVariant>& shader_catalog() {
@@ -265,6 +284,7 @@ const std::vector<ShaderVariant>& shader_catalog() {
     add_sky(c);
     add_water(c);
     add_luminance_range(c);
+    add_color_correction(c);
     return c;
   }();
   return catalog;

@@ -1,0 +1,52 @@
+#pragma once
+// The engine's color-correction LUT (SOURCE_FACTS §9.1): a 32x32x32 lattice of color24 entries,
+// gamma-space 8-bit in and out. Entry (r, g, b) holds what the color (r/31, g/31, b/31) becomes:
+// the shader's coordinates (§9.2, uvw = c * 31/32 + 0.5/32) put c = i/31 on texel center i, and
+// the volume is filtered trilinearly in between.
+//
+// Entries are stored red fastest, index r + 32 g + 1024 b: the bit layout of the RGBX5551 key
+// (§9.1). The engine's .raw loader is closed, so that order is an inference; it is also the
+// rasterizer's volume layout (x fastest, then y, then slices), so the entries upload as they are.
+
+#include "luxel/postfx/color_transform.hpp"
+#include "luxel/rasterizer/texture.hpp"
+#include "luxel/shading/source/color_correction.hpp"
+
+#include <array>
+#include <cstdint>
+#include <vector>
+
+namespace luxel::postfx {
+
+/// Lattice points per axis.
+inline constexpr int kLutSize = shading::source::kColorCorrectionLutSize;
+inline constexpr int kLutEntries = kLutSize * kLutSize * kLutSize;
+
+/// The color of lattice index i along an axis: i / 31.
+inline float lattice_color(int i) { return static_cast<float>(i) / static_cast<float>(kLutSize - 1); }
+
+struct Lut {
+  using Color24 = std::array<uint8_t, 3>;
+  std::vector<Color24> entries = std::vector<Color24>(kLutEntries);  ///< index r + 32 g + 1024 b
+
+  Color24& at(int r, int g, int b) { return entries[static_cast<size_t>((b * kLutSize + g) * kLutSize + r)]; }
+  const Color24& at(int r, int g, int b) const {
+    return entries[static_cast<size_t>((b * kLutSize + g) * kLutSize + r)];
+  }
+  bool operator==(const Lut&) const = default;
+
+  /// Every entry holds its own lattice color, rounded to 8 bits.
+  static Lut identity();
+};
+
+/// One 8-bit channel of a float: round(saturate(x) * 255), NaN -> 0.
+uint8_t to_unorm8(float x);
+
+/// The transform evaluated at every lattice point, each channel rounded with to_unorm8.
+Lut sample_lut(const ColorTransform& transform);
+
+/// The LUT as the shader's volume texture: 32^3 RGBA8 (alpha 255), one mip level, texel
+/// (r, g, b) = entry (r, g, b), read without sRGB decode.
+rasterizer::Texture lut_volume(const Lut& lut);
+
+}  // namespace luxel::postfx

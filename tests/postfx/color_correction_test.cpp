@@ -1,0 +1,257 @@
+// The color-correction pass: identity on every 8-bit color, the rasterizer's bytes equal to the
+// shader's scalar lane run per pixel, the same bytes for 1, 2 and 3 threads, weights blending as
+// luxel's rule says (checked in double), the exact path as the trilinear interpolation of a file's
+// own lattice, the engine's 32^3 8-bit way against the exact path within a measured bound, and the
+// argument checks.
+
+#include "lut_support.hpp"
+#include "scenes/temp_dir.hpp"
+
+#include "luxel/postfx/color_correction.hpp"
+#include "luxel/postfx/grade.hpp"
+#include "luxel/postfx/lut_file.hpp"
+#include "luxel/postfx/lut_source.hpp"
+#include "luxel/rasterizer/framebuffer.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <random>
+
+namespace luxel::postfx {
+namespace {
+
+namespace src = shading::source;
+
+rasterizer::Image random_frame(int width, int height, uint32_t seed) {
+  rasterizer::Image frame(width, height);
+  std::mt19937 rng(seed);
+  for (uint8_t& b : frame.rgba) b = static_cast<uint8_t>(rng() & 0xff);
+  return frame;
+}
+
+/// Every 8-bit color once when step is 1 (a 4096 x 4096 frame), every step-th per channel (and 255) otherwise.
+rasterizer::Image all_colors(int step) {
+  std::vector<int> levels;
+  for (int v = 0; v < 256; v += step) levels.push_back(v);
+  if (levels.back() != 255) levels.push_back(255);
+  const int n = int(levels.size());
+  const int side = int(std::ceil(std::sqrt(double(n) * n * n)));
+  rasterizer::Image frame(side, (n * n * n + side - 1) / side);
+  for (int i = 0; i < n * n * n; ++i) {
+    uint8_t* p = frame.rgba.data() + size_t(i) * 4;
+    p[0] = uint8_t(levels[i % n]), p[1] = uint8_t(levels[(i / n) % n]), p[2] = uint8_t(levels[i / (n * n)]), p[3] = 255;
+  }
+  return frame;
+}
+
+int max_step(const rasterizer::Image& a, const rasterizer::Image& b) {
+  int worst = 0;
+  for (size_t i = 0; i < a.rgba.size(); ++i) worst = std::max(worst, std::abs(int(a.rgba[i]) - int(b.rgba[i])));
+  return worst;
+}
+
+TEST(ColorCorrection, DefaultWeightIsWhatTheLookupsLeave) {
+  EXPECT_EQ(default_weight(std::vector<float>{0.25f, 0.5f}), 0.25f);
+  EXPECT_EQ(default_weight(std::vector<float>{0.7f, 0.6f}), 0.0f);
+  EXPECT_EQ(default_weight(std::vector<float>{}), 1.0f);
+}
+
+TEST(ColorCorrection, IdentityLutIsTheIdentityOnEveryColor) {
+  // Entries round(255 i / 31) are off by at most 15/31 of a step (255 i / 31 has 31sts as its
+  // fractions), so their trilinear mix stays within 15/31 of the color and rounds back to it: the
+  // issue's "within 1 step" holds with 0.
+  const rasterizer::Image frame = all_colors(1);
+  ASSERT_EQ(frame.width, 4096);
+  const Lut identity = Lut::identity();
+  const WeightedLut luts[] = {{&identity, 1.0f}};
+  rasterizer::Context ctx(2);
+  EXPECT_EQ(max_step(frame, color_correct(ctx, frame, luts)), 0);
+}
+
+/// The pass's parameters built the way color_correct builds them, for the scalar reference.
+struct ScalarReference {
+  rasterizer::Texture frame_texture;
+  std::vector<rasterizer::Texture> volumes;
+  src::ColorCorrectionParams params;
+  ScalarReference(const rasterizer::Image& frame, std::span<const WeightedLut> luts)
+      : frame_texture(rasterizer::Texture::create_2d(frame.width, frame.height, rasterizer::TextureFormat::RGBA8, 1)) {
+    frame_texture.upload(0, frame.rgba);
+    params.frame.texture = &frame_texture;
+    volumes.reserve(luts.size());
+    std::vector<float> weights;
+    for (size_t k = 0; k < luts.size(); ++k) {
+      volumes.push_back(lut_volume(*luts[k].lut));
+      params.luts[k].texture = &volumes.back();
+      params.lut_weights[int(k)] = luts[k].weight;
+      weights.push_back(luts[k].weight);
+    }
+    params.default_weight = default_weight(weights);
+  }
+  /// The float lane of the shader at each pixel center: RGBA in [0, 1] before the output merger.
+  template <src::ColorCorrectionCombo C>
+  std::vector<glm::vec4> run(int width, int height) const {
+    std::vector<glm::vec4> out;
+    for (int y = 0; y < height; ++y)
+      for (int x = 0; x < width; ++x) {
+        const shading::float2<float> uv((x + 0.5f) / width, (y + 0.5f) / height);
+        const shading::float4<float> c = src::color_correction<C>(uv, params);
+        out.push_back(glm::vec4(c.x, c.y, c.z, c.w));
+      }
+    return out;
+  }
+};
+
+TEST(ColorCorrection, PassGivesTheBytesOfTheScalarShaderAtEachPixel) {
+  const scenes::test::TempDir dir;
+  test::write_cube_file(test::analytic_lattice(17), dir.file("analytic.cube"));
+  const Lut luts[] = {resolve_lut(dir.file("analytic.cube")), resolve_lut("builtin:warm"),
+                      resolve_lut("builtin:day-for-night"), resolve_lut("builtin:cool")};
+  const WeightedLut weighted[] = {{&luts[0], 0.3f}, {&luts[1], 0.25f}, {&luts[2], 0.2f}, {&luts[3], 0.15f}};
+  const rasterizer::Image frame = random_frame(150, 90, 17);  // not whole tiles or stamps
+  rasterizer::Context ctx(2);
+  src::for_each_color_correction_combo([&]<src::ColorCorrectionCombo C>() {
+    const std::span<const WeightedLut> used(weighted, size_t(C.luts));
+    const rasterizer::Image pass = color_correct(ctx, frame, used);
+    const std::vector<glm::vec4> scalar = ScalarReference(frame, used).run<C>(frame.width, frame.height);
+    // The float lane filters the volume in double (rasterizer::sample_reference), the SIMD lane in
+    // float: the two may round a value within float error of a half step apart, nothing else.
+    int differ = 0, near_half = 0;
+    for (size_t p = 0; p < scalar.size(); ++p) {
+      for (int c = 0; c < 4; ++c) {
+        const float scaled = std::clamp(scalar[p][c], 0.0f, 1.0f) * 255.0f;
+        if (std::abs(scaled - std::floor(scaled) - 0.5f) < 2e-4f) {
+          ++near_half;
+          EXPECT_LE(std::abs(int(pass.rgba[4 * p + c]) - int(std::nearbyint(scaled))), 1);
+        } else {
+          differ += pass.rgba[4 * p + c] != uint8_t(std::nearbyint(scaled));
+        }
+      }
+    }
+    EXPECT_EQ(differ, 0) << C.name();
+    EXPECT_LT(near_half, int(scalar.size()) * 4 / 100) << C.name() << ": few values sit on a half step";
+    EXPECT_GT(max_step(pass, frame), 10) << C.name() << ": the LUTs change the frame";
+  });
+}
+
+TEST(ColorCorrection, SameBytesForAnyThreadCount) {
+  const Lut warm = resolve_lut("builtin:warm"), night = resolve_lut("builtin:day-for-night");
+  const WeightedLut luts[] = {{&warm, 0.6f}, {&night, 0.3f}};
+  const rasterizer::Image frame = random_frame(301, 170, 5);
+  rasterizer::Context one(1), two(2), three(3);
+  const rasterizer::Image a = color_correct(one, frame, luts);
+  EXPECT_EQ(a.rgba, color_correct(two, frame, luts).rgba);
+  EXPECT_EQ(a.rgba, color_correct(three, frame, luts).rgba);
+}
+
+/// The 8-bit LUT's trilinear lookup in double, at an 8-bit color (§9.2's coordinates: c * 31).
+glm::dvec3 lookup_reference(const Lut& lut, const uint8_t* rgb) {
+  test::Lattice l{kLutSize, std::vector<glm::vec3>(lut.entries.size())};
+  for (size_t i = 0; i < lut.entries.size(); ++i)
+    l.values[i] = glm::vec3(lut.entries[i][0], lut.entries[i][1], lut.entries[i][2]);
+  return test::trilinear(l, glm::dvec3(rgb[0], rgb[1], rgb[2]) / 255.0) / 255.0;
+}
+
+TEST(ColorCorrection, WeightsBlendAsTheFormulaSays) {
+  const Lut night = resolve_lut("builtin:day-for-night"), archival = resolve_lut("builtin:archival");
+  const WeightedLut luts[] = {{&night, 0.25f}, {&archival, 0.5f}};  // the frame keeps 0.25
+  const rasterizer::Image frame = random_frame(64, 48, 99);
+  rasterizer::Context ctx(2);
+  const rasterizer::Image out = color_correct(ctx, frame, luts);
+  int near_half = 0, worst = 0;
+  for (size_t p = 0; p < size_t(frame.width) * frame.height; ++p) {
+    const uint8_t* in = &frame.rgba[4 * p];
+    const glm::dvec3 want = 0.25 * glm::dvec3(in[0], in[1], in[2]) / 255.0 + 0.25 * lookup_reference(night, in) +
+                            0.5 * lookup_reference(archival, in);
+    for (int c = 0; c < 3; ++c) {
+      const double scaled = std::clamp(want[c], 0.0, 1.0) * 255.0;
+      const int d = std::abs(int(out.rgba[4 * p + c]) - int(std::lround(scaled)));
+      // Float and double may round a value within float error of a half step either way.
+      if (std::abs(scaled - std::floor(scaled) - 0.5) < 2e-4) ++near_half;
+      else worst = std::max(worst, d);
+    }
+    EXPECT_EQ(out.rgba[4 * p + 3], in[3]) << "alpha passes";
+  }
+  EXPECT_EQ(worst, 0) << "away from half steps the bytes are the double formula's";
+  EXPECT_LT(near_half, 10);
+}
+
+TEST(ColorCorrection, ExactPathAppliesEachLutAtItsOwnResolutionAndBlends) {
+  const scenes::test::TempDir dir;
+  const test::Lattice lattice = test::analytic_lattice(17);
+  test::write_cube_file(lattice, dir.file("analytic.cube"));
+  const ColorTransform file = read_lut_file(dir.file("analytic.cube"));
+  const ColorTransform night = color_transform_named("builtin:day-for-night");
+  const Grade night_grade = *grade_preset("day-for-night");
+  const rasterizer::Image frame = random_frame(64, 32, 3);
+  const WeightedTransform alone[] = {{&file, 1.0f}};
+  const WeightedTransform blend[] = {{&file, 0.25f}, {&night, 0.5f}};  // the frame keeps 0.25
+  const std::vector<float> a = color_correct_exact(frame, alone), b = color_correct_exact(frame, blend);
+  double worst_alone = 0.0, worst_blend = 0.0;
+  for (size_t p = 0; p < size_t(frame.width) * frame.height; ++p) {
+    const glm::dvec3 in = glm::dvec3(frame.rgba[4 * p], frame.rgba[4 * p + 1], frame.rgba[4 * p + 2]) / 255.0;
+    const glm::dvec3 lut = test::trilinear(lattice, in);
+    const glm::dvec3 mixed = 0.25 * in + 0.25 * lut + 0.5 * glm::dvec3(apply_grade(night_grade, glm::vec3(in)));
+    for (int c = 0; c < 3; ++c) {
+      worst_alone = std::max(worst_alone, std::abs(a[4 * p + c] - lut[c]));
+      worst_blend = std::max(worst_blend, std::abs(b[4 * p + c] - mixed[c]));
+    }
+    EXPECT_EQ(a[4 * p + 3], frame.rgba[4 * p + 3] / 255.0f);
+  }
+  EXPECT_LE(worst_alone, 1e-5) << "the 17^3 lattice, trilinear, in float";
+  EXPECT_LE(worst_blend, 1e-5);
+}
+
+/// Largest byte difference between the engine's way and the exact path rounded to 8 bits.
+int engine_vs_exact(const std::string& name, const rasterizer::Image& frame, rasterizer::Context& ctx) {
+  const ColorTransform transform = color_transform_named(name);
+  const Lut lut = sample_lut(transform);
+  const WeightedLut engine[] = {{&lut, 1.0f}};
+  const WeightedTransform exact[] = {{&transform, 1.0f}};
+  const rasterizer::Image a = color_correct(ctx, frame, engine);
+  const std::vector<float> b = color_correct_exact(frame, exact);
+  int worst = 0;
+  for (size_t i = 0; i < b.size(); ++i) worst = std::max(worst, std::abs(int(a.rgba[i]) - int(to_unorm8(b[i]))));
+  return worst;
+}
+
+TEST(ColorCorrection, EngineWayAgreesWithExactWithinTheStatedBound) {
+  const scenes::test::TempDir dir;
+  test::write_cube_file(test::analytic_lattice(17), dir.file("analytic.cube"));
+  const rasterizer::Image frame = all_colors(3);
+  rasterizer::Context ctx(2);
+  // The analytic 17^3 LUT: resampling on 32^3, 8-bit entries and 8-bit output together.
+  const int analytic = engine_vs_exact(dir.file("analytic.cube"), frame, ctx);
+  EXPECT_LE(analytic, 4);
+  std::printf("engine vs exact, 8-bit steps: analytic 17^3 .cube %d", analytic);
+  for (const std::string& preset : grade_preset_names()) {
+    const int d = engine_vs_exact("builtin:" + preset, frame, ctx);
+    EXPECT_LE(d, 2) << preset;
+    std::printf(", builtin:%s %d", preset.c_str(), d);
+  }
+  for (const char* file : {"freshluts/teal_and_orange_cinema.cube", "opencolorio/crosstalk.3dl",
+                           "opencolorio/discreet-3d-lut.3dl"}) {
+    std::printf(", %s %d", file, engine_vs_exact(std::string(LUXEL_TEST_DATA "/luts/") + file, frame, ctx));
+  }
+  std::printf("\n");
+}
+
+TEST(ColorCorrection, ArgumentsAreChecked) {
+  const Lut identity = Lut::identity();
+  const rasterizer::Image frame = random_frame(8, 8, 1);
+  rasterizer::Context ctx(1);
+  const std::vector<WeightedLut> five(5, WeightedLut{&identity, 0.1f});
+  EXPECT_THROW(color_correct(ctx, frame, {}), std::invalid_argument);
+  EXPECT_THROW(color_correct(ctx, frame, five), std::invalid_argument);
+  const WeightedLut negative[] = {{&identity, -0.1f}}, nan[] = {{&identity, std::nanf("")}}, none[] = {{nullptr, 0.5f}};
+  EXPECT_THROW(color_correct(ctx, frame, negative), std::invalid_argument);
+  EXPECT_THROW(color_correct(ctx, frame, nan), std::invalid_argument);
+  EXPECT_THROW(color_correct(ctx, frame, none), std::invalid_argument);
+  const ColorTransform t = color_transform_named("builtin:cool");
+  const WeightedTransform infinite[] = {{&t, INFINITY}};
+  EXPECT_THROW(color_correct_exact(frame, infinite), std::invalid_argument);
+}
+
+}  // namespace
+}  // namespace luxel::postfx
