@@ -69,6 +69,8 @@ void FrameOptions::add_to(CLI::App& cmd) {
                  "Frames before a histogram query is read back (the engine waited 3)")
       ->check(CLI::Range(1, 64))
       ->capture_default_str();
+  cmd.add_flag("!--no-color-correction", settings.color_correction,
+               "Leave out the scene's color-correction nodes (Source's mat_colorcorrection 0)");
 }
 
 std::optional<rasterizer::ContextOptions> FrameOptions::context_options(const std::string& command, int& code) const {
@@ -151,6 +153,10 @@ std::unique_ptr<frame::Renderer> FrameOptions::make_renderer(const std::string& 
   } catch (const std::invalid_argument& e) {
     std::cerr << "luxel " << command << ": " << e.what() << "\n";
     code = 2;
+    return nullptr;
+  } catch (const std::runtime_error& e) {  // a file the frame reads (a color-correction LUT)
+    std::cerr << "luxel " << command << ": " << e.what() << "\n";
+    code = 1;
     return nullptr;
   }
 }

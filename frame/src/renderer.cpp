@@ -1,5 +1,6 @@
 #include "luxel/frame/renderer.hpp"
 
+#include "color_correction_nodes.hpp"
 #include "model_lighting.hpp"
 #include "source_draws.hpp"
 #include "trivial_unlit.hpp"
@@ -186,6 +187,7 @@ struct FrameState {
   float exposure = 1.0f;
   std::optional<postfx::AutoExposure> auto_exposure;
   std::optional<float> last_frame_time;
+  std::optional<ColorCorrectionNodes> color_correction;  // when the frame blends the scene's nodes
 
   FrameState(const scenes::Scene& s, const FrameSettings& f, std::shared_ptr<const SceneTextures> t)
       : scene(&s), settings(f), color(f.width, f.height, f.samples), depth(f.width, f.height, f.samples), prepared(std::move(t)) {}
@@ -641,6 +643,7 @@ Renderer::Renderer(const scenes::Scene& scene, const FrameSettings& settings, st
   st.completed_meshes.resize(scene.meshes.size());
   st.exposure = frame_exposure(scene, settings);
   if (uses_auto_exposure(scene, settings)) st.auto_exposure.emplace(auto_exposure_settings(frame_controls(scene, settings), settings));
+  if (settings.color_correction && !settings.cubemap_capture && !scene.color_corrections.empty()) st.color_correction.emplace(scene);
   move_models(st, -1.0f);
   build_views(st);
 }
@@ -694,6 +697,10 @@ void Renderer::render(Context& ctx) {
       st.exposure = st.auto_exposure->scale();
       st.views_current = false;  // the draws carry the scale in their constants
     }
+  }
+  if (st.color_correction) {
+    const std::vector<postfx::WeightedLut> luts = st.color_correction->weighted_at(frame_camera(*st.scene, st.settings).position);
+    if (!luts.empty()) clock.run("color correction", 1, [&] { st.image = postfx::color_correct(ctx, st.image, luts); });
   }
   st.shader_uses.clear();
   if (st.settings.count_shading) {

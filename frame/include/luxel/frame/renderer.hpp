@@ -52,6 +52,10 @@
 //    controls where the camera is (scenes::exposure_at: the zone holding it, else the scene's);
 //    a clock that goes back starts the exposure again. Without a range anywhere, the one scale,
 //    fixed, and no histogram pass.
+//  - After the histogram pass, color correction (FrameSettings::color_correction): the scene's
+//    color-correction nodes weighted by the eye's distance through their falloffs, the four
+//    heaviest blended by Source's colorcorrection pass through 32^3 LUTs (postfx/
+//    color_correction.hpp), when any weight is not 0 (the "color correction" pass).
 // Order: the water's views, then opaque meshes in scene order (depth LESS, single-sided materials
 // cull their back faces, front faces counter-clockwise), alpha-tested ones with D3D9's alpha test (GREATEREQUAL
 // $alphatestreference), then the sky, then translucent meshes back to front by the distance of
@@ -133,6 +137,8 @@ struct FrameSettings {
   /// How auto exposure counts its histogram: target algorithm, counting method, query latency,
   /// region (the scene's Exposure gives the range, rate and percentages).
   postfx::HistogramSettings histogram{};
+  /// Blend the scene's color-correction nodes into the finished frame (mat_colorcorrection).
+  bool color_correction = true;
   /// Count the pixels each shader combo shades (Renderer::shader_uses); off, a frame counts nothing.
   bool count_shading = false;
   /// Time each pass (Renderer::pass_times). The rasterizer then runs each pass over all tiles
@@ -161,7 +167,7 @@ struct ModelLightingState {
 struct PassTime {
   std::string pass;  ///< "views" (the draws made anew after the clock or the exposure moved), "water
                      ///< reflection", "water refraction", "opaque", "sky", "translucent", "resolve",
-                     ///< "histogram"
+                     ///< "histogram", "color correction"
   double ms = 0.0;
   int draws = 0;
 };
@@ -190,8 +196,9 @@ class Renderer {
   /// settings (size outside 1..kMaxTargetSize, samples not 1, 2, 4 or 8, a model that is
   /// not a pixel-shader model, an exposure that is not positive and finite), a missing camera,
   /// or what the scene lacks for its materials (lightmaps, uv1, normals for tangents, a water
-  /// normal map, water that is not a horizontal plane or neither reflects nor refracts).
-  /// `textures`: the scene's textures prepared before (textures.hpp: renderers of one scene
+  /// normal map, water that is not a horizontal plane or neither reflects nor refracts, an
+  /// unknown built-in LUT); std::runtime_error naming the file for a color-correction LUT file
+  /// that cannot be read. `textures`: the scene's textures prepared before (textures.hpp: renderers of one scene
   /// share them); null: prepared here.
   Renderer(const scenes::Scene& scene, const FrameSettings& settings, std::shared_ptr<const SceneTextures> textures = nullptr);
   ~Renderer();
