@@ -52,6 +52,10 @@ void Bloom::fit(int frame_width, int frame_height) {
   }
 }
 
+void Bloom::require_copy(const char* pass) const {
+  if (!frame_texture_) throw std::logic_error(std::string("bloom: ") + pass + " before any copy of a frame");
+}
+
 void Bloom::keep_small(rasterizer::Context& ctx, int index) {
   rasterizer::resolve_into(ctx, *small_target_, small_image_);
   small_texture_[index]->upload(0, std::span<const uint8_t>(small_image_.rgba));
@@ -69,6 +73,7 @@ void Bloom::copy(const rasterizer::Image& frame) {
 }
 
 void Bloom::downsample(rasterizer::Context& ctx) {
+  require_copy("downsample");
   const int W = frame_texture_->width(), H = frame_texture_->height();
   src::DownsampleParams params;
   params.frame = {0, &*frame_texture_, bilinear_clamped()};
@@ -83,6 +88,7 @@ void Bloom::downsample(rasterizer::Context& ctx) {
 }
 
 void Bloom::blur_x(rasterizer::Context& ctx) {
+  require_copy("blur_x");
   const int w = small_target_->width(), h = small_target_->height();
   src::BlurParams params = src::blur_constants(src::BlurAxis::horizontal, w, h, options_.vertical_step, 1.0f);
   params.source = {0, &*small_texture_[0], bilinear_clamped()};
@@ -92,6 +98,7 @@ void Bloom::blur_x(rasterizer::Context& ctx) {
 }
 
 void Bloom::blur_y(rasterizer::Context& ctx, float amount) {
+  require_copy("blur_y");
   const int w = small_target_->width(), h = small_target_->height();
   src::BlurParams params = src::blur_constants(src::BlurAxis::vertical, w, h, options_.vertical_step, amount);
   params.source = {0, &*small_texture_[1], bilinear_clamped()};
@@ -101,6 +108,7 @@ void Bloom::blur_y(rasterizer::Context& ctx, float amount) {
 }
 
 void Bloom::add(rasterizer::Context& ctx, rasterizer::ColorTarget& frame) {
+  require_copy("add");
   src::BloomAddParams params;
   params.bloom = {0, &*small_texture_[0], bilinear_clamped()};
   const int w = small_target_->width(), h = small_target_->height();

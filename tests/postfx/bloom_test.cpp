@@ -12,6 +12,7 @@
 #include <cmath>
 #include <cstdio>
 #include <random>
+#include <stdexcept>
 #include <vector>
 
 namespace luxel::postfx {
@@ -311,6 +312,7 @@ TEST(Bloom, RefusesFramesSmallerThanFourByFour) {
   rasterizer::Context ctx(1);
   rasterizer::Image tiny = solid(3, 8, 10);
   EXPECT_THROW(Bloom().apply(ctx, tiny, 1.0f), std::invalid_argument);
+  EXPECT_THROW(Bloom().downsample(ctx), std::logic_error) << "a pass before any copy";
 }
 
 TEST(BloomAmount, SmoothsTowardTheScaleAndScalesLdr) {

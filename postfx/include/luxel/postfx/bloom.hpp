@@ -60,7 +60,8 @@ class Bloom {
   /// The same on a resolved frame held as an image.
   void apply(rasterizer::Context& ctx, rasterizer::Image& frame, float amount);
 
-  // The passes one by one, in this order (benchmarks time them; tests look between them).
+  // The passes one by one, in this order (benchmarks time them; tests look between them). A pass
+  // before any copy throws std::logic_error.
   void copy(rasterizer::Context& ctx, const rasterizer::ColorTarget& frame);
   void copy(const rasterizer::Image& frame);
   void downsample(rasterizer::Context& ctx);
@@ -74,6 +75,8 @@ class Bloom {
  private:
   /// Makes the frame copy, the small targets and textures fit a frame of this size.
   void fit(int frame_width, int frame_height);
+  /// Throws std::logic_error naming `pass` when no frame has been copied yet.
+  void require_copy(const char* pass) const;
   /// Reads the small target back (small_image_) into small texture `index`: a render target that
   /// the next pass samples, as the SDK's targets are also textures.
   void keep_small(rasterizer::Context& ctx, int index);
