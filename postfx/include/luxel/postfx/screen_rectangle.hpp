@@ -3,8 +3,9 @@
 // (IMatRenderContext), which maps a rectangle of source texels onto a rectangle of destination
 // pixels centre to centre: the centre of source texel (x0, y0) lands on the centre of the first
 // destination pixel and the centre of (x1, y1) on the centre of the last. With a destination
-// w pixels wide, one pixel steps (x1 - x0) / (w - 1) texels (0 when w is 1), so the quad's edges
-// carry u = (x0 + 0.5 -/+ step / 2) / texture_width (and likewise v).
+// w pixels wide, one pixel steps s = (x1 - x0) / (w - 1) texels (0 when w is 1), so u runs from
+// (x0 + 0.5 - s/2) / texture_width at the quad's left edge to (x1 + 0.5 + s/2) / texture_width at
+// its right edge, and pixel i reads u = (x0 + 0.5 + i s) / texture_width (likewise v).
 //
 // The SDK's quad sits at D3D9 screen position -0.5 (its half-pixel offset), which is luxel's pixel
 // edge 0 (rasterizer/state.hpp), so the rectangle here covers the whole target [0, w) x [0, h).
