@@ -112,8 +112,8 @@ void Bloom::add(rasterizer::Context& ctx, rasterizer::ColorTarget& frame) {
   src::BloomAddParams params;
   params.bloom = {0, &*small_texture_[0], bilinear_clamped()};
   const int w = small_target_->width(), h = small_target_->height();
-  draw_screen_rectangle(ctx, frame, src::bloom_add_pipeline_state(),
-                        screen_rectangle(frame.width(), frame.height(), whole_texture(w, h)),
+  const TexelRect rect{0.0f, -0.5f, static_cast<float>(w - 1), static_cast<float>(h - 1), w, h};
+  draw_screen_rectangle(ctx, frame, src::bloom_add_pipeline_state(), screen_rectangle(frame.width(), frame.height(), rect),
                         src::BloomAddPixelShader{&params});
   ctx.flush();  // the draw reads `params`, which ends here
 }

@@ -226,10 +226,11 @@ Plane reference_bloom(const rasterizer::Image& image, double amount, bool quirk)
   };
   const Plane blurred = blur(blur(small, 1.0 / w, 0.0, 1.0), 0.0, quirk ? 1.0 / w : 1.0 / h, amount);
   Plane out = frame;
-  const double ax = double(w - 1) / (W - 1), ay = double(h - 1) / (H - 1);
+  // The add's rectangle: small texels (0, -0.5) to (w - 1, h - 1) over the frame (§8.3).
+  const double ax = double(w - 1) / (W - 1), ay = (h - 1 + 0.5) / (H - 1);
   for (int y = 0; y < H; ++y)
     for (int x = 0; x < W; ++x)
-      out.texels[size_t(y) * W + x] += blurred.sample((0.5 + x * ax) / w, (0.5 + y * ay) / h);
+      out.texels[size_t(y) * W + x] += blurred.sample((0.5 + x * ax) / w, (-0.5 + 0.5 + y * ay) / h);
   return out.rounded();
 }
 
