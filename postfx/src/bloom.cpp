@@ -119,6 +119,7 @@ void Bloom::add(rasterizer::Context& ctx, rasterizer::ColorTarget& frame) {
 }
 
 void Bloom::apply(rasterizer::Context& ctx, rasterizer::ColorTarget& frame, float amount) {
+  if (!(amount > 0.0f)) return;
   copy(ctx, frame);
   downsample(ctx);
   blur_x(ctx);
@@ -127,6 +128,7 @@ void Bloom::apply(rasterizer::Context& ctx, rasterizer::ColorTarget& frame, floa
 }
 
 void Bloom::apply(rasterizer::Context& ctx, rasterizer::Image& frame, float amount) {
+  if (!(amount > 0.0f)) return;
   copy(frame);
   if (!image_target_ || image_target_->width() != frame.width || image_target_->height() != frame.height) {
     image_target_.emplace(frame.width, frame.height);

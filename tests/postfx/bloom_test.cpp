@@ -314,6 +314,8 @@ TEST(Bloom, RefusesFramesSmallerThanFourByFour) {
   rasterizer::Image tiny = solid(3, 8, 10);
   EXPECT_THROW(Bloom().apply(ctx, tiny, 1.0f), std::invalid_argument);
   EXPECT_THROW(Bloom().downsample(ctx), std::logic_error) << "a pass before any copy";
+  rasterizer::Image small_but_unbloomed = tiny;
+  EXPECT_NO_THROW(Bloom().apply(ctx, small_but_unbloomed, 0.0f)) << "amount 0: nothing runs, as in the SDK";
 }
 
 TEST(BloomAmount, SmoothsTowardTheScaleAndScalesLdr) {

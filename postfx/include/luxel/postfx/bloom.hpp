@@ -57,7 +57,8 @@ class Bloom {
   explicit Bloom(BloomOptions options = {}) : options_(options) {}
 
   /// All five passes: adds the bloom of `frame` (any sample count) onto it. `amount` is this
-  /// frame's bloom amount (BloomAmount::advance).
+  /// frame's bloom amount (BloomAmount::advance); at 0 or below nothing runs, as in the SDK
+  /// (bPerformBloom needs a bloom scale above 0).
   void apply(rasterizer::Context& ctx, rasterizer::ColorTarget& frame, float amount);
   /// The same on a resolved frame held as an image.
   void apply(rasterizer::Context& ctx, rasterizer::Image& frame, float amount);
