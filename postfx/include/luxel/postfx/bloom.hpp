@@ -23,10 +23,11 @@
 // §8.3, and unexplained there).
 //
 // Frame sizes: the SDK asserts that the small targets are exactly a quarter of the frame. Here a
-// frame of any size from 4x4 up is accepted: the small targets are floor(W/4) x floor(H/4), the
-// same formulas place the rectangles, and for W or H not a multiple of 4 the last one to three
-// columns or rows reach the bloom only through the clamped taps of the last small texel. Smaller
-// frames throw std::invalid_argument.
+// frame of any size from 4x4 up is accepted: the small targets are floor(W/4) x floor(H/4) and the
+// same formulas place the rectangles. The downsample's 4x4 footprints then sit
+// (W-2) / (floor(W/4)-1) source texels apart, as at every size (a little over 4: 4.006 at 1280),
+// still from the first texel to the last; a small target one texel wide (W of 4 to 7) reads the
+// first footprint only. Smaller frames throw std::invalid_argument.
 
 #include "luxel/rasterizer/context.hpp"
 #include "luxel/rasterizer/framebuffer.hpp"
