@@ -94,6 +94,30 @@ class ClearDepthStencilCommand final : public detail::Command {
   std::optional<uint8_t> stencil_;
 };
 
+/// Copies one tile's pixels of the image into every sample of the target.
+class LoadImageCommand final : public detail::Command {
+ public:
+  LoadImageCommand(const Image& image, ColorTarget& target) : image_(image), target_(target) {}
+  void execute(int tile, detail::TileCounters&) override {
+    const SurfaceLayout& L = target_.layout();
+    const int x0 = (tile % L.tiles_x) * kTileSize, y0 = (tile / L.tiles_x) * kTileSize;
+    const int width = std::min(kTileSize, L.width - x0), height = std::min(kTileSize, L.height - y0);
+    uint32_t* texels = target_.tile(tile);
+    for (int y = 0; y < height; ++y) {
+      for (int x = 0; x < width; ++x) {
+        uint32_t rgba;
+        std::memcpy(&rgba, image_.pixel(x0 + x, y0 + y), 4);
+        const int offset = pixel_offset_in_tile(x, y);
+        for (int s = 0; s < L.samples; ++s) texels[s * kTilePixels + offset] = rgba;
+      }
+    }
+  }
+
+ private:
+  const Image& image_;
+  ColorTarget& target_;
+};
+
 /// Box filter of one tile's samples into the image (a plain copy for one sample).
 class ResolveCommand final : public detail::Command {
  public:
@@ -163,6 +187,17 @@ void clear_depth_stencil(Context& ctx, DepthStencilTarget& target, float depth, 
 
 void clear_depth(Context& ctx, DepthStencilTarget& target, float depth) {
   record_depth_clear(ctx, target, depth, std::nullopt);
+}
+
+void load_image(Context& ctx, const Image& image, ColorTarget& target) {
+  if (image.width != target.width() || image.height != target.height()) {
+    throw std::invalid_argument("load_image: a " + std::to_string(image.width) + "x" + std::to_string(image.height) +
+                                " image into a " + std::to_string(target.width()) + "x" +
+                                std::to_string(target.height()) + " target");
+  }
+  detail::CommandQueue& queue = queue_for(ctx, target.layout());
+  ctx.refer(target);
+  queue.push(std::make_unique<LoadImageCommand>(image, target));
 }
 
 void resolve_into(Context& ctx, const ColorTarget& target, Image& image) {

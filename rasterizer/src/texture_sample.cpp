@@ -650,6 +650,8 @@ Float4 sample_grad(const Texture& texture, const Sampler& sampler, const TexCoor
 }
 
 Float4 sample(const Texture& texture, const Sampler& sampler, const TexCoord& coord, const Float& bias) {
+  // One filter on both sides of the crossover and level 0 only: no LOD changes the result.
+  if (sampler.mip == MipFilter::None && sampler.min == sampler.mag) return sample_level(texture, sampler, coord, Float(0.0f));
   const bool has_w = texture.kind() != TextureKind::Texture2D;
   const Float zero(0.0f);
   const TexCoord dx{simd::ddx(coord.x), simd::ddx(coord.y), has_w ? simd::ddx(coord.z) : zero};

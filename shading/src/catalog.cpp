@@ -2,7 +2,11 @@
 
 #include "luxel/shading/source/catalog.hpp"
 
+#include "luxel/shading/source/bloom_add.hpp"
+#include "luxel/shading/source/bloom_blur.hpp"
+#include "luxel/shading/source/bloom_downsample.hpp"
 #include "luxel/shading/source/color_correction.hpp"
+#include "luxel/shading/source/film_grain.hpp"
 #include "luxel/shading/source/lightmapped_generic.hpp"
 #include "luxel/shading/source/luminance_range.hpp"
 #include "luxel/shading/source/sky.hpp"
@@ -272,6 +276,47 @@ void add_color_correction(std::vector<ShaderVariant>& out) {
   });
 }
 
+/// The post-processing shaders have no static combos: one variant each.
+struct SingleVariant {
+  std::string name() const { return "default"; }
+};
+
+void add_bloom(std::vector<ShaderVariant>& out) {
+  static const DownsampleParams downsample_params{};
+  auto downsample_shade = []<class L>(const auto& get) {
+    std::array<float3<L>, 4> taps;
+    for (int i = 0; i < 4; ++i) taps[i] = float3<L>(get(3 * i), get(3 * i + 1), get(3 * i + 2));
+    return downsample_combine(taps, downsample_params);
+  };
+  out.push_back(variant("Downsample_nohdr", "downsample", SingleVariant{}, 12, downsample_shade, measure_downsample));
+
+  static const BlurParams blur_params = blur_constants(BlurAxis::vertical, 320, 180, BlurStep::sdk_width_quirk, 0.3f);
+  auto blur_shade = []<class L>(const auto& get) {
+    auto texel = [&](int i) { return float3<L>(get(3 * i), get(3 * i + 1), get(3 * i + 2)); };
+    BlurTaps<L> t;
+    t.centre = texel(0);
+    for (int k = 0; k < 6; ++k) {
+      t.plus[k] = texel(1 + k);
+      t.minus[k] = texel(7 + k);
+    }
+    return blur_combine(t, blur_params);
+  };
+  out.push_back(variant("BlurFilter", "blur", SingleVariant{}, 39, blur_shade, measure_blur));
+
+  auto add_shade = []<class L>(const auto& get) { return bloom_add_combine(float3<L>(get(0), get(1), get(2))); };
+  out.push_back(variant("bloomadd", "bloomadd", SingleVariant{}, 3, add_shade, measure_bloom_add));
+}
+
+void add_film_grain(std::vector<ShaderVariant>& out) {
+  static const FilmGrainParams p = [] {
+    FilmGrainParams q;
+    q.noise_scale = glm::vec4(0.1f, 0.1f, 0.1f, 0.9f);
+    return q;
+  }();
+  auto shade = []<class L>(const auto& get) { return film_grain_combine(float4<L>(get(0), get(1), get(2), get(3)), p); };
+  out.push_back(variant("filmgrain", "filmgrain", SingleVariant{}, 4, shade, measure_film_grain));
+}
+
 }  // namespace
 
 const std::vector<ShaderVariant>& shader_catalog() {
@@ -285,6 +330,8 @@ const std::vector<ShaderVariant>& shader_catalog() {
     add_water(c);
     add_luminance_range(c);
     add_color_correction(c);
+    add_bloom(c);
+    add_film_grain(c);
     return c;
   }();
   return catalog;

@@ -744,6 +744,29 @@ TEST(TextureLod, ImplicitFromQuadDerivatives) {
   }
 }
 
+TEST(TextureLod, OneFilterWithoutMipsReadsTheSameAtAnyLod) {
+  // sample() skips the LOD for such a sampler: it must equal level 0 at any derivatives and bias.
+  std::mt19937 rng(9);
+  Texture t = Texture::create_2d(64, 64, TextureFormat::RGBA8);
+  fill_random(t, rng);
+  LaneValues u, v;
+  for (int l = 0; l < kLanes; ++l) {
+    u[l] = 0.1f + (simd::lane_x(l) + 0.5f) * (9 / 64.0f);  // minified: LOD about 3
+    v[l] = 0.2f + (simd::lane_y(l) + 0.5f) * (0.3f / 64.0f);
+  }
+  const TexCoord c{lanes_of(u), lanes_of(v), simd::Float(0.0f)};
+  for (const Filter f : {Filter::Point, Filter::Linear}) {
+    Sampler s;
+    s.min = s.mag = f;
+    s.mip = MipFilter::None;
+    const auto level0 = unpack(sample_level(t, s, c, simd::Float(0.0f)));
+    for (const float bias : {0.0f, 4.0f, -3.0f, std::numeric_limits<float>::quiet_NaN()}) {
+      const auto implicit = unpack(sample(t, s, c, simd::Float(bias)));
+      for (int l = 0; l < kLanes; ++l) EXPECT_EQ(implicit[l], level0[l]) << "lane " << l << " bias " << bias;
+    }
+  }
+}
+
 // --- Cube maps --------------------------------------------------------------------------------
 
 /// A cube whose texel (face, x, y) holds the number face * n * n + y * n + x (R32F, exact).

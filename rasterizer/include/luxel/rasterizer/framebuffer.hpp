@@ -148,6 +148,12 @@ void clear_depth_stencil(Context& ctx, DepthStencilTarget& target, float depth, 
 /// Depth alone (D3DCLEAR_ZBUFFER without D3DCLEAR_STENCIL): stencil keeps its values.
 void clear_depth(Context& ctx, DepthStencilTarget& target, float depth);
 
+/// Loads an image into every sample of a target of the same size (the reverse of a one-sample
+/// resolve): how a finished frame held as an Image comes back as a target that post-processing
+/// passes draw onto. Recorded like a clear; the image must stay alive until the next flush.
+/// Throws std::invalid_argument when the sizes differ.
+void load_image(Context& ctx, const Image& image, ColorTarget& target);
+
 /// Box-filter resolve: each channel of each pixel is the rounded mean of its samples' 8-bit
 /// values (a plain copy out of the tiled layout for one sample). Flushes the context.
 Image resolve(Context& ctx, const ColorTarget& target);

@@ -61,6 +61,8 @@
 // - MipFilter::Point reads level floor(lod + 0.5) (a tie goes to the coarser level);
 //   MipFilter::Linear blends levels floor(lod) and floor(lod) + 1 by the fraction;
 //   MipFilter::None reads level 0. Levels clamp to [0, mip_levels - 1].
+// - A sampler with MipFilter::None and the same min and mag filter gives the same result at every
+//   LOD, so sample() does not compute one for it (the post-processing passes' samplers).
 //
 // Cube maps
 // - Face order +X, -X, +Y, -Y, +Z, -Z (D3DCUBEMAP_FACES). The face is the direction's major axis,

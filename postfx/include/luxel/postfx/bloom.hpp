@@ -1,0 +1,96 @@
+#pragma once
+// Bloom on the tone-mapped 8-bit frame, as Source's INTEGER/LDR path draws it
+// (SOURCE_FACTS §8.2, Generate8BitBloomTexture in viewpostprocess.cpp; §6.5 steps 3-5):
+//
+//   1. copy      the frame -> _rt_FullFrameFB (resolved when multisampled), read as gamma values;
+//   2. downsample _rt_FullFrameFB -> _rt_SmallFB0, a quarter of the frame each way, with the
+//                shaped 4-tap box (shading/source/bloom_downsample.hpp);
+//   3. blur x    _rt_SmallFB0 -> _rt_SmallFB1, 13 taps (shading/source/bloom_blur.hpp);
+//   4. blur y    _rt_SmallFB1 -> _rt_SmallFB0, 13 taps times the bloom amount (bloom_amount.hpp),
+//                with the SDK's 1/width vertical step unless BloomOptions says otherwise;
+//   5. add       _rt_SmallFB0 stretched over the frame, added with ONE/ONE on gamma values
+//                (shading/source/bloom_add.hpp).
+// Every pass is a screen rectangle drawn through the rasterizer (screen_rectangle.hpp) into an
+// 8-bit target, and each intermediate is read back as an RGBA8 texture, bilinear and clamped, so
+// every pass rounds to 8 bits as the SDK's render targets do. Output bytes do not depend on the
+// context's thread count.
+//
+// Rectangles (DrawScreenSpaceRectangle's centre-to-centre mapping): the downsample shows source
+// texels 0..W-2 x 0..H-2 on the W/4 x H/4 target (the "-2" leaves room for the taps reaching past
+// the base texel, §8.2); the blurs show the small target on itself; the add shows the small
+// target's texels from (0, -0.5) to (w-1, h-1) on the whole frame (viewpostprocess.cpp's
+// fullViewportPostSrcCorners, which bloomadd and Engine_Post share: the half texel up is Valve's,
+// §8.3, and unexplained there).
+//
+// Frame sizes: the SDK asserts that the small targets are exactly a quarter of the frame. Here a
+// frame of any size from 4x4 up is accepted: the small targets are floor(W/4) x floor(H/4) and the
+// same formulas place the rectangles. The downsample's 4x4 footprints then sit
+// (W-2) / (floor(W/4)-1) source texels apart, as at every size (a little over 4: 4.006 at 1280),
+// still from the first texel to the last; a small target one texel wide (W of 4 to 7) reads the
+// first footprint only. Smaller frames throw std::invalid_argument.
+
+#include "luxel/rasterizer/context.hpp"
+#include "luxel/rasterizer/framebuffer.hpp"
+#include "luxel/rasterizer/image.hpp"
+#include "luxel/rasterizer/texture.hpp"
+#include "luxel/shading/source/bloom_blur.hpp"
+
+#include <optional>
+
+namespace luxel::postfx {
+
+struct BloomOptions {
+  /// $bloomtintenable: shape the downsample's taps with the tint (0.3, 0.59, 0.11) and exponent
+  /// 2.2; off: weights 0.333, exponent 1.
+  bool tint = true;
+  /// The vertical blur's texel step: the SDK's 1/width (the default) or 1/height.
+  shading::source::BlurStep vertical_step = shading::source::BlurStep::sdk_width_quirk;
+};
+
+/// The size of the bloom's small targets for a frame: floor(W/4) x floor(H/4).
+struct BloomSize {
+  int width = 0, height = 0;
+};
+BloomSize bloom_size(int frame_width, int frame_height);
+
+class Bloom {
+ public:
+  explicit Bloom(BloomOptions options = {}) : options_(options) {}
+
+  /// All five passes: adds the bloom of `frame` (any sample count) onto it. `amount` is this
+  /// frame's bloom amount (BloomAmount::advance); at 0 or below nothing runs, as in the SDK
+  /// (bPerformBloom needs a bloom scale above 0).
+  void apply(rasterizer::Context& ctx, rasterizer::ColorTarget& frame, float amount);
+  /// The same on a resolved frame held as an image.
+  void apply(rasterizer::Context& ctx, rasterizer::Image& frame, float amount);
+
+  // The passes one by one, in this order (benchmarks time them; tests look between them). A pass
+  // before any copy throws std::logic_error.
+  void copy(rasterizer::Context& ctx, const rasterizer::ColorTarget& frame);
+  void copy(const rasterizer::Image& frame);
+  void downsample(rasterizer::Context& ctx);
+  void blur_x(rasterizer::Context& ctx);
+  void blur_y(rasterizer::Context& ctx, float amount);
+  void add(rasterizer::Context& ctx, rasterizer::ColorTarget& frame);
+
+  /// The small target as the last pass left it (after blur_y: the bloom texture that add reads).
+  const rasterizer::Image& small_image() const { return small_image_; }
+
+ private:
+  /// Makes the frame copy, the small targets and textures fit a frame of this size.
+  void fit(int frame_width, int frame_height);
+  /// Throws std::logic_error naming `pass` when no frame has been copied yet.
+  void require_copy(const char* pass) const;
+  /// Reads the small target back (small_image_) into small texture `index`: a render target that
+  /// the next pass samples, as the SDK's targets are also textures.
+  void keep_small(rasterizer::Context& ctx, int index);
+
+  BloomOptions options_;
+  std::optional<rasterizer::Texture> frame_texture_;   ///< _rt_FullFrameFB
+  std::optional<rasterizer::Texture> small_texture_[2];  ///< _rt_SmallFB0, _rt_SmallFB1
+  std::optional<rasterizer::ColorTarget> small_target_;  ///< where each small pass draws
+  std::optional<rasterizer::ColorTarget> image_target_;  ///< apply(Image&)'s frame as a target
+  rasterizer::Image frame_image_, small_image_;
+};
+
+}  // namespace luxel::postfx

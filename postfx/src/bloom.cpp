@@ -1,0 +1,144 @@
+// Bloom's passes (bloom.hpp): targets, textures and the five draws.
+
+#include "luxel/postfx/bloom.hpp"
+
+#include "luxel/postfx/screen_rectangle.hpp"
+#include "luxel/shading/source/bloom_add.hpp"
+#include "luxel/shading/source/bloom_downsample.hpp"
+
+#include <algorithm>
+#include <span>
+#include <stdexcept>
+#include <string>
+
+namespace luxel::postfx {
+
+namespace src = shading::source;
+
+namespace {
+
+/// How every bloom pass reads its source: bilinear, clamped, level 0 only.
+rasterizer::Sampler bilinear_clamped() {
+  rasterizer::Sampler s;
+  s.min = s.mag = rasterizer::Filter::Linear;
+  s.mip = rasterizer::MipFilter::None;
+  s.u = s.v = rasterizer::Address::Clamp;
+  return s;
+}
+
+/// An RGBA8 texture of one level, read as stored (no sRGB decode: gamma values, §10.1).
+rasterizer::Texture gamma_texture(int width, int height) {
+  return rasterizer::Texture::create_2d(width, height, rasterizer::TextureFormat::RGBA8, 1);
+}
+
+}  // namespace
+
+BloomSize bloom_size(int frame_width, int frame_height) {
+  if (frame_width < 4 || frame_height < 4) {
+    throw std::invalid_argument("bloom: a " + std::to_string(frame_width) + "x" + std::to_string(frame_height) +
+                                " frame is smaller than 4x4");
+  }
+  return {frame_width / 4, frame_height / 4};
+}
+
+void Bloom::fit(int frame_width, int frame_height) {
+  const BloomSize small = bloom_size(frame_width, frame_height);
+  if (!frame_texture_ || frame_texture_->width() != frame_width || frame_texture_->height() != frame_height) {
+    frame_texture_ = gamma_texture(frame_width, frame_height);
+  }
+  if (!small_target_ || small_target_->width() != small.width || small_target_->height() != small.height) {
+    small_target_.emplace(small.width, small.height);
+    for (auto& t : small_texture_) t = gamma_texture(small.width, small.height);
+  }
+}
+
+void Bloom::require_copy(const char* pass) const {
+  if (!frame_texture_) throw std::logic_error(std::string("bloom: ") + pass + " before any copy of a frame");
+}
+
+void Bloom::keep_small(rasterizer::Context& ctx, int index) {
+  rasterizer::resolve_into(ctx, *small_target_, small_image_);
+  small_texture_[index]->upload(0, std::span<const uint8_t>(small_image_.rgba));
+}
+
+void Bloom::copy(rasterizer::Context& ctx, const rasterizer::ColorTarget& frame) {
+  fit(frame.width(), frame.height());
+  rasterizer::resolve_into(ctx, frame, frame_image_);
+  frame_texture_->upload(0, std::span<const uint8_t>(frame_image_.rgba));
+}
+
+void Bloom::copy(const rasterizer::Image& frame) {
+  fit(frame.width, frame.height);
+  frame_texture_->upload(0, std::span<const uint8_t>(frame.rgba));
+}
+
+void Bloom::downsample(rasterizer::Context& ctx) {
+  require_copy("downsample");
+  const int W = frame_texture_->width(), H = frame_texture_->height();
+  src::DownsampleParams params;
+  params.frame = {0, &*frame_texture_, bilinear_clamped()};
+  params.tint = src::downsample_constant(options_.tint);
+  std::array<glm::vec2, 4> taps;
+  std::copy(std::begin(src::kDownsampleTapOffsets), std::end(src::kDownsampleTapOffsets), taps.begin());
+  const TexelRect rect{0.0f, 0.0f, static_cast<float>(W - 2), static_cast<float>(H - 2), W, H};
+  draw_screen_rectangle(ctx, *small_target_, post_pass_state(),
+                        screen_rectangle<4>(small_target_->width(), small_target_->height(), rect, taps),
+                        src::DownsamplePixelShader{&params});
+  keep_small(ctx, 0);
+}
+
+void Bloom::blur_x(rasterizer::Context& ctx) {
+  require_copy("blur_x");
+  const int w = small_target_->width(), h = small_target_->height();
+  src::BlurParams params = src::blur_constants(src::BlurAxis::horizontal, w, h, options_.vertical_step, 1.0f);
+  params.source = {0, &*small_texture_[0], bilinear_clamped()};
+  draw_screen_rectangle(ctx, *small_target_, post_pass_state(), screen_rectangle(w, h, whole_texture(w, h)),
+                        src::BlurPixelShader{&params});
+  keep_small(ctx, 1);
+}
+
+void Bloom::blur_y(rasterizer::Context& ctx, float amount) {
+  require_copy("blur_y");
+  const int w = small_target_->width(), h = small_target_->height();
+  src::BlurParams params = src::blur_constants(src::BlurAxis::vertical, w, h, options_.vertical_step, amount);
+  params.source = {0, &*small_texture_[1], bilinear_clamped()};
+  draw_screen_rectangle(ctx, *small_target_, post_pass_state(), screen_rectangle(w, h, whole_texture(w, h)),
+                        src::BlurPixelShader{&params});
+  keep_small(ctx, 0);
+}
+
+void Bloom::add(rasterizer::Context& ctx, rasterizer::ColorTarget& frame) {
+  require_copy("add");
+  src::BloomAddParams params;
+  params.bloom = {0, &*small_texture_[0], bilinear_clamped()};
+  const int w = small_target_->width(), h = small_target_->height();
+  const TexelRect rect{0.0f, -0.5f, static_cast<float>(w - 1), static_cast<float>(h - 1), w, h};
+  draw_screen_rectangle(ctx, frame, src::bloom_add_pipeline_state(), screen_rectangle(frame.width(), frame.height(), rect),
+                        src::BloomAddPixelShader{&params});
+  ctx.flush();  // the draw reads `params`, which ends here
+}
+
+void Bloom::apply(rasterizer::Context& ctx, rasterizer::ColorTarget& frame, float amount) {
+  if (!(amount > 0.0f)) return;
+  copy(ctx, frame);
+  downsample(ctx);
+  blur_x(ctx);
+  blur_y(ctx, amount);
+  add(ctx, frame);
+}
+
+void Bloom::apply(rasterizer::Context& ctx, rasterizer::Image& frame, float amount) {
+  if (!(amount > 0.0f)) return;
+  copy(frame);
+  if (!image_target_ || image_target_->width() != frame.width || image_target_->height() != frame.height) {
+    image_target_.emplace(frame.width, frame.height);
+  }
+  rasterizer::load_image(ctx, frame, *image_target_);
+  downsample(ctx);
+  blur_x(ctx);
+  blur_y(ctx, amount);
+  add(ctx, *image_target_);
+  rasterizer::resolve_into(ctx, *image_target_, frame);
+}
+
+}  // namespace luxel::postfx
