@@ -71,6 +71,12 @@ void FrameOptions::add_to(CLI::App& cmd) {
       ->capture_default_str();
   cmd.add_flag("!--no-color-correction", settings.color_correction,
                "Leave out the scene's color-correction nodes (Source's mat_colorcorrection 0)");
+  cmd.add_flag("--no-bloom", no_bloom, "Leave out the bloom (Source's mat_disable_bloom 1)");
+  cmd.add_flag("--bloom-true-height", bloom_true_height,
+               "Step the vertical bloom blur by 1/height; by default it steps by 1/width, as the SDK's BlurFilterY "
+               "does (a quirk: at 16:9 its taps are 0.5625 texels apart vertically)");
+  cmd.add_option("--film-grain", film_grain_seed,
+                 "Blend film grain seeded by SEED (different each frame of a sequence, the same bytes for any thread count)");
 }
 
 std::optional<rasterizer::ContextOptions> FrameOptions::context_options(const std::string& command, int& code) const {
@@ -138,6 +144,11 @@ std::unique_ptr<frame::Renderer> FrameOptions::make_renderer(const std::string& 
     frame::FrameSettings first = settings;
     first.time = 0.0f;
     first.exposure = exposure;
+    if (!no_bloom) {
+      first.bloom = postfx::BloomOptions{};
+      if (bloom_true_height) first.bloom->vertical_step = shading::source::BlurStep::true_height;
+    }
+    if (film_grain_seed) first.film_grain = postfx::FilmGrainOptions{*film_grain_seed};
     auto renderer = std::make_unique<frame::Renderer>(scene, first);
     const bool carried = renderer->auto_exposure() != nullptr;
     const bool terminal = isatty(STDERR_FILENO);

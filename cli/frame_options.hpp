@@ -26,9 +26,12 @@ struct FrameOptions {
   int frame = 0;                  ///< the frame of the scene's sequence, at time frame / fps
   float fps = 30.0f;
   std::optional<float> exposure;  ///< --exposure: a fixed tone-map scale
+  bool no_bloom = false, bloom_true_height = false;
+  std::optional<uint64_t> film_grain_seed;  ///< --film-grain SEED
 
   /// Registers --scene --width --height --msaa --camera --camera-path --frame --fps --threads
-  /// --bake --ambient --exposure --tonemap-algorithm --histogram --query-latency on `cmd`.
+  /// --bake --ambient --exposure --tonemap-algorithm --histogram --query-latency
+  /// --no-color-correction --no-bloom --bloom-true-height --film-grain on `cmd`.
   void add_to(CLI::App& cmd);
 
   /// The rasterizer context's options: the threads and LUXEL_NO_FASTPATH; nullopt after printing

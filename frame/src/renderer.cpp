@@ -8,6 +8,7 @@
 #include "water_passes.hpp"
 
 #include "luxel/frame/textures.hpp"
+#include "luxel/postfx/bloom_amount.hpp"
 #include "luxel/rasterizer/framebuffer.hpp"
 #include "luxel/rasterizer/msaa.hpp"
 #include "luxel/rasterizer/srgb.hpp"
@@ -188,6 +189,9 @@ struct FrameState {
   std::optional<postfx::AutoExposure> auto_exposure;
   std::optional<float> last_frame_time;
   std::optional<ColorCorrectionNodes> color_correction;  // when the frame blends the scene's nodes
+  std::optional<postfx::Bloom> bloom;
+  postfx::BloomAmount bloom_amount;                      // smoothed from frame to frame
+  std::optional<postfx::FilmGrain> film_grain;
 
   FrameState(const scenes::Scene& s, const FrameSettings& f, std::shared_ptr<const SceneTextures> t)
       : scene(&s), settings(f), color(f.width, f.height, f.samples), depth(f.width, f.height, f.samples), prepared(std::move(t)) {}
@@ -644,6 +648,12 @@ Renderer::Renderer(const scenes::Scene& scene, const FrameSettings& settings, st
   st.exposure = frame_exposure(scene, settings);
   if (uses_auto_exposure(scene, settings)) st.auto_exposure.emplace(auto_exposure_settings(frame_controls(scene, settings), settings));
   if (settings.color_correction && !settings.cubemap_capture && !scene.color_corrections.empty()) st.color_correction.emplace(scene);
+  // The bloom's quarter-size targets need a frame of 4 x 4 or more.
+  if (settings.bloom && !settings.cubemap_capture && settings.width >= 4 && settings.height >= 4) st.bloom.emplace(*settings.bloom);
+  // The SDK's smoothed amount is a static that starts at 1 when the game starts; a renderer starts
+  // it at the scene's own scale, so that a first frame shows the bloom the designer set.
+  st.bloom_amount.smoothed = frame_controls(scene, settings).bloom_scale;
+  if (settings.film_grain && !settings.cubemap_capture) st.film_grain.emplace(*settings.film_grain);
   move_models(st, -1.0f);
   build_views(st);
 }
@@ -698,9 +708,18 @@ void Renderer::render(Context& ctx) {
       st.views_current = false;  // the draws carry the scale in their constants
     }
   }
+  const glm::vec3 eye = frame_camera(*st.scene, st.settings).position;
+  if (st.bloom) {
+    // INTEGER HDR: no LDR factor (bloom_amount.hpp).
+    const float amount = st.bloom_amount.advance(scenes::exposure_at(*st.scene, eye).bloom_scale, shading::source::HdrType::integer);
+    clock.run("bloom", 5, [&] { st.bloom->apply(ctx, st.image, amount); });
+  }
   if (st.color_correction) {
-    const std::vector<postfx::WeightedLut> luts = st.color_correction->weighted_at(frame_camera(*st.scene, st.settings).position);
+    const std::vector<postfx::WeightedLut> luts = st.color_correction->weighted_at(eye);
     if (!luts.empty()) clock.run("color correction", 1, [&] { st.image = postfx::color_correct(ctx, st.image, luts); });
+  }
+  if (st.film_grain) {
+    clock.run("film grain", 1, [&] { st.film_grain->apply(ctx, st.image, std::bit_cast<uint32_t>(st.settings.time)); });
   }
   st.shader_uses.clear();
   if (st.settings.count_shading) {

@@ -471,6 +471,9 @@ Scene make_courtyard() {
   s.fog.end = 6000;
   s.fog.max_density = 0.5f;
   s.exposure.min_scale = 0.5f, s.exposure.max_scale = 2.0f;
+  // A bright, sunlit yard: at the default bloom scale 1 the bloom whites out the floor; Valve's
+  // maps lowered it in their env_tonemap_controller the same way (SetBloomScale).
+  s.exposure.bloom_scale = 0.25f;
   s.background = {0.45f, 0.6f, 0.85f};  // the sky near the horizon, for frames that draw no sky
 
   // --- Cameras ---

@@ -85,26 +85,27 @@ uint64_t fnv1a(const std::vector<uint8_t>& bytes) {
 // frame draws shows here first. They hold for the builds they were taken with (x86-64-v3, 8 lanes:
 // the release and ASan presets); other ISAs are not checked here. A deliberate change of the
 // picture updates them: the failure prints the new value. Each model has two: the frame as
-// drawn, and the same without its color-correction pass (the one before that pass existed).
+// drawn, and the same without its passes on the finished image (bloom, color correction).
 TEST(FrameDeterminism, CourtyardGoldenHashes) {
   if (rasterizer::simd::kLanes != 8) GTEST_SKIP() << "golden hashes are for 8-lane builds";
-  const struct { shading::ShaderModel model; uint64_t hash, uncorrected; } golden[] = {
-      {shading::ShaderModel::ps_2_0, 0x3a08f44d39b5a536ull, 0x909db5798700843aull},
-      {shading::ShaderModel::ps_2_b, 0x9a7c0477a4de3c11ull, 0xb22f0b1ca30f3a44ull},
-      {shading::ShaderModel::ps_3_0, 0x9a7c0477a4de3c11ull, 0xb22f0b1ca30f3a44ull},
+  const struct { shading::ShaderModel model; uint64_t hash, without_post; } golden[] = {
+      {shading::ShaderModel::ps_2_0, 0x1a821a5a70cf5205ull, 0x909db5798700843aull},
+      {shading::ShaderModel::ps_2_b, 0xb2328af5ff4a1859ull, 0xb22f0b1ca30f3a44ull},
+      {shading::ShaderModel::ps_3_0, 0xb2328af5ff4a1859ull, 0xb22f0b1ca30f3a44ull},
   };
   // ps_2_b and ps_3_0 run the same combos on the courtyard (no combo there needs more than
   // ps_2_b offers), hence the same bytes.
   for (const auto& g : golden) {
-    for (bool corrected : {true, false}) {
+    for (bool post : {true, false}) {
       FrameSettings settings = as_model({160, 90, 4}, g.model);
-      settings.color_correction = corrected;
+      settings.color_correction = post;
+      if (post) settings.bloom = postfx::BloomOptions{};
       const RenderedFrame f = render("courtyard", settings, 2, 1);
       const uint64_t h = fnv1a(f.image.rgba);
       char hex[32];
       std::snprintf(hex, sizeof hex, "0x%016llxull", static_cast<unsigned long long>(h));
-      EXPECT_EQ(h, corrected ? g.hash : g.uncorrected)
-          << shading::caps(g.model).name << (corrected ? "" : " without color correction") << ": the courtyard's bytes changed; new hash " << hex;
+      EXPECT_EQ(h, post ? g.hash : g.without_post)
+          << shading::caps(g.model).name << (post ? "" : " without bloom and color correction") << ": the courtyard's bytes changed; new hash " << hex;
     }
   }
 }

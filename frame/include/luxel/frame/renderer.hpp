@@ -52,10 +52,19 @@
 //    controls where the camera is (scenes::exposure_at: the zone holding it, else the scene's);
 //    a clock that goes back starts the exposure again. Without a range anywhere, the one scale,
 //    fixed, and no histogram pass.
-//  - After the histogram pass, color correction (FrameSettings::color_correction): the scene's
-//    color-correction nodes weighted by the eye's distance through their falloffs, the four
-//    heaviest blended by Source's colorcorrection pass through 32^3 LUTs (postfx/
-//    color_correction.hpp), when any weight is not 0 (the "color correction" pass).
+//  - After the histogram pass, on the finished 8-bit frame as Source's INTEGER HDR path runs them
+//    (SOURCE_FACTS 6.5): bloom (FrameSettings::bloom, frames of 4 x 4 and more, postfx/bloom.hpp: the quarter-size
+//    downsample, the two blurs, the additive combine in gamma space), its amount the exposure
+//    controls' bloom scale where the camera is, smoothed once per frame (postfx/bloom_amount.hpp)
+//    from the scale at the first frame (the SDK's starts at 1 once per game);
+//    then color correction (FrameSettings::color_correction): the scene's color-correction nodes
+//    weighted by the eye's distance through their falloffs, the four heaviest blended by
+//    Source's colorcorrection pass through 32^3 LUTs (postfx/color_correction.hpp), when any
+//    weight is not 0; then film grain when asked (FrameSettings::film_grain), its noise seeded
+//    by the options' seed and the clock's time. The engine draws bloom and color correction in
+//    one Engine_Post pass when both run; luxel draws bloomadd then the correction, which rounds
+//    the sum to 8 bits in between (at most a step apart where the sum stays below 1).
+//    Passes "bloom", "color correction", "film grain".
 // Order: the water's views, then opaque meshes in scene order (depth LESS, single-sided materials
 // cull their back faces, front faces counter-clockwise), alpha-tested ones with D3D9's alpha test (GREATEREQUAL
 // $alphatestreference), then the sky, then translucent meshes back to front by the distance of
@@ -92,6 +101,8 @@
 // whose exact matrix has float entries (the workloads' orthographic cameras) gets exactly those.
 
 #include "luxel/postfx/auto_exposure.hpp"
+#include "luxel/postfx/bloom.hpp"
+#include "luxel/postfx/film_grain.hpp"
 #include "luxel/rasterizer/context.hpp"
 #include "luxel/rasterizer/draw.hpp"
 #include "luxel/rasterizer/image.hpp"
@@ -137,8 +148,13 @@ struct FrameSettings {
   /// How auto exposure counts its histogram: target algorithm, counting method, query latency,
   /// region (the scene's Exposure gives the range, rate and percentages).
   postfx::HistogramSettings histogram{};
+  /// Bloom after the histogram (above); nullopt: none (mat_disable_bloom). Off unless asked, so
+  /// that a frame's pixels are its shaders' (`luxel render` asks for it unless --no-bloom).
+  std::optional<postfx::BloomOptions> bloom = std::nullopt;
   /// Blend the scene's color-correction nodes into the finished frame (mat_colorcorrection).
   bool color_correction = true;
+  /// Film grain last; nullopt (the default, as Source without -filmgrain): none.
+  std::optional<postfx::FilmGrainOptions> film_grain = std::nullopt;
   /// Count the pixels each shader combo shades (Renderer::shader_uses); off, a frame counts nothing.
   bool count_shading = false;
   /// Time each pass (Renderer::pass_times). The rasterizer then runs each pass over all tiles
@@ -167,7 +183,7 @@ struct ModelLightingState {
 struct PassTime {
   std::string pass;  ///< "views" (the draws made anew after the clock or the exposure moved), "water
                      ///< reflection", "water refraction", "opaque", "sky", "translucent", "resolve",
-                     ///< "histogram", "color correction"
+                     ///< "histogram", "bloom", "color correction", "film grain"
   double ms = 0.0;
   int draws = 0;
 };
