@@ -27,7 +27,7 @@ scenes::Scene busy_scene() {
   add_quad(block, {-16, 16, z0}, {0, -32, 0}, {0, 0, 32}, 0, 0, 1, 4);
   block.uv1.clear();
   s.meshes.push_back(block);
-  s.models.push_back({"block", {2}, {0, 0, -48}});
+  s.models.push_back({"block", {2}, {0, 0, -48}, {}});
   scenes::Light l;
   l.type = scenes::LightType::point;
   l.position = {20, 30, 40};
