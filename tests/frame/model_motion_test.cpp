@@ -25,27 +25,12 @@ constexpr float kFps = 30.0f;
 /// and a two-sample irradiance volume along X whose +Z sides differ: dark at x = 0, bright at
 /// x = 100.
 scenes::Scene walker_scene() {
-  scenes::Scene s;
+  scenes::Scene s = top_down();
   s.name = "walker";
-  scenes::Camera c;
-  c.projection = scenes::Projection::orthographic;
-  c.position = {0, 0, 10};
-  c.target = {0, 0, 0};
-  c.up = {0, 1, 0};
-  c.ortho_height = 2;
-  c.aspect = 1;
-  c.near_plane = 1;
-  c.far_plane = 20;
-  s.cameras.push_back(c);
   scenes::Material m;  // VertexLitGeneric, untextured
   m.color = {0.8f, 0.6f, 0.4f, 1.0f};
   s.materials = {m};
-  scenes::Mesh quad;
-  quad.material = 0;
-  quad.positions = {{-1, -1, 0}, {1, -1, 0}, {1, 1, 0}, {-1, 1, 0}};
-  quad.normals.assign(4, {0, 0, 1});
-  quad.indices = std::vector<uint16_t>{0, 1, 2, 0, 2, 3};
-  s.meshes = {quad};
+  s.meshes = {square(-1, -1, 1, 1, 0, 0)};
   scenes::IrradianceVolume v;
   v.min = {0, 0, 0};
   v.spacing = glm::vec3(100.0f);
