@@ -1,5 +1,6 @@
 #include "luxel/postfx/luminance_histogram.hpp"
 
+#include "luxel/postfx/screen_rectangle.hpp"
 #include "luxel/rasterizer/draw.hpp"
 #include "luxel/rasterizer/srgb.hpp"
 
@@ -15,20 +16,6 @@ using shading::source::LuminanceRangeCombo;
 using shading::source::LuminanceRangeParams;
 using shading::source::LuminanceReject;
 
-/// DrawScreenSpaceRectangle: the region as two triangles; varying 0 is the frame texture's
-/// coordinate, so each pixel center reads its own texel's center.
-struct RegionVertexShader {
-  static constexpr int kVaryings = 1;
-  int width = 0, height = 0;
-  HistogramRegion region;
-  void operator()(uint32_t i, rasterizer::VertexOutput<1>& out) const {
-    static constexpr int kCorner[6][2] = {{0, 0}, {1, 0}, {0, 1}, {1, 0}, {1, 1}, {0, 1}};
-    const float x = float(kCorner[i][0] ? region.x1 : region.x0), y = float(kCorner[i][1] ? region.y1 : region.y0);
-    out.position = glm::vec4(2.0f * x / float(width) - 1.0f, 1.0f - 2.0f * y / float(height), 0.0f, 1.0f);
-    out.varyings[0] = glm::vec4(x / float(width), y / float(height), 0.0f, 0.0f);
-  }
-};
-
 /// dev/no_pixel_write: the stencil method's counting draw; the stencil alone decides.
 struct NoPixelWrite {
   static constexpr bool kCanDiscard = false, kWritesDepth = false;
@@ -38,20 +25,36 @@ struct NoPixelWrite {
   }
 };
 
+/// DrawScreenSpaceRectangle over the region: the viewport is the region, each pixel reads its own
+/// texel of the frame.
+struct RegionDraw {
+  rasterizer::Viewport viewport;
+  ScreenRectangle<1> rectangle;
+  RegionDraw(int width, int height, const HistogramRegion& r)
+      : viewport{float(r.x0), float(r.y0), float(r.x1 - r.x0), float(r.y1 - r.y0)},
+        rectangle(screen_rectangle(r.x1 - r.x0, r.y1 - r.y0, TexelRect{float(r.x0), float(r.y0), float(r.x1 - 1), float(r.y1 - 1), width, height})) {}
+
+  template <class PixelShader>
+  void draw(rasterizer::Context& ctx, rasterizer::DepthStencilTarget& target, rasterizer::PipelineState state,
+            const PixelShader& ps) const {
+    state.viewport = viewport;
+    rasterizer::draw(ctx, rasterizer::Framebuffer{nullptr, &target}, state, rasterizer::Geometry::non_indexed(6), rectangle, ps);
+  }
+};
+
 template <LuminanceRangeCombo C>
 void draw_range_test(rasterizer::Context& ctx, rasterizer::DepthStencilTarget& target, LuminancePass pass,
-                     const RegionVertexShader& vs, const LuminanceRangeParams& params) {
-  const shading::source::LuminanceRangePixelShader<C> ps{&params};
-  rasterizer::draw(ctx, rasterizer::Framebuffer{nullptr, &target}, shading::source::luminance_range_pipeline_state(C.reject, pass),
-                   rasterizer::Geometry::non_indexed(6), vs, ps);
+                     const RegionDraw& region, const LuminanceRangeParams& params) {
+  region.draw(ctx, target, shading::source::luminance_range_pipeline_state(C.reject, pass),
+              shading::source::LuminanceRangePixelShader<C>{&params});
 }
 
 void draw_range_test(rasterizer::Context& ctx, rasterizer::DepthStencilTarget& target, LuminanceReject reject,
-                     LuminancePass pass, const RegionVertexShader& vs, const LuminanceRangeParams& params) {
+                     LuminancePass pass, const RegionDraw& region, const LuminanceRangeParams& params) {
   if (reject == LuminanceReject::alpha_test) {
-    draw_range_test<LuminanceRangeCombo{LuminanceReject::alpha_test}>(ctx, target, pass, vs, params);
+    draw_range_test<LuminanceRangeCombo{LuminanceReject::alpha_test}>(ctx, target, pass, region, params);
   } else {
-    draw_range_test<LuminanceRangeCombo{LuminanceReject::texkill}>(ctx, target, pass, vs, params);
+    draw_range_test<LuminanceRangeCombo{LuminanceReject::texkill}>(ctx, target, pass, region, params);
   }
 }
 
@@ -124,21 +127,20 @@ void LuminanceHistogram::issue(rasterizer::Context& ctx, const rasterizer::Image
   params.frame.state.mip = rasterizer::MipFilter::None;
   params.frame.state.u = params.frame.state.v = rasterizer::Address::Clamp;
   params.min_max_scale = shading::source::luminance_range_constant(b.range.min, b.range.max);
-  const RegionVertexShader vs{w, h, histogram_region(w, h, settings_.center_region_x, settings_.center_region_y)};
+  const RegionDraw region(w, h, histogram_region(w, h, settings_.center_region_x, settings_.center_region_y));
 
   rasterizer::OcclusionQuery query;
   if (settings_.count == HistogramCount::direct_query) {
     ctx.begin_query(query);
-    draw_range_test(ctx, target, settings_.reject, LuminancePass::query, vs, params);
+    draw_range_test(ctx, target, settings_.reject, LuminancePass::query, region, params);
     ctx.end_query();
   } else {
     // The engine clears the stencil at the start of each frame; one mark per frame follows.
     rasterizer::clear_depth_stencil(ctx, target, 1.0f, 0);
-    draw_range_test(ctx, target, settings_.reject, LuminancePass::stencil_mark, vs, params);
+    draw_range_test(ctx, target, settings_.reject, LuminancePass::stencil_mark, region, params);
     ctx.begin_query(query);
-    rasterizer::draw(ctx, rasterizer::Framebuffer{nullptr, &target},
-                     shading::source::luminance_range_pipeline_state(settings_.reject, LuminancePass::stencil_count),
-                     rasterizer::Geometry::non_indexed(6), vs, NoPixelWrite{});
+    region.draw(ctx, target, shading::source::luminance_range_pipeline_state(settings_.reject, LuminancePass::stencil_count),
+                NoPixelWrite{});
     ctx.end_query();
   }
   pending_[size_t(bucket)] = ctx.query_result(query);  // flushes: `params` outlives the draws
