@@ -709,14 +709,22 @@ void Renderer::render(Context& ctx) {
     }
   }
   const glm::vec3 eye = frame_camera(*st.scene, st.settings).position;
+  const std::vector<postfx::WeightedLut> luts =
+      st.color_correction ? st.color_correction->weighted_at(eye) : std::vector<postfx::WeightedLut>{};
+  bool bloomed = false;  // blurred, for the color correction to add (Engine_Post, SOURCE_FACTS 8.3)
   if (st.bloom) {
     // INTEGER HDR: no LDR factor (bloom_amount.hpp).
     const float amount = st.bloom_amount.advance(scenes::exposure_at(*st.scene, eye).bloom_scale, shading::source::HdrType::integer);
-    clock.run("bloom", 5, [&] { st.bloom->apply(ctx, st.image, amount); });
+    if (luts.empty()) {
+      clock.run("bloom", 5, [&] { st.bloom->apply(ctx, st.image, amount); });
+    } else {
+      clock.run("bloom", 3, [&] { bloomed = st.bloom->blur(ctx, st.image, amount); });
+    }
   }
-  if (st.color_correction) {
-    const std::vector<postfx::WeightedLut> luts = st.color_correction->weighted_at(eye);
-    if (!luts.empty()) clock.run("color correction", 1, [&] { st.image = postfx::color_correct(ctx, st.image, luts); });
+  if (!luts.empty()) {
+    clock.run("color correction", 1, [&] {
+      st.image = bloomed ? postfx::color_correct(ctx, *st.bloom, luts) : postfx::color_correct(ctx, st.image, luts);
+    });
   }
   if (st.film_grain) {
     clock.run("film grain", 1, [&] { st.film_grain->apply(ctx, st.image, std::bit_cast<uint32_t>(st.settings.time)); });

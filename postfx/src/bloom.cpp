@@ -107,14 +107,28 @@ void Bloom::blur_y(rasterizer::Context& ctx, float amount) {
   keep_small(ctx, 0);
 }
 
+const rasterizer::Texture& Bloom::frame_texture() const {
+  require_copy("frame_texture");
+  return *frame_texture_;
+}
+
+const rasterizer::Texture& Bloom::bloom_texture() const {
+  require_copy("bloom_texture");
+  return *small_texture_[0];
+}
+
+TexelRect Bloom::bloom_rectangle() const {
+  require_copy("bloom_rectangle");
+  const int w = small_target_->width(), h = small_target_->height();
+  return {0.0f, -0.5f, static_cast<float>(w - 1), static_cast<float>(h - 1), w, h};
+}
+
 void Bloom::add(rasterizer::Context& ctx, rasterizer::ColorTarget& frame) {
   require_copy("add");
   src::BloomAddParams params;
   params.bloom = {0, &*small_texture_[0], bilinear_clamped()};
-  const int w = small_target_->width(), h = small_target_->height();
-  const TexelRect rect{0.0f, -0.5f, static_cast<float>(w - 1), static_cast<float>(h - 1), w, h};
-  draw_screen_rectangle(ctx, frame, src::bloom_add_pipeline_state(), screen_rectangle(frame.width(), frame.height(), rect),
-                        src::BloomAddPixelShader{&params});
+  draw_screen_rectangle(ctx, frame, src::bloom_add_pipeline_state(),
+                        screen_rectangle(frame.width(), frame.height(), bloom_rectangle()), src::BloomAddPixelShader{&params});
   ctx.flush();  // the draw reads `params`, which ends here
 }
 
@@ -128,17 +142,22 @@ void Bloom::apply(rasterizer::Context& ctx, rasterizer::ColorTarget& frame, floa
 }
 
 void Bloom::apply(rasterizer::Context& ctx, rasterizer::Image& frame, float amount) {
-  if (!(amount > 0.0f)) return;
-  copy(frame);
+  if (!blur(ctx, frame, amount)) return;
   if (!image_target_ || image_target_->width() != frame.width || image_target_->height() != frame.height) {
     image_target_.emplace(frame.width, frame.height);
   }
   rasterizer::load_image(ctx, frame, *image_target_);
+  add(ctx, *image_target_);
+  rasterizer::resolve_into(ctx, *image_target_, frame);
+}
+
+bool Bloom::blur(rasterizer::Context& ctx, const rasterizer::Image& frame, float amount) {
+  if (!(amount > 0.0f)) return false;
+  copy(frame);
   downsample(ctx);
   blur_x(ctx);
   blur_y(ctx, amount);
-  add(ctx, *image_target_);
-  rasterizer::resolve_into(ctx, *image_target_, frame);
+  return true;
 }
 
 }  // namespace luxel::postfx

@@ -4,7 +4,9 @@
 
 #include "luxel/rasterizer/draw.hpp"
 #include "luxel/rasterizer/framebuffer.hpp"
+#include "luxel/postfx/screen_rectangle.hpp"
 #include "luxel/shading/source/color_correction.hpp"
+#include "luxel/shading/source/engine_post.hpp"
 
 #include <cmath>
 #include <stdexcept>
@@ -15,18 +17,6 @@ namespace luxel::postfx {
 namespace {
 
 namespace src = shading::source;
-
-/// Two triangles covering the target; varying 0 is the frame's texture coordinate, so each pixel
-/// center reads its own texel.
-struct FullScreenVS {
-  static constexpr int kVaryings = 1;
-  void operator()(uint32_t i, rasterizer::VertexOutput<1>& out) const {
-    static constexpr int kCorner[6][2] = {{0, 0}, {1, 0}, {0, 1}, {1, 0}, {1, 1}, {0, 1}};
-    const float u = float(kCorner[i][0]), v = float(kCorner[i][1]);
-    out.position = glm::vec4(2.0f * u - 1.0f, 1.0f - 2.0f * v, 0.5f, 1.0f);
-    out.varyings[0] = glm::vec4(u, v, 0.0f, 0.0f);
-  }
-};
 
 template <class Weighted>
 std::vector<float> checked_weights(std::span<const Weighted> items) {
@@ -58,38 +48,68 @@ float default_weight(std::span<const float> weights) {
   return std::max(0.0f, 1.0f - sum);
 }
 
-rasterizer::Image color_correct(rasterizer::Context& ctx, const rasterizer::Image& frame,
-                                std::span<const WeightedLut> luts) {
+namespace {
+
+/// The LUTs as the engine's volumes, and their weights, set into a pass's parameters (`Params`:
+/// ColorCorrectionParams or EnginePostParams); the volumes live in the returned vector, which the
+/// parameters point into.
+template <class Params>
+std::vector<rasterizer::Texture> set_lookups(std::span<const WeightedLut> luts, Params& params) {
   const std::vector<float> weights = checked_weights(luts);
-  check_frame(frame);
   for (const WeightedLut& l : luts)
     if (l.lut == nullptr) throw std::invalid_argument("color correction: a weighted LUT without its LUT");
-
-  rasterizer::Texture frame_texture =
-      rasterizer::Texture::create_2d(frame.width, frame.height, rasterizer::TextureFormat::RGBA8, 1);
-  frame_texture.upload(0, frame.rgba);
   std::vector<rasterizer::Texture> volumes;
-  src::ColorCorrectionParams params;
-  params.frame.texture = &frame_texture;
-  volumes.reserve(luts.size());  // the params point into it
+  volumes.reserve(luts.size());
   for (size_t k = 0; k < luts.size(); ++k) {
     volumes.push_back(lut_volume(*luts[k].lut));
     params.luts[k].texture = &volumes.back();
     params.lut_weights[int(k)] = weights[k];
   }
   params.default_weight = default_weight(weights);
+  return volumes;
+}
 
-  rasterizer::PipelineState state;
-  state.rasterizer.cull = rasterizer::CullMode::None;
-  state.depth_stencil.depth_enable = false;
-  rasterizer::ColorTarget target(frame.width, frame.height);
-  const FullScreenVS vs;
-  src::for_each_color_correction_combo([&]<src::ColorCorrectionCombo C>() {
-    if (C.luts != int(luts.size())) return;
-    rasterizer::draw(ctx, rasterizer::Framebuffer{&target, nullptr}, state, rasterizer::Geometry::non_indexed(6), vs,
-                     src::ColorCorrectionPixelShader<C>{&params});
+/// One full-frame draw of the combo of `Combos` that blends `luts` lookups, into a new target;
+/// returns its pixels.
+template <class Combo, class ForEachCombo, class Shader>
+rasterizer::Image draw_pass(rasterizer::Context& ctx, int width, int height, size_t luts, const auto& rectangle,
+                            ForEachCombo for_each_combo, Shader shader) {
+  rasterizer::ColorTarget target(width, height);
+  for_each_combo([&]<Combo C>() {
+    if (C.luts == int(luts)) draw_screen_rectangle(ctx, target, post_pass_state(), rectangle, shader.template operator()<C>());
   });
-  return rasterizer::resolve(ctx, target);  // flushes: the draw has run before params go
+  return rasterizer::resolve(ctx, target);  // flushes: the draw has run before the parameters go
+}
+
+}  // namespace
+
+rasterizer::Image color_correct(rasterizer::Context& ctx, const rasterizer::Image& frame,
+                                std::span<const WeightedLut> luts) {
+  checked_weights(luts);
+  check_frame(frame);
+  rasterizer::Texture frame_texture =
+      rasterizer::Texture::create_2d(frame.width, frame.height, rasterizer::TextureFormat::RGBA8, 1);
+  frame_texture.upload(0, frame.rgba);
+  src::ColorCorrectionParams params;
+  params.frame.texture = &frame_texture;
+  const std::vector<rasterizer::Texture> volumes = set_lookups(luts, params);
+  return draw_pass<src::ColorCorrectionCombo>(
+      ctx, frame.width, frame.height, luts.size(), screen_rectangle(frame.width, frame.height, whole_texture(frame.width, frame.height)),
+      [](auto f) { src::for_each_color_correction_combo(f); },
+      [&]<src::ColorCorrectionCombo C>() { return src::ColorCorrectionPixelShader<C>{&params}; });
+}
+
+rasterizer::Image color_correct(rasterizer::Context& ctx, const Bloom& bloom, std::span<const WeightedLut> luts) {
+  const rasterizer::Texture& frame = bloom.frame_texture();
+  src::EnginePostParams params;
+  params.frame.texture = &frame;
+  params.bloom.texture = &bloom.bloom_texture();
+  const std::vector<rasterizer::Texture> volumes = set_lookups(luts, params);
+  const int w = frame.width(), h = frame.height();
+  const ScreenRectanglePair rectangle{screen_rectangle(w, h, whole_texture(w, h)), screen_rectangle(w, h, bloom.bloom_rectangle())};
+  return draw_pass<src::EnginePostCombo>(
+      ctx, w, h, luts.size(), rectangle, [](auto f) { src::for_each_engine_post_combo(f); },
+      [&]<src::EnginePostCombo C>() { return src::EnginePostPixelShader<C>{&params}; });
 }
 
 std::vector<float> color_correct_exact(const rasterizer::Image& frame, std::span<const WeightedTransform> transforms) {

@@ -6,6 +6,7 @@
 #include "luxel/shading/source/bloom_blur.hpp"
 #include "luxel/shading/source/bloom_downsample.hpp"
 #include "luxel/shading/source/color_correction.hpp"
+#include "luxel/shading/source/engine_post.hpp"
 #include "luxel/shading/source/film_grain.hpp"
 #include "luxel/shading/source/lightmapped_generic.hpp"
 #include "luxel/shading/source/luminance_range.hpp"
@@ -269,10 +270,30 @@ void add_color_correction(std::vector<ShaderVariant>& out) {
     auto shade = []<class L>(const auto& get) {
       std::array<float3<L>, kMaxColorCorrectionLuts> lookups;
       for (int k = 0; k < kMaxColorCorrectionLuts; ++k) lookups[k] = float3<L>(get(3 + 3 * k), get(4 + 3 * k), get(5 + 3 * k));
-      return float4<L>(color_correction_combine<C>(float3<L>(get(0), get(1), get(2)), lookups, p), L(1.0f));
+      return float4<L>(color_correction_combine<C>(float3<L>(get(0), get(1), get(2)), lookups, p.lut_weights, p.default_weight),
+                       L(1.0f));
     };
     out.push_back(variant("ColorCorrection", "colorcorrection", C, 3 + 3 * kMaxColorCorrectionLuts, shade,
                           [](ShaderModel m) { return measure_color_correction<C>(m); }));
+  });
+}
+
+void add_engine_post(std::vector<ShaderVariant>& out) {
+  static const EnginePostParams p = [] {
+    EnginePostParams q;
+    q.lut_weights = glm::vec4(0.2f, 0.15f, 0.1f, 0.05f);
+    q.default_weight = 0.5f;
+    return q;
+  }();
+  for_each_engine_post_combo([&]<EnginePostCombo C>() {
+    auto shade = []<class L>(const auto& get) {
+      const float3<L> bloomed = engine_post_bloomed(float3<L>(get(0), get(1), get(2)), float3<L>(get(3), get(4), get(5)), p);
+      std::array<float3<L>, kMaxColorCorrectionLuts> lookups;
+      for (int k = 0; k < kMaxColorCorrectionLuts; ++k) lookups[k] = float3<L>(get(6 + 3 * k), get(7 + 3 * k), get(8 + 3 * k));
+      return float4<L>(color_correction_combine<C.correction()>(bloomed, lookups, p.lut_weights, p.default_weight), L(1.0f));
+    };
+    out.push_back(variant("Engine_Post", "enginepost", C, 6 + 3 * kMaxColorCorrectionLuts, shade,
+                          [](ShaderModel m) { return measure_engine_post<C>(m); }));
   });
 }
 
@@ -331,6 +352,7 @@ const std::vector<ShaderVariant>& shader_catalog() {
     add_luminance_range(c);
     add_color_correction(c);
     add_bloom(c);
+    add_engine_post(c);
     add_film_grain(c);
     return c;
   }();

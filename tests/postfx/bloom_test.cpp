@@ -3,6 +3,8 @@
 // the whole pass against a reference written here in double from §8's formulas; 1 and 2 threads
 // give the same bytes; any frame from 4x4 up; the bloom amount's smoothing.
 
+#include "image_plane.hpp"
+
 #include "luxel/postfx/bloom.hpp"
 #include "luxel/postfx/bloom_amount.hpp"
 
@@ -21,6 +23,8 @@ namespace {
 
 using shading::source::BlurStep;
 using shading::source::HdrType;
+using test::Plane;
+using test::plane_of;
 
 rasterizer::Image solid(int width, int height, uint8_t value) {
   rasterizer::Image image(width, height);
@@ -157,41 +161,6 @@ TEST(Bloom, VerticalSpreadFollowsTheWidthStepQuirkAndIsSymmetricWithoutIt) {
 }
 
 // ---- Against a reference in double -------------------------------------------------------------
-
-/// An RGB image in double, values in [0, 1].
-struct Plane {
-  int width = 0, height = 0;
-  std::vector<glm::dvec3> texels;
-  glm::dvec3 at(int x, int y) const {
-    x = std::clamp(x, 0, width - 1);
-    y = std::clamp(y, 0, height - 1);
-    return texels[size_t(y) * width + x];
-  }
-  /// Bilinear, clamped, D3D's texel centres.
-  glm::dvec3 sample(double u, double v) const {
-    const double x = u * width - 0.5, y = v * height - 0.5;
-    const int x0 = static_cast<int>(std::floor(x)), y0 = static_cast<int>(std::floor(y));
-    const double fx = x - x0, fy = y - y0;
-    return (at(x0, y0) * (1 - fx) + at(x0 + 1, y0) * fx) * (1 - fy) + (at(x0, y0 + 1) * (1 - fx) + at(x0 + 1, y0 + 1) * fx) * fy;
-  }
-  /// Stored as an 8-bit target stores it.
-  Plane rounded() const {
-    Plane r = *this;
-    for (glm::dvec3& t : r.texels)
-      for (int c = 0; c < 3; ++c) t[c] = std::round(std::clamp(t[c], 0.0, 1.0) * 255.0) / 255.0;
-    return r;
-  }
-};
-
-Plane plane_of(const rasterizer::Image& image) {
-  Plane p{image.width, image.height, {}};
-  for (int y = 0; y < image.height; ++y)
-    for (int x = 0; x < image.width; ++x) {
-      const uint8_t* b = image.pixel(x, y);
-      p.texels.push_back(glm::dvec3(b[0], b[1], b[2]) / 255.0);
-    }
-  return p;
-}
 
 /// §8.2 from the formulas: downsample (shaped taps), blur x, blur y x amount, add; 8-bit between.
 Plane reference_bloom(const rasterizer::Image& image, double amount, bool quirk) {

@@ -40,7 +40,7 @@ TEST(SourceColorCorrection, BlendIsFrameTimesDefaultPlusWeightedLookups) {
   const std::array<float3<float>, 4> lookups = {float3<float>(0.1f, 0.9f, 0.4f), float3<float>(0.7f, 0.2f, 0.35f),
                                                 float3<float>(0.05f, 0.6f, 1.0f), float3<float>(0.95f, 0.45f, 0.15f)};
   for_each_color_correction_combo([&]<ColorCorrectionCombo C>() {
-    const float3<float> out = color_correction_combine<C>(frame, lookups, p);
+    const float3<float> out = color_correction_combine<C>(frame, lookups, p.lut_weights, p.default_weight);
     for (int c = 0; c < 3; ++c) {
       double expect = double(frame[c]) * p.default_weight;
       for (int k = 0; k < C.luts; ++k) expect += double(lookups[k][c]) * p.lut_weights[k];
@@ -58,7 +58,7 @@ TEST(SourceColorCorrection, SimdAgreesWithScalarInBits) {
       auto shade = [&]<class L>(const auto& get) -> float4<L> {
         std::array<float3<L>, 4> lookups;
         for (int k = 0; k < 4; ++k) lookups[k] = float3<L>(get(3 + 3 * k), get(4 + 3 * k), get(5 + 3 * k));
-        return float4<L>(color_correction_combine<C>(float3<L>(get(0), get(1), get(2)), lookups, p), get(0));
+        return float4<L>(color_correction_combine<C>(float3<L>(get(0), get(1), get(2)), lookups, p.lut_weights, p.default_weight), get(0));
       };
       const auto r = compare_lanes<15>(shade, {Draw{0.0f, 1.0f, hard_every}}, 512, 7u + C.luts);
       expect_bit_identical(r, C.name());

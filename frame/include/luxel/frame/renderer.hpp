@@ -61,10 +61,10 @@
 //    weighted by the eye's distance through their falloffs, the four heaviest blended by
 //    Source's colorcorrection pass through 32^3 LUTs (postfx/color_correction.hpp), when any
 //    weight is not 0; then film grain when asked (FrameSettings::film_grain), its noise seeded
-//    by the options' seed and the clock's time. The engine draws bloom and color correction in
-//    one Engine_Post pass when both run; luxel draws bloomadd then the correction, which rounds
-//    the sum to 8 bits in between (at most a step apart where the sum stays below 1).
-//    Passes "bloom", "color correction", "film grain".
+//    by the options' seed and the clock's time. When bloom and color correction both run, the
+//    bloom's add and the correction are one Engine_Post draw, as in the engine (SOURCE_FACTS
+//    8.3): the lookups read the unrounded sum. Passes "bloom" (3 draws then, 5 with the add),
+//    "color correction", "film grain".
 // Order: the water's views, then opaque meshes in scene order (depth LESS, single-sided materials
 // cull their back faces, front faces counter-clockwise), alpha-tested ones with D3D9's alpha test (GREATEREQUAL
 // $alphatestreference), then the sky, then translucent meshes back to front by the distance of

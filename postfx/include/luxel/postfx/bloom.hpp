@@ -29,6 +29,7 @@
 // still from the first texel to the last; a small target one texel wide (W of 4 to 7) reads the
 // first footprint only. Smaller frames throw std::invalid_argument.
 
+#include "luxel/postfx/screen_rectangle.hpp"
 #include "luxel/rasterizer/context.hpp"
 #include "luxel/rasterizer/framebuffer.hpp"
 #include "luxel/rasterizer/image.hpp"
@@ -63,6 +64,10 @@ class Bloom {
   void apply(rasterizer::Context& ctx, rasterizer::ColorTarget& frame, float amount);
   /// The same on a resolved frame held as an image.
   void apply(rasterizer::Context& ctx, rasterizer::Image& frame, float amount);
+  /// Every pass but the add, for the combine that adds the bloom itself when color correction
+  /// runs (color_correction.hpp): afterwards frame_texture() and bloom_texture() hold what it
+  /// reads. Returns false, having run nothing, when `amount` is 0 or below.
+  bool blur(rasterizer::Context& ctx, const rasterizer::Image& frame, float amount);
 
   // The passes one by one, in this order (benchmarks time them; tests look between them). A pass
   // before any copy throws std::logic_error.
@@ -75,6 +80,12 @@ class Bloom {
 
   /// The small target as the last pass left it (after blur_y: the bloom texture that add reads).
   const rasterizer::Image& small_image() const { return small_image_; }
+  /// After a copy: the frame as the passes read it (_rt_FullFrameFB).
+  const rasterizer::Texture& frame_texture() const;
+  /// After blur_y: the bloom (_rt_SmallFB0) and the texels of it that the add stretches over the
+  /// frame (from (0, -0.5) to the last texel, see above).
+  const rasterizer::Texture& bloom_texture() const;
+  TexelRect bloom_rectangle() const;
 
  private:
   /// Makes the frame copy, the small targets and textures fit a frame of this size.

@@ -22,6 +22,7 @@
 // clamped at 0, so weights summing to 1 or more leave none of the ungraded frame (and above 1
 // brighten it, as the shader's sum would).
 
+#include "luxel/postfx/bloom.hpp"
 #include "luxel/postfx/color_transform.hpp"
 #include "luxel/postfx/lut.hpp"
 #include "luxel/rasterizer/context.hpp"
@@ -52,6 +53,12 @@ float default_weight(std::span<const float> weights);
 /// or more than kMaxLuts, a missing LUT, or a weight that is negative or not finite.
 rasterizer::Image color_correct(rasterizer::Context& ctx, const rasterizer::Image& frame,
                                 std::span<const WeightedLut> luts);
+
+/// The engine's pass when the frame also has a bloom (SOURCE_FACTS §8.3; Engine_Post,
+/// shading/source/engine_post.hpp): `bloom` has blurred the frame (Bloom::blur), and one draw adds
+/// the bloom to the frame and color-corrects the sum, unrounded in between. Returns the finished
+/// frame. Same argument checks as above; std::logic_error when `bloom` has blurred no frame.
+rasterizer::Image color_correct(rasterizer::Context& ctx, const Bloom& bloom, std::span<const WeightedLut> luts);
 
 /// The same blend in float: width * height * 4 floats, RGBA, rows top first, alpha the frame's
 /// (over 255). Same argument checks as color_correct.

@@ -76,10 +76,27 @@ inline ScreenRectangle<1> screen_rectangle(int target_width, int target_height, 
   return screen_rectangle<1>(target_width, target_height, src, {glm::vec2(0.0f)});
 }
 
-/// Draws the rectangle with `state` (its viewport covers the target) and pixel functor `ps`.
-template <int Taps, class PixelShader>
+/// Two rectangles over the same target drawn as one, for a pass that reads two textures of
+/// different sizes (Engine_Post reads the frame and the bloom): varying 0 .xy runs over the first's
+/// coordinates, .zw over the second's.
+struct ScreenRectanglePair {
+  static constexpr int kVaryings = 1;
+  ScreenRectangle<1> first, second;
+
+  void operator()(uint32_t vertex, rasterizer::VertexOutput<1>& out) const {
+    rasterizer::VertexOutput<1> a, b;
+    first(vertex, a);
+    second(vertex, b);
+    out.position = a.position;
+    out.varyings[0] = glm::vec4(a.varyings[0].x, a.varyings[0].y, b.varyings[0].x, b.varyings[0].y);
+  }
+};
+
+/// Draws a rectangle (ScreenRectangle or ScreenRectanglePair) with `state` (its viewport covers
+/// the target) and pixel functor `ps`.
+template <class Rectangle, class PixelShader>
 void draw_screen_rectangle(rasterizer::Context& ctx, rasterizer::ColorTarget& target,
-                           const rasterizer::PipelineState& state, const ScreenRectangle<Taps>& rectangle,
+                           const rasterizer::PipelineState& state, const Rectangle& rectangle,
                            const PixelShader& ps) {
   rasterizer::draw(ctx, rasterizer::Framebuffer{&target, nullptr}, state, rasterizer::Geometry::non_indexed(6),
                    rectangle, ps);

@@ -87,14 +87,15 @@ inline float3<L> color_correction_uvw(const float3<L>& color) {
   return color * ((kSize - 1.0f) / kSize) + 0.5f / kSize;
 }
 
-/// The blend of the frame's color with the lookups already fetched (lookups[k] for k < C.luts).
+/// The blend of the frame's color with the lookups already fetched (lookups[k] for k < C.luts):
+/// c0 = lut_weights, c1.x = default_weight.
 template <ColorCorrectionCombo C, Lane L>
 inline float3<L> color_correction_combine(const float3<L>& frame,
                                           const std::array<float3<L>, kMaxColorCorrectionLuts>& lookups,
-                                          const ColorCorrectionParams& p) {
+                                          const glm::vec4& lut_weights, float default_weight) {
   static_assert(C.valid());
-  const float4<L> weights = constant<L>(p.lut_weights);
-  float3<L> out = frame * constant<L>(p.default_weight);
+  const float4<L> weights = constant<L>(lut_weights);
+  float3<L> out = frame * constant<L>(default_weight);
   for (int k = 0; k < C.luts; ++k) out = out + lookups[k] * weights[k];
   return out;
 }
@@ -106,7 +107,7 @@ inline float4<L> color_correction(const float2<L>& uv, const ColorCorrectionPara
   const float3<L> uvw = color_correction_uvw(frame.rgb());
   std::array<float3<L>, kMaxColorCorrectionLuts> lookups;
   for (int k = 0; k < C.luts; ++k) lookups[k] = tex3D(p.luts[k], uvw).rgb();
-  return float4<L>(color_correction_combine<C>(frame.rgb(), lookups, p), frame.w);
+  return float4<L>(color_correction_combine<C>(frame.rgb(), lookups, p.lut_weights, p.default_weight), frame.w);
 }
 
 template <ColorCorrectionCombo C>
