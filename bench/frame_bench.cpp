@@ -8,6 +8,9 @@
 // `demo`, `courtyard`) are built-in scenes drawn by frame::Renderer; W3 `sponza` is any glTF file
 // drawn by workloads/sponza.hpp with the peer's arguments (--sponza PATH --eye X,Y,Z --target X,Y,Z).
 // stderr gets the CPU, the instruction set and the fast paths turned off (LUXEL_NO_FASTPATH).
+// The Source frames (demo, courtyard) run the passes on the finished image that their scene and
+// the options ask for: auto exposure's histogram and color correction from the scene, bloom and
+// film grain with --bloom and --film-grain; --passes times each.
 
 #include "machine.hpp"
 #include "sponza.hpp"
@@ -29,6 +32,7 @@
 #include <functional>
 #include <iostream>
 #include <memory>
+#include <optional>
 #include <string>
 #include <tuple>
 #include <utility>
@@ -69,6 +73,10 @@ int main(int argc, char** argv) {
   app.add_flag("--passes", passes,
                "Then time each pass of the built-in scenes' frames (stderr: median ms per pass, each pass run to its end "
                "before the next, so their sum exceeds the frame's time)");
+  bool bloom = false;
+  std::optional<uint64_t> film_grain_seed;
+  app.add_flag("--bloom", bloom, "Add the bloom to the Source frames (as luxel render does; off in the library's FrameSettings)");
+  app.add_option("--film-grain", film_grain_seed, "Blend film grain seeded by SEED onto the Source frames");
   app.add_option("--sponza", sponza_path, "glTF file for the sponza workload (default: the first that exists of " +
                                              std::string(kSponzaDefaults[0]) + " and " + kSponzaDefaults[1] + ")");
   app.add_option("--eye", eye_text, "Sponza camera position X,Y,Z in glTF space (with --target)");
@@ -78,6 +86,8 @@ int main(int argc, char** argv) {
   CLI11_PARSE(app, argc, argv);
   if (workloads.empty()) workloads = {"fill", "tris", "sponza"};
   settings.model = luxel::shading::parse_pixel_model(model);
+  if (bloom) settings.bloom = luxel::postfx::BloomOptions{};
+  if (film_grain_seed) settings.film_grain = luxel::postfx::FilmGrainOptions{*film_grain_seed};
   luxel::bench::SponzaView view;
   for (auto [text, name, value] : {std::tuple{&eye_text, "--eye", &view.eye}, std::tuple{&target_text, "--target", &view.target}}) {
     if (text->empty()) continue;
