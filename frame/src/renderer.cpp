@@ -7,6 +7,7 @@
 #include "views.hpp"
 #include "water_passes.hpp"
 
+#include "luxel/frame/look.hpp"
 #include "luxel/frame/textures.hpp"
 #include "luxel/postfx/bloom_amount.hpp"
 #include "luxel/rasterizer/framebuffer.hpp"
@@ -117,6 +118,17 @@ float frame_exposure(const scenes::Scene& scene, const FrameSettings& settings) 
   if (settings.exposure) return *settings.exposure;
   const scenes::Exposure& e = frame_controls(scene, settings);
   return std::clamp(1.0f, e.min_scale, std::max(e.min_scale, e.max_scale));
+}
+
+/// Where the frame's camera is at each time on the clock, and from when it stands still (the
+/// camera path's end; a camera of its own never moves).
+EyePath eye_path(const scenes::Scene& scene, const FrameSettings& settings) {
+  const bool moves = settings.camera_path && !settings.view;
+  return {[&scene, at = settings](float time) mutable {
+            at.time = time;
+            return frame_camera(scene, at).position;
+          },
+          moves && !scene.camera_path.empty() ? scene.camera_path.back().time : 0.0f};
 }
 
 /// Whether the frames run auto exposure: no fixed scale, and a range somewhere in the scene.
@@ -647,13 +659,19 @@ Renderer::Renderer(const scenes::Scene& scene, const FrameSettings& settings, st
   st.completed_meshes.resize(scene.meshes.size());
   st.exposure = frame_exposure(scene, settings);
   if (uses_auto_exposure(scene, settings)) st.auto_exposure.emplace(auto_exposure_settings(frame_controls(scene, settings), settings));
-  if (settings.color_correction && !settings.cubemap_capture && !scene.color_corrections.empty()) st.color_correction.emplace(scene);
+  if (!settings.cubemap_capture) {
+    const bool scene_nodes =
+        settings.color_correction && !(scene.color_corrections.empty() && scene.color_correction_volumes.empty());
+    const std::optional<std::string> look = look_lut(settings.look);
+    if (scene_nodes || look) st.color_correction.emplace(scene, eye_path(scene, settings), scene_nodes, look);
+  }
   // The bloom's quarter-size targets need a frame of 4 x 4 or more.
   if (settings.bloom && !settings.cubemap_capture && settings.width >= 4 && settings.height >= 4) st.bloom.emplace(*settings.bloom);
   // The SDK's smoothed amount is a static that starts at 1 when the game starts; a renderer starts
   // it at the scene's own scale, so that a first frame shows the bloom the designer set.
   st.bloom_amount.smoothed = frame_controls(scene, settings).bloom_scale;
-  if (settings.film_grain && !settings.cubemap_capture) st.film_grain.emplace(*settings.film_grain);
+  if (const auto grain = look_film_grain(settings.look, settings.film_grain); grain && !settings.cubemap_capture)
+    st.film_grain.emplace(*grain);
   move_models(st, -1.0f);
   build_views(st);
 }
@@ -715,7 +733,7 @@ void Renderer::render(Context& ctx) {
     clock.run("bloom", 5, [&] { st.bloom->apply(ctx, st.image, amount); });
   }
   if (st.color_correction) {
-    const std::vector<postfx::WeightedLut> luts = st.color_correction->weighted_at(eye);
+    const std::vector<postfx::WeightedLut> luts = st.color_correction->weighted_at(st.settings.time);
     if (!luts.empty()) clock.run("color correction", 1, [&] { st.image = postfx::color_correct(ctx, st.image, luts); });
   }
   if (st.film_grain) {

@@ -20,6 +20,10 @@ double srgb_encode(double linear);
 /// +Y), nothing else.
 scenes::Scene top_down();
 
+/// top_down() filled by an unlit square whose corners are four saturated colors (something for a
+/// grade to change), at a fixed exposure of 1.
+scenes::Scene color_ramp();
+
 /// The square [x0, x1] x [y0, y1] at height z, facing +Z (counter-clockwise seen from above)
 /// unless `flip`.
 scenes::Mesh square(float x0, float y0, float x1, float y1, float z, int material, bool flip = false);

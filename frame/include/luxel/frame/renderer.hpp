@@ -58,10 +58,16 @@
 //    controls' bloom scale where the camera is, smoothed once per frame (postfx/bloom_amount.hpp)
 //    from the scale at the first frame (the SDK's starts at 1 once per game);
 //    then color correction (FrameSettings::color_correction): the scene's color-correction nodes
-//    weighted by the eye's distance through their falloffs, the four heaviest blended by
-//    Source's colorcorrection pass through 32^3 LUTs (postfx/color_correction.hpp), when any
-//    weight is not 0; then film grain when asked (FrameSettings::film_grain), its noise seeded
-//    by the options' seed and the clock's time. The engine draws bloom and color correction in
+//    (Source's color_correction: faded in and out by the inputs sent to them, weighted by the
+//    eye's distance through their falloffs) and volumes (color_correction_volume: ramped up
+//    while the eye is inside, down after it leaves), the four heaviest blended by Source's
+//    colorcorrection pass through 32^3 LUTs (postfx/color_correction.hpp), when any weight is
+//    not 0. The weights are a function of the clock's time and the camera's path alone
+//    (frame/src/color_correction_nodes.hpp has the rules): a frame's do not depend on which
+//    frames were rendered before it. Then film grain when asked (FrameSettings::film_grain), its
+//    noise seeded by the options' seed and the clock's time. A look (FrameSettings::look,
+//    look.hpp) adds its grade to the color correction, over the scene's nodes, and its grain.
+//    The engine draws bloom and color correction in
 //    one Engine_Post pass when both run; luxel draws bloomadd then the correction, which rounds
 //    the sum to 8 bits in between (at most a step apart where the sum stays below 1).
 //    Passes "bloom", "color correction", "film grain".
@@ -100,6 +106,7 @@
 // [0, 1]). The view-projection matrix is computed in double and rounded once, so that a camera
 // whose exact matrix has float entries (the workloads' orthographic cameras) gets exactly those.
 
+#include "luxel/frame/look.hpp"
 #include "luxel/postfx/auto_exposure.hpp"
 #include "luxel/postfx/bloom.hpp"
 #include "luxel/postfx/film_grain.hpp"
@@ -155,6 +162,9 @@ struct FrameSettings {
   bool color_correction = true;
   /// Film grain last; nullopt (the default, as Source without -filmgrain): none.
   std::optional<postfx::FilmGrainOptions> film_grain = std::nullopt;
+  /// A look over the whole frame (look.hpp): archival grades every frame at full weight over the
+  /// scene's color-correction nodes and blends a stronger grain (film_grain's seed, or 0).
+  Look look = Look::none;
   /// Count the pixels each shader combo shades (Renderer::shader_uses); off, a frame counts nothing.
   bool count_shading = false;
   /// Time each pass (Renderer::pass_times). The rasterizer then runs each pass over all tiles
