@@ -719,8 +719,15 @@ void Renderer::render(Context& ctx) {
   // fog factor), which a screen never shows: the image is what is shown, opaque.
   for (size_t i = 3; i < st.image.rgba.size(); i += 4) st.image.rgba[i] = 255;
   st.stats = ctx.stats();  // the 3D frame's draws, not the passes on the finished image
+  st.shader_uses.clear();
+  if (st.settings.count_shading) {  // the 3D draws have run (the resolve flushed them)
+    if (st.water) st.water->add_shader_uses(st.shader_uses);
+    add_shader_uses(st.passes, st.shader_uses);
+  }
+  // The post passes add their shaders after the 3D draws'.
+  const postfx::ShaderTally tally{st.settings.count_shading ? &st.shader_uses : nullptr, st.settings.model};
   if (st.auto_exposure) {
-    clock.run("histogram", 1, [&] { st.auto_exposure->measure(ctx, st.image, st.depth, std::max(dt, 0.0f)); });
+    clock.run("histogram", 1, [&] { st.auto_exposure->measure(ctx, st.image, st.depth, std::max(dt, 0.0f), tally); });
     if (st.auto_exposure->scale() != st.exposure) {
       st.exposure = st.auto_exposure->scale();
       st.views_current = false;  // the draws carry the scale in their constants
@@ -730,19 +737,14 @@ void Renderer::render(Context& ctx) {
   if (st.bloom) {
     // INTEGER HDR: no LDR factor (bloom_amount.hpp).
     const float amount = st.bloom_amount.advance(scenes::exposure_at(*st.scene, eye).bloom_scale, shading::source::HdrType::integer);
-    clock.run("bloom", 5, [&] { st.bloom->apply(ctx, st.image, amount); });
+    clock.run("bloom", 5, [&] { st.bloom->apply(ctx, st.image, amount, tally); });
   }
   if (st.color_correction) {
     const std::vector<postfx::WeightedLut> luts = st.color_correction->weighted_at(st.settings.time);
-    if (!luts.empty()) clock.run("color correction", 1, [&] { st.image = postfx::color_correct(ctx, st.image, luts); });
+    if (!luts.empty()) clock.run("color correction", 1, [&] { st.image = postfx::color_correct(ctx, st.image, luts, tally); });
   }
   if (st.film_grain) {
-    clock.run("film grain", 1, [&] { st.film_grain->apply(ctx, st.image, std::bit_cast<uint32_t>(st.settings.time)); });
-  }
-  st.shader_uses.clear();
-  if (st.settings.count_shading) {
-    if (st.water) st.water->add_shader_uses(st.shader_uses);
-    add_shader_uses(st.passes, st.shader_uses);
+    clock.run("film grain", 1, [&] { st.film_grain->apply(ctx, st.image, std::bit_cast<uint32_t>(st.settings.time), tally); });
   }
 }
 

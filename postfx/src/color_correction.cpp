@@ -2,10 +2,13 @@
 
 #include "luxel/postfx/color_correction.hpp"
 
+#include "counted_draw.hpp"
+
 #include "luxel/rasterizer/draw.hpp"
 #include "luxel/rasterizer/framebuffer.hpp"
 #include "luxel/shading/source/color_correction.hpp"
 
+#include <atomic>
 #include <cmath>
 #include <stdexcept>
 #include <string>
@@ -59,7 +62,7 @@ float default_weight(std::span<const float> weights) {
 }
 
 rasterizer::Image color_correct(rasterizer::Context& ctx, const rasterizer::Image& frame,
-                                std::span<const WeightedLut> luts) {
+                                std::span<const WeightedLut> luts, const ShaderTally& tally) {
   const std::vector<float> weights = checked_weights(luts);
   check_frame(frame);
   for (const WeightedLut& l : luts)
@@ -86,10 +89,14 @@ rasterizer::Image color_correct(rasterizer::Context& ctx, const rasterizer::Imag
   const FullScreenVS vs;
   src::for_each_color_correction_combo([&]<src::ColorCorrectionCombo C>() {
     if (C.luts != int(luts.size())) return;
-    rasterizer::draw(ctx, rasterizer::Framebuffer{&target, nullptr}, state, rasterizer::Geometry::non_indexed(6), vs,
-                     src::ColorCorrectionPixelShader<C>{&params});
+    counted_draw<src::ColorCorrectionPixelShader<C>>(
+        tally, C.name(), src::measure_color_correction<C>, [&](std::atomic<uint64_t>* pixels) {
+          rasterizer::draw(ctx, rasterizer::Framebuffer{&target, nullptr}, state, rasterizer::Geometry::non_indexed(6), vs,
+                           src::ColorCorrectionPixelShader<C>{&params, pixels});
+          ctx.flush();  // the draw reads `params` and `pixels`
+        });
   });
-  return rasterizer::resolve(ctx, target);  // flushes: the draw has run before params go
+  return rasterizer::resolve(ctx, target);
 }
 
 std::vector<float> color_correct_exact(const rasterizer::Image& frame, std::span<const WeightedTransform> transforms) {

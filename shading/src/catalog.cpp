@@ -253,7 +253,7 @@ void add_luminance_range(std::vector<ShaderVariant>& out) {
     auto shade = []<class L>(const auto& get) {
       return luminance_range_combine<C>(float3<L>(get(0), get(1), get(2)), p).color;
     };
-    out.push_back(variant("LuminanceRange", "luminance", C, 3, shade,
+    out.push_back(variant(LuminanceRangePixelShader<C>::kFamily, "luminance", C, 3, shade,
                           [](ShaderModel m) { return measure_luminance_range<C>(m); }));
   });
 }
@@ -271,14 +271,14 @@ void add_color_correction(std::vector<ShaderVariant>& out) {
       for (int k = 0; k < kMaxColorCorrectionLuts; ++k) lookups[k] = float3<L>(get(3 + 3 * k), get(4 + 3 * k), get(5 + 3 * k));
       return float4<L>(color_correction_combine<C>(float3<L>(get(0), get(1), get(2)), lookups, p), L(1.0f));
     };
-    out.push_back(variant("ColorCorrection", "colorcorrection", C, 3 + 3 * kMaxColorCorrectionLuts, shade,
+    out.push_back(variant(ColorCorrectionPixelShader<C>::kFamily, "colorcorrection", C, 3 + 3 * kMaxColorCorrectionLuts, shade,
                           [](ShaderModel m) { return measure_color_correction<C>(m); }));
   });
 }
 
 /// The post-processing shaders have no static combos: one variant each.
 struct SingleVariant {
-  std::string name() const { return "default"; }
+  std::string name() const { return kSingleCombo; }
 };
 
 void add_bloom(std::vector<ShaderVariant>& out) {
@@ -288,7 +288,7 @@ void add_bloom(std::vector<ShaderVariant>& out) {
     for (int i = 0; i < 4; ++i) taps[i] = float3<L>(get(3 * i), get(3 * i + 1), get(3 * i + 2));
     return downsample_combine(taps, downsample_params);
   };
-  out.push_back(variant("Downsample_nohdr", "downsample", SingleVariant{}, 12, downsample_shade, measure_downsample));
+  out.push_back(variant(DownsamplePixelShader::kFamily, "downsample", SingleVariant{}, 12, downsample_shade, measure_downsample));
 
   static const BlurParams blur_params = blur_constants(BlurAxis::vertical, 320, 180, BlurStep::sdk_width_quirk, 0.3f);
   auto blur_shade = []<class L>(const auto& get) {
@@ -301,10 +301,10 @@ void add_bloom(std::vector<ShaderVariant>& out) {
     }
     return blur_combine(t, blur_params);
   };
-  out.push_back(variant("BlurFilter", "blur", SingleVariant{}, 39, blur_shade, measure_blur));
+  out.push_back(variant(BlurPixelShader::kFamily, "blur", SingleVariant{}, 39, blur_shade, measure_blur));
 
   auto add_shade = []<class L>(const auto& get) { return bloom_add_combine(float3<L>(get(0), get(1), get(2))); };
-  out.push_back(variant("bloomadd", "bloomadd", SingleVariant{}, 3, add_shade, measure_bloom_add));
+  out.push_back(variant(BloomAddPixelShader::kFamily, "bloomadd", SingleVariant{}, 3, add_shade, measure_bloom_add));
 }
 
 void add_film_grain(std::vector<ShaderVariant>& out) {
@@ -314,7 +314,7 @@ void add_film_grain(std::vector<ShaderVariant>& out) {
     return q;
   }();
   auto shade = []<class L>(const auto& get) { return film_grain_combine(float4<L>(get(0), get(1), get(2), get(3)), p); };
-  out.push_back(variant("filmgrain", "filmgrain", SingleVariant{}, 4, shade, measure_film_grain));
+  out.push_back(variant(FilmGrainPixelShader::kFamily, "filmgrain", SingleVariant{}, 4, shade, measure_film_grain));
 }
 
 }  // namespace

@@ -115,6 +115,7 @@
 #include "luxel/rasterizer/image.hpp"
 #include "luxel/scenes/scene.hpp"
 #include "luxel/shading/shader_model.hpp"
+#include "luxel/shading/source/shader_use.hpp"
 
 #include <glm/mat4x4.hpp>
 #include <glm/vec4.hpp>
@@ -165,7 +166,8 @@ struct FrameSettings {
   /// A look over the whole frame (look.hpp): archival grades every frame at full weight over the
   /// scene's color-correction nodes and blends a stronger grain (film_grain's seed, or 0).
   Look look = Look::none;
-  /// Count the pixels each shader combo shades (Renderer::shader_uses); off, a frame counts nothing.
+  /// Count the pixels each shader combo shades, the post passes' included (Renderer::shader_uses);
+  /// off, a frame counts nothing.
   bool count_shading = false;
   /// Time each pass (Renderer::pass_times). The rasterizer then runs each pass over all tiles
   /// before the next instead of all passes tile by tile, so a timed frame is a little slower.
@@ -198,13 +200,9 @@ struct PassTime {
   int draws = 0;
 };
 
-/// One shader combo the last frame ran (FrameSettings::count_shading).
-struct ShaderUse {
-  std::string family;   ///< "LightmappedGeneric", "VertexLitGeneric", ...
-  std::string combo;    ///< the combo's name in the shading catalog
-  uint64_t pixels = 0;  ///< pixels it shaded (covered pixels, helper lanes not counted)
-  int slots = 0;        ///< its counted DX9 instruction slots per pixel (arithmetic + texture) on the frame's model
-};
+/// One shader combo the last frame ran (FrameSettings::count_shading): its family and combo, the
+/// pixels it shaded, its counted DX9 slots per pixel on the frame's model.
+using ShaderUse = shading::source::ShaderUse;
 
 /// The camera a frame with these settings looks through (FrameSettings::view when set). Throws
 /// std::invalid_argument when the scene has no such camera (an index out of range, a camera path
@@ -247,8 +245,9 @@ class Renderer {
   std::vector<glm::vec4> render_float(rasterizer::Context& ctx);
   /// What the draws of the last frame did, summed (the water's views included).
   const rasterizer::DrawStats& stats() const;
-  /// What each shader combo did in the last frame (the water's views included), in a fixed order
-  /// (first draw first); empty unless FrameSettings::count_shading.
+  /// What each shader combo did in the last frame, the water's views and the post passes
+  /// (histogram, bloom, color correction, film grain) included, in a fixed order (first draw
+  /// first); empty unless FrameSettings::count_shading.
   const std::vector<ShaderUse>& shader_uses() const;
   /// The last frame's passes in the order they ran, the ones the scene has; empty unless
   /// FrameSettings::time_passes.

@@ -24,6 +24,7 @@
 
 #include "luxel/postfx/color_transform.hpp"
 #include "luxel/postfx/lut.hpp"
+#include "luxel/postfx/shader_tally.hpp"
 #include "luxel/rasterizer/context.hpp"
 #include "luxel/rasterizer/image.hpp"
 
@@ -48,10 +49,11 @@ struct WeightedTransform {
 /// The frame's own weight beside lookups of these weights: max(0, 1 - sum).
 float default_weight(std::span<const float> weights);
 
-/// The engine's pass over `frame` (RGBA8, alpha kept). Throws std::invalid_argument for no LUT
-/// or more than kMaxLuts, a missing LUT, or a weight that is negative or not finite.
+/// The engine's pass over `frame` (RGBA8, alpha kept); the draw's shader goes to `tally`. Throws
+/// std::invalid_argument for no LUT or more than kMaxLuts, a missing LUT, or a weight that is
+/// negative or not finite.
 rasterizer::Image color_correct(rasterizer::Context& ctx, const rasterizer::Image& frame,
-                                std::span<const WeightedLut> luts);
+                                std::span<const WeightedLut> luts, const ShaderTally& tally = {});
 
 /// The same blend in float: width * height * 4 floats, RGBA, rows top first, alpha the frame's
 /// (over 255). Same argument checks as color_correct.
