@@ -50,10 +50,7 @@ FrameSettings settings_at(const scenes::Scene& s, double time, bool color_correc
 }
 
 rasterizer::Image frame_at(const scenes::Scene& s, double time, bool color_correction = true) {
-  Renderer r(s, settings_at(s, time, color_correction));
-  rasterizer::Context ctx(2);
-  r.render(ctx);
-  return r.image();
+  return render_frame(s, settings_at(s, time, color_correction));
 }
 
 /// `plain` blended with builtin LUT `lut` at `weight` by the engine's pass (nothing at 0).

@@ -78,6 +78,13 @@ void attach_test_bake(scenes::Scene& scene) {
   bake::attach(scene, it->second);
 }
 
+rasterizer::Image render_frame(const scenes::Scene& scene, const FrameSettings& settings, int threads) {
+  Renderer r(scene, settings);
+  rasterizer::Context ctx(threads);
+  r.render(ctx);
+  return r.image();
+}
+
 RenderedFrame render_builtin(std::string_view name, const FrameSettings& settings,
                              const rasterizer::ContextOptions& options, int frames) {
   scenes::Scene scene = scenes::make_builtin_scene(name, {settings.width, settings.height});

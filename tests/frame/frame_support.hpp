@@ -28,6 +28,9 @@ scenes::Scene color_ramp();
 /// unless `flip`.
 scenes::Mesh square(float x0, float y0, float x1, float y1, float z, int material, bool flip = false);
 
+/// One frame of `scene` with `settings`, rendered on `threads` worker threads.
+rasterizer::Image render_frame(const scenes::Scene& scene, const FrameSettings& settings, int threads = 2);
+
 /// Attaches a cheap, deterministic bake (lightmaps, ambient cubes) to `scene`, baked once per
 /// scene name and test binary.
 void attach_test_bake(scenes::Scene& scene);

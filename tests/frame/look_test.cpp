@@ -29,13 +29,6 @@ FrameSettings archival(float time = 0.0f) {
   return f;
 }
 
-rasterizer::Image render(const scenes::Scene& s, const FrameSettings& f, int threads = 2) {
-  Renderer r(s, f);
-  rasterizer::Context ctx(threads);
-  r.render(ctx);
-  return r.image();
-}
-
 /// A global node (no falloff) of `lut` holding `weight`.
 scenes::ColorCorrection global_node(const char* lut, float weight) {
   scenes::ColorCorrection c;
@@ -61,26 +54,26 @@ TEST(FrameLook, ArchivalGradesOverTheScenesNodesWithinFourLookups) {
   const postfx::Lut warm = postfx::compose(postfx::resolve_lut("builtin:warm"), grade);
   const postfx::Lut cool = postfx::compose(postfx::resolve_lut("builtin:cool"), grade);
   scenes::Scene s = color_ramp();
-  const rasterizer::Image plain = render(s, FrameSettings{kSize, kSize, 1});
+  const rasterizer::Image plain = render_frame(s, FrameSettings{kSize, kSize, 1});
 
   // No nodes: the grade alone, at 1.
-  EXPECT_EQ(render(s, archival()).rgba, expected(plain, {{alone, 1.0f}}, 0.0f).rgba);
+  EXPECT_EQ(render_frame(s, archival()).rgba, expected(plain, {{alone, 1.0f}}, 0.0f).rgba);
   // One node at 0.5: it keeps its weight, composed with the grade; the grade takes the rest.
   s.color_corrections = {global_node("builtin:warm", 0.5f)};
-  EXPECT_EQ(render(s, archival()).rgba, expected(plain, {{warm, 0.5f}, {alone, 0.5f}}, 0.0f).rgba);
+  EXPECT_EQ(render_frame(s, archival()).rgba, expected(plain, {{warm, 0.5f}, {alone, 0.5f}}, 0.0f).rgba);
   // Four nodes at 0.2: the three heaviest (the earlier on a tie), the grade the fourth at 0.4.
   s.color_corrections = {global_node("builtin:warm", 0.2f), global_node("builtin:cool", 0.2f),
                          global_node("builtin:warm", 0.2f), global_node("builtin:cool", 0.2f)};
-  EXPECT_EQ(render(s, archival()).rgba, expected(plain, {{warm, 0.2f}, {cool, 0.2f}, {warm, 0.2f}, {alone, 0.4f}}, 0.0f).rgba);
+  EXPECT_EQ(render_frame(s, archival()).rgba, expected(plain, {{warm, 0.2f}, {cool, 0.2f}, {warm, 0.2f}, {alone, 0.4f}}, 0.0f).rgba);
   // Five at 0.4: the three heaviest weigh 1.2, nothing is left for the grade alone: four nodes.
   s.color_corrections = {global_node("builtin:cool", 0.4f), global_node("builtin:warm", 0.4f),
                          global_node("builtin:cool", 0.4f), global_node("builtin:warm", 0.4f),
                          global_node("builtin:cool", 0.4f)};
-  EXPECT_EQ(render(s, archival()).rgba, expected(plain, {{cool, 0.4f}, {warm, 0.4f}, {cool, 0.4f}, {warm, 0.4f}}, 0.0f).rgba);
+  EXPECT_EQ(render_frame(s, archival()).rgba, expected(plain, {{cool, 0.4f}, {warm, 0.4f}, {cool, 0.4f}, {warm, 0.4f}}, 0.0f).rgba);
   // Without the scene's nodes (mat_colorcorrection 0) the look still grades.
   FrameSettings no_nodes = archival();
   no_nodes.color_correction = false;
-  EXPECT_EQ(render(s, no_nodes).rgba, expected(plain, {{alone, 1.0f}}, 0.0f).rgba);
+  EXPECT_EQ(render_frame(s, no_nodes).rgba, expected(plain, {{alone, 1.0f}}, 0.0f).rgba);
 }
 
 /// Mean over the pixels of max(r, g, b) - min(r, g, b), in 8-bit steps.
@@ -108,8 +101,8 @@ double noise(const rasterizer::Image& a, const rasterizer::Image& b) {
 
 TEST(FrameLook, ArchivalIsDesaturatedAndGrainy) {
   const scenes::Scene s = color_ramp();
-  const rasterizer::Image plain = render(s, FrameSettings{kSize, kSize, 1});
-  const rasterizer::Image old = render(s, archival());
+  const rasterizer::Image plain = render_frame(s, FrameSettings{kSize, kSize, 1});
+  const rasterizer::Image old = render_frame(s, archival());
   // Saturation 0.1 leaves a tenth of the chroma; the sepia balance adds at most 0.06 (15 steps)
   // between red and blue and the grain is the same in every channel, so under 0.1 x plain + 15:
   // with the ramp's mean chroma near 48, under 20, where the plain frame is above 40.
@@ -127,22 +120,22 @@ TEST(FrameLook, ArchivalIsDesaturatedAndGrainy) {
   const rasterizer::Image graded = postfx::color_correct(ctx, plain, {&full, 1});
   FrameSettings grainy{kSize, kSize, 1};
   grainy.film_grain = postfx::FilmGrainOptions{};
-  const double archival_noise = noise(old, graded), default_noise = noise(render(s, grainy), plain);
+  const double archival_noise = noise(old, graded), default_noise = noise(render_frame(s, grainy), plain);
   EXPECT_GT(archival_noise, 10.0);
   EXPECT_GT(archival_noise, 1.2 * default_noise) << default_noise;
 }
 
 TEST(FrameLook, ArchivalGrainMovesEachFrameAndIsTheSameOnAnyThreadCount) {
   const scenes::Scene s = color_ramp();
-  const rasterizer::Image first = render(s, archival(0.0f), 1);
-  EXPECT_EQ(render(s, archival(0.0f), 2).rgba, first.rgba);
-  const rasterizer::Image next = render(s, archival(1.0f / 30.0f), 1);
-  EXPECT_EQ(render(s, archival(1.0f / 30.0f), 2).rgba, next.rgba);
+  const rasterizer::Image first = render_frame(s, archival(0.0f), 1);
+  EXPECT_EQ(render_frame(s, archival(0.0f), 2).rgba, first.rgba);
+  const rasterizer::Image next = render_frame(s, archival(1.0f / 30.0f), 1);
+  EXPECT_EQ(render_frame(s, archival(1.0f / 30.0f), 2).rgba, next.rgba);
   EXPECT_GT(noise(first, next), 10.0) << "each frame its own grain";
   // A seed of its own (luxel render --film-grain SEED) gives other grain at the same strength.
   FrameSettings seeded = archival(0.0f);
   seeded.film_grain = postfx::FilmGrainOptions{7};
-  EXPECT_NE(render(s, seeded).rgba, first.rgba);
+  EXPECT_NE(render_frame(s, seeded).rgba, first.rgba);
 }
 
 }  // namespace
