@@ -58,16 +58,18 @@
 //    controls' bloom scale where the camera is, smoothed once per frame (postfx/bloom_amount.hpp)
 //    from the scale at the first frame (the SDK's starts at 1 once per game);
 //    then color correction (FrameSettings::color_correction): the scene's color-correction nodes
-//    (Source's color_correction: faded in and out by the inputs sent to them, weighted by the
-//    eye's distance through their falloffs) and volumes (color_correction_volume: ramped up
-//    while the eye is inside, down after it leaves), the four heaviest blended by Source's
-//    colorcorrection pass through 32^3 LUTs (postfx/color_correction.hpp), when any weight is
-//    not 0. The weights are a function of the clock's time and the camera's path alone
-//    (frame/src/color_correction_nodes.hpp has the rules): a frame's do not depend on which
-//    frames were rendered before it. Then film grain when asked (FrameSettings::film_grain), its
-//    noise seeded by the options' seed and the clock's time. A look (FrameSettings::look,
-//    look.hpp) adds its grade to the color correction, over the scene's nodes, and its grain.
-//    The engine draws bloom and color correction in
+//    (Source's color_correction: faded in and out by the inputs sent to them up to the clock's
+//    time with the SDK's fades, SOURCE_FACTS 9.3, an enabled node holding max_weight where the
+//    SDK spawns it at 1; weighted by the eye's distance through their falloffs) and volumes
+//    (color_correction_volume: ramped up from when the eye entered, down from when it left, the
+//    eye's place tested every 0.01 s of the clock from 0 as the volume thinks), the four
+//    heaviest blended by Source's colorcorrection pass through 32^3 LUTs
+//    (postfx/color_correction.hpp), when any weight is not 0. The weights are a function of the
+//    clock's time and the camera's path alone (frame/src/color_correction_nodes.hpp): a frame's
+//    do not depend on which frames were rendered before it. Then film grain when asked
+//    (FrameSettings::film_grain), its noise seeded by the options' seed and the clock's time. A
+//    look (FrameSettings::look, look.hpp) adds its grade to the color correction, over the
+//    scene's nodes, and its grain. The engine draws bloom and color correction in
 //    one Engine_Post pass when both run; luxel draws bloomadd then the correction, which rounds
 //    the sum to 8 bits in between (at most a step apart where the sum stays below 1).
 //    Passes "bloom", "color correction", "film grain".
