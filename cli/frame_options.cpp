@@ -3,6 +3,7 @@
 #include "baking.hpp"
 #include "scene_argument.hpp"
 
+#include "luxel/frame/look.hpp"
 #include "luxel/rasterizer/fast_paths.hpp"
 #include "luxel/scenes/builtin.hpp"
 
@@ -77,6 +78,11 @@ void FrameOptions::add_to(CLI::App& cmd) {
                "does (a quirk: at 16:9 its taps are 0.5625 texels apart vertically)");
   cmd.add_option("--film-grain", film_grain_seed,
                  "Blend film grain seeded by SEED (different each frame of a sequence, the same bytes for any thread count)");
+  cmd.add_option("--look", settings.look,
+                 "A look over the whole frame: none (the default) or archival (old footage: the builtin:archival grade "
+                 "at full weight over the scene's color-correction nodes, and film grain about 1.3 times as strong as "
+                 "--film-grain's, seeded by --film-grain's SEED or 0)")
+      ->transform(CLI::CheckedTransformer(frame::look_names(), CLI::ignore_case));
 }
 
 std::optional<rasterizer::ContextOptions> FrameOptions::context_options(const std::string& command, int& code) const {

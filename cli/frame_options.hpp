@@ -31,7 +31,7 @@ struct FrameOptions {
 
   /// Registers --scene --width --height --msaa --camera --camera-path --frame --fps --threads
   /// --bake --ambient --exposure --tonemap-algorithm --histogram --query-latency
-  /// --no-color-correction --no-bloom --bloom-true-height --film-grain on `cmd`.
+  /// --no-color-correction --no-bloom --bloom-true-height --film-grain --look on `cmd`.
   void add_to(CLI::App& cmd);
 
   /// The rasterizer context's options: the threads and LUXEL_NO_FASTPATH; nullopt after printing

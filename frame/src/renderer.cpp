@@ -7,6 +7,7 @@
 #include "views.hpp"
 #include "water_passes.hpp"
 
+#include "luxel/frame/look.hpp"
 #include "luxel/frame/textures.hpp"
 #include "luxel/postfx/bloom_amount.hpp"
 #include "luxel/rasterizer/framebuffer.hpp"
@@ -117,6 +118,17 @@ float frame_exposure(const scenes::Scene& scene, const FrameSettings& settings) 
   if (settings.exposure) return *settings.exposure;
   const scenes::Exposure& e = frame_controls(scene, settings);
   return std::clamp(1.0f, e.min_scale, std::max(e.min_scale, e.max_scale));
+}
+
+/// Where the frame's camera is at each time on the clock, and from when it stands still (the
+/// camera path's end; a camera of its own never moves).
+EyePath eye_path(const scenes::Scene& scene, const FrameSettings& settings) {
+  const bool moves = settings.camera_path && !settings.view;
+  return {[&scene, at = settings](float time) mutable {
+            at.time = time;
+            return frame_camera(scene, at).position;
+          },
+          moves && !scene.camera_path.empty() ? scene.camera_path.back().time : 0.0f};
 }
 
 /// Whether the frames run auto exposure: no fixed scale, and a range somewhere in the scene.
@@ -647,13 +659,19 @@ Renderer::Renderer(const scenes::Scene& scene, const FrameSettings& settings, st
   st.completed_meshes.resize(scene.meshes.size());
   st.exposure = frame_exposure(scene, settings);
   if (uses_auto_exposure(scene, settings)) st.auto_exposure.emplace(auto_exposure_settings(frame_controls(scene, settings), settings));
-  if (settings.color_correction && !settings.cubemap_capture && !scene.color_corrections.empty()) st.color_correction.emplace(scene);
+  if (!settings.cubemap_capture) {
+    const bool scene_nodes =
+        settings.color_correction && !(scene.color_corrections.empty() && scene.color_correction_volumes.empty());
+    const std::optional<std::string> look = look_lut(settings.look);
+    if (scene_nodes || look) st.color_correction.emplace(scene, eye_path(scene, settings), scene_nodes, look);
+  }
   // The bloom's quarter-size targets need a frame of 4 x 4 or more.
   if (settings.bloom && !settings.cubemap_capture && settings.width >= 4 && settings.height >= 4) st.bloom.emplace(*settings.bloom);
   // The SDK's smoothed amount is a static that starts at 1 when the game starts; a renderer starts
   // it at the scene's own scale, so that a first frame shows the bloom the designer set.
   st.bloom_amount.smoothed = frame_controls(scene, settings).bloom_scale;
-  if (settings.film_grain && !settings.cubemap_capture) st.film_grain.emplace(*settings.film_grain);
+  if (const auto grain = look_film_grain(settings.look, settings.film_grain); grain && !settings.cubemap_capture)
+    st.film_grain.emplace(*grain);
   move_models(st, -1.0f);
   build_views(st);
 }
@@ -701,8 +719,15 @@ void Renderer::render(Context& ctx) {
   // fog factor), which a screen never shows: the image is what is shown, opaque.
   for (size_t i = 3; i < st.image.rgba.size(); i += 4) st.image.rgba[i] = 255;
   st.stats = ctx.stats();  // the 3D frame's draws, not the passes on the finished image
+  st.shader_uses.clear();
+  if (st.settings.count_shading) {  // the 3D draws have run (the resolve flushed them)
+    if (st.water) st.water->add_shader_uses(st.shader_uses);
+    add_shader_uses(st.passes, st.shader_uses);
+  }
+  // The post passes add their shaders after the 3D draws'.
+  const postfx::ShaderTally tally{st.settings.count_shading ? &st.shader_uses : nullptr, st.settings.model};
   if (st.auto_exposure) {
-    clock.run("histogram", 1, [&] { st.auto_exposure->measure(ctx, st.image, st.depth, std::max(dt, 0.0f)); });
+    clock.run("histogram", 1, [&] { st.auto_exposure->measure(ctx, st.image, st.depth, std::max(dt, 0.0f), tally); });
     if (st.auto_exposure->scale() != st.exposure) {
       st.exposure = st.auto_exposure->scale();
       st.views_current = false;  // the draws carry the scale in their constants
@@ -710,29 +735,24 @@ void Renderer::render(Context& ctx) {
   }
   const glm::vec3 eye = frame_camera(*st.scene, st.settings).position;
   const std::vector<postfx::WeightedLut> luts =
-      st.color_correction ? st.color_correction->weighted_at(eye) : std::vector<postfx::WeightedLut>{};
+      st.color_correction ? st.color_correction->weighted_at(st.settings.time) : std::vector<postfx::WeightedLut>{};
   bool bloomed = false;  // blurred, for the color correction to add (Engine_Post, SOURCE_FACTS 8.3)
   if (st.bloom) {
     // INTEGER HDR: no LDR factor (bloom_amount.hpp).
     const float amount = st.bloom_amount.advance(scenes::exposure_at(*st.scene, eye).bloom_scale, shading::source::HdrType::integer);
     if (luts.empty()) {
-      clock.run("bloom", 5, [&] { st.bloom->apply(ctx, st.image, amount); });
+      clock.run("bloom", 5, [&] { st.bloom->apply(ctx, st.image, amount, tally); });
     } else {
-      clock.run("bloom", 3, [&] { bloomed = st.bloom->blur(ctx, st.image, amount); });
+      clock.run("bloom", 3, [&] { bloomed = st.bloom->blur(ctx, st.image, amount, tally); });
     }
   }
   if (!luts.empty()) {
     clock.run("color correction", 1, [&] {
-      st.image = bloomed ? postfx::color_correct(ctx, *st.bloom, luts) : postfx::color_correct(ctx, st.image, luts);
+      st.image = bloomed ? postfx::color_correct(ctx, *st.bloom, luts, tally) : postfx::color_correct(ctx, st.image, luts, tally);
     });
   }
   if (st.film_grain) {
-    clock.run("film grain", 1, [&] { st.film_grain->apply(ctx, st.image, std::bit_cast<uint32_t>(st.settings.time)); });
-  }
-  st.shader_uses.clear();
-  if (st.settings.count_shading) {
-    if (st.water) st.water->add_shader_uses(st.shader_uses);
-    add_shader_uses(st.passes, st.shader_uses);
+    clock.run("film grain", 1, [&] { st.film_grain->apply(ctx, st.image, std::bit_cast<uint32_t>(st.settings.time), tally); });
   }
 }
 

@@ -7,7 +7,6 @@
 #include <glm/ext/vector_double3.hpp>
 #include <glm/geometric.hpp>
 
-#include <algorithm>
 #include <atomic>
 #include <utility>
 
@@ -60,15 +59,10 @@ void run_passes(rasterizer::Context& ctx, const rasterizer::Framebuffer& fb, Pas
 
 void add_shader_uses(const PassList& passes, std::vector<ShaderUse>& uses) {
   for (auto* list : {&passes.opaque, &passes.sky, &passes.translucent})
-    for (const Pass& p : *list) {
-      if (!p.source) continue;
-      const uint64_t pixels = p.source->pixels->load(std::memory_order_relaxed);
-      auto it = std::find_if(uses.begin(), uses.end(), [&](const ShaderUse& u) {
-        return u.family == p.source->family && u.combo == p.source->combo;
-      });
-      if (it == uses.end()) uses.push_back({p.source->family, p.source->combo, pixels, p.source->slots});
-      else it->pixels += pixels;
-    }
+    for (const Pass& p : *list)
+      if (p.source)
+        shading::source::add_shader_use(
+            uses, {p.source->family, p.source->combo, p.source->pixels->load(std::memory_order_relaxed), p.source->slots});
 }
 
 }  // namespace luxel::frame

@@ -154,8 +154,8 @@ void AutoExposure::set_controls(const AutoExposureSettings& controls) {
 }
 
 void AutoExposure::measure(rasterizer::Context& ctx, const rasterizer::Image& frame, rasterizer::DepthStencilTarget& target,
-                           float dt) {
-  histogram_.update(ctx, frame, target);
+                           float dt, const ShaderTally& tally) {
+  histogram_.update(ctx, frame, target, tally);
   last_target_ = target_scale(histogram_.buckets(), settings_, scale_.current(), histogram_.viewport_pixels());
   scale_.push(last_target_, dt);
 }

@@ -2,11 +2,14 @@
 
 #include "luxel/postfx/bloom.hpp"
 
+#include "counted_draw.hpp"
+
 #include "luxel/postfx/screen_rectangle.hpp"
 #include "luxel/shading/source/bloom_add.hpp"
 #include "luxel/shading/source/bloom_downsample.hpp"
 
 #include <algorithm>
+#include <atomic>
 #include <span>
 #include <stdexcept>
 #include <string>
@@ -72,7 +75,7 @@ void Bloom::copy(const rasterizer::Image& frame) {
   frame_texture_->upload(0, std::span<const uint8_t>(frame.rgba));
 }
 
-void Bloom::downsample(rasterizer::Context& ctx) {
+void Bloom::downsample(rasterizer::Context& ctx, const ShaderTally& tally) {
   require_copy("downsample");
   const int W = frame_texture_->width(), H = frame_texture_->height();
   src::DownsampleParams params;
@@ -81,30 +84,37 @@ void Bloom::downsample(rasterizer::Context& ctx) {
   std::array<glm::vec2, 4> taps;
   std::copy(std::begin(src::kDownsampleTapOffsets), std::end(src::kDownsampleTapOffsets), taps.begin());
   const TexelRect rect{0.0f, 0.0f, static_cast<float>(W - 2), static_cast<float>(H - 2), W, H};
-  draw_screen_rectangle(ctx, *small_target_, post_pass_state(),
-                        screen_rectangle<4>(small_target_->width(), small_target_->height(), rect, taps),
-                        src::DownsamplePixelShader{&params});
-  keep_small(ctx, 0);
+  counted_draw<src::DownsamplePixelShader>(tally, src::kSingleCombo, src::measure_downsample, [&](std::atomic<uint64_t>* pixels) {
+    draw_screen_rectangle(ctx, *small_target_, post_pass_state(),
+                          screen_rectangle<4>(small_target_->width(), small_target_->height(), rect, taps),
+                          src::DownsamplePixelShader{&params, pixels});
+    keep_small(ctx, 0);
+  });
 }
 
-void Bloom::blur_x(rasterizer::Context& ctx) {
+void Bloom::blur_x(rasterizer::Context& ctx, const ShaderTally& tally) {
   require_copy("blur_x");
   const int w = small_target_->width(), h = small_target_->height();
   src::BlurParams params = src::blur_constants(src::BlurAxis::horizontal, w, h, options_.vertical_step, 1.0f);
   params.source = {0, &*small_texture_[0], bilinear_clamped()};
-  draw_screen_rectangle(ctx, *small_target_, post_pass_state(), screen_rectangle(w, h, whole_texture(w, h)),
-                        src::BlurPixelShader{&params});
-  keep_small(ctx, 1);
+  draw_blur(ctx, params, 1, tally);
 }
 
-void Bloom::blur_y(rasterizer::Context& ctx, float amount) {
+void Bloom::blur_y(rasterizer::Context& ctx, float amount, const ShaderTally& tally) {
   require_copy("blur_y");
   const int w = small_target_->width(), h = small_target_->height();
   src::BlurParams params = src::blur_constants(src::BlurAxis::vertical, w, h, options_.vertical_step, amount);
   params.source = {0, &*small_texture_[1], bilinear_clamped()};
-  draw_screen_rectangle(ctx, *small_target_, post_pass_state(), screen_rectangle(w, h, whole_texture(w, h)),
-                        src::BlurPixelShader{&params});
-  keep_small(ctx, 0);
+  draw_blur(ctx, params, 0, tally);
+}
+
+void Bloom::draw_blur(rasterizer::Context& ctx, const src::BlurParams& params, int into, const ShaderTally& tally) {
+  const int w = small_target_->width(), h = small_target_->height();
+  counted_draw<src::BlurPixelShader>(tally, src::kSingleCombo, src::measure_blur, [&](std::atomic<uint64_t>* pixels) {
+    draw_screen_rectangle(ctx, *small_target_, post_pass_state(), screen_rectangle(w, h, whole_texture(w, h)),
+                          src::BlurPixelShader{&params, pixels});
+    keep_small(ctx, into);
+  });
 }
 
 const rasterizer::Texture& Bloom::frame_texture() const {
@@ -123,40 +133,42 @@ TexelRect Bloom::bloom_rectangle() const {
   return {0.0f, -0.5f, static_cast<float>(w - 1), static_cast<float>(h - 1), w, h};
 }
 
-void Bloom::add(rasterizer::Context& ctx, rasterizer::ColorTarget& frame) {
+void Bloom::add(rasterizer::Context& ctx, rasterizer::ColorTarget& frame, const ShaderTally& tally) {
   require_copy("add");
   src::BloomAddParams params;
   params.bloom = {0, &*small_texture_[0], bilinear_clamped()};
-  draw_screen_rectangle(ctx, frame, src::bloom_add_pipeline_state(),
-                        screen_rectangle(frame.width(), frame.height(), bloom_rectangle()), src::BloomAddPixelShader{&params});
-  ctx.flush();  // the draw reads `params`, which ends here
+  counted_draw<src::BloomAddPixelShader>(tally, src::kSingleCombo, src::measure_bloom_add, [&](std::atomic<uint64_t>* pixels) {
+    draw_screen_rectangle(ctx, frame, src::bloom_add_pipeline_state(),
+                          screen_rectangle(frame.width(), frame.height(), bloom_rectangle()), src::BloomAddPixelShader{&params, pixels});
+    ctx.flush();  // the draw reads `params` and `pixels`, which end here
+  });
 }
 
-void Bloom::apply(rasterizer::Context& ctx, rasterizer::ColorTarget& frame, float amount) {
+void Bloom::apply(rasterizer::Context& ctx, rasterizer::ColorTarget& frame, float amount, const ShaderTally& tally) {
   if (!(amount > 0.0f)) return;
   copy(ctx, frame);
-  downsample(ctx);
-  blur_x(ctx);
-  blur_y(ctx, amount);
-  add(ctx, frame);
+  downsample(ctx, tally);
+  blur_x(ctx, tally);
+  blur_y(ctx, amount, tally);
+  add(ctx, frame, tally);
 }
 
-void Bloom::apply(rasterizer::Context& ctx, rasterizer::Image& frame, float amount) {
-  if (!blur(ctx, frame, amount)) return;
+void Bloom::apply(rasterizer::Context& ctx, rasterizer::Image& frame, float amount, const ShaderTally& tally) {
+  if (!blur(ctx, frame, amount, tally)) return;
   if (!image_target_ || image_target_->width() != frame.width || image_target_->height() != frame.height) {
     image_target_.emplace(frame.width, frame.height);
   }
   rasterizer::load_image(ctx, frame, *image_target_);
-  add(ctx, *image_target_);
+  add(ctx, *image_target_, tally);
   rasterizer::resolve_into(ctx, *image_target_, frame);
 }
 
-bool Bloom::blur(rasterizer::Context& ctx, const rasterizer::Image& frame, float amount) {
+bool Bloom::blur(rasterizer::Context& ctx, const rasterizer::Image& frame, float amount, const ShaderTally& tally) {
   if (!(amount > 0.0f)) return false;
   copy(frame);
-  downsample(ctx);
-  blur_x(ctx);
-  blur_y(ctx, amount);
+  downsample(ctx, tally);
+  blur_x(ctx, tally);
+  blur_y(ctx, amount, tally);
   return true;
 }
 

@@ -2,12 +2,15 @@
 
 #include "luxel/postfx/color_correction.hpp"
 
+#include "counted_draw.hpp"
+
 #include "luxel/rasterizer/draw.hpp"
 #include "luxel/rasterizer/framebuffer.hpp"
 #include "luxel/postfx/screen_rectangle.hpp"
 #include "luxel/shading/source/color_correction.hpp"
 #include "luxel/shading/source/engine_post.hpp"
 
+#include <atomic>
 #include <cmath>
 #include <stdexcept>
 #include <string>
@@ -69,22 +72,26 @@ std::vector<rasterizer::Texture> set_lookups(std::span<const WeightedLut> luts, 
   return volumes;
 }
 
-/// One full-frame draw of the combo of `Combos` that blends `luts` lookups, into a new target;
-/// returns its pixels.
-template <class Combo, class ForEachCombo, class Shader>
+/// One full-frame draw of pixel functor `Shader<C>` for the combo C of `Combo` that blends `luts`
+/// lookups, into a new target, counted into `tally`; returns its pixels.
+template <class Combo, template <Combo> class Shader, class Params>
 rasterizer::Image draw_pass(rasterizer::Context& ctx, int width, int height, size_t luts, const auto& rectangle,
-                            ForEachCombo for_each_combo, Shader shader) {
+                            const Params& params, const ShaderTally& tally, auto for_each_combo, auto measure) {
   rasterizer::ColorTarget target(width, height);
   for_each_combo([&]<Combo C>() {
-    if (C.luts == int(luts)) draw_screen_rectangle(ctx, target, post_pass_state(), rectangle, shader.template operator()<C>());
+    if (C.luts != int(luts)) return;
+    counted_draw<Shader<C>>(tally, C.name(), measure.template operator()<C>(), [&](std::atomic<uint64_t>* pixels) {
+      draw_screen_rectangle(ctx, target, post_pass_state(), rectangle, Shader<C>{&params, pixels});
+      ctx.flush();  // the draw reads `params` and `pixels`
+    });
   });
-  return rasterizer::resolve(ctx, target);  // flushes: the draw has run before the parameters go
+  return rasterizer::resolve(ctx, target);
 }
 
 }  // namespace
 
 rasterizer::Image color_correct(rasterizer::Context& ctx, const rasterizer::Image& frame,
-                                std::span<const WeightedLut> luts) {
+                                std::span<const WeightedLut> luts, const ShaderTally& tally) {
   checked_weights(luts);
   check_frame(frame);
   rasterizer::Texture frame_texture =
@@ -93,13 +100,14 @@ rasterizer::Image color_correct(rasterizer::Context& ctx, const rasterizer::Imag
   src::ColorCorrectionParams params;
   params.frame.texture = &frame_texture;
   const std::vector<rasterizer::Texture> volumes = set_lookups(luts, params);
-  return draw_pass<src::ColorCorrectionCombo>(
+  return draw_pass<src::ColorCorrectionCombo, src::ColorCorrectionPixelShader>(
       ctx, frame.width, frame.height, luts.size(), screen_rectangle(frame.width, frame.height, whole_texture(frame.width, frame.height)),
-      [](auto f) { src::for_each_color_correction_combo(f); },
-      [&]<src::ColorCorrectionCombo C>() { return src::ColorCorrectionPixelShader<C>{&params}; });
+      params, tally, [](auto f) { src::for_each_color_correction_combo(f); },
+      []<src::ColorCorrectionCombo C>() { return &src::measure_color_correction<C>; });
 }
 
-rasterizer::Image color_correct(rasterizer::Context& ctx, const Bloom& bloom, std::span<const WeightedLut> luts) {
+rasterizer::Image color_correct(rasterizer::Context& ctx, const Bloom& bloom, std::span<const WeightedLut> luts,
+                                const ShaderTally& tally) {
   const rasterizer::Texture& frame = bloom.frame_texture();
   src::EnginePostParams params;
   params.frame.texture = &frame;
@@ -107,9 +115,9 @@ rasterizer::Image color_correct(rasterizer::Context& ctx, const Bloom& bloom, st
   const std::vector<rasterizer::Texture> volumes = set_lookups(luts, params);
   const int w = frame.width(), h = frame.height();
   const ScreenRectanglePair rectangle{screen_rectangle(w, h, whole_texture(w, h)), screen_rectangle(w, h, bloom.bloom_rectangle())};
-  return draw_pass<src::EnginePostCombo>(
-      ctx, w, h, luts.size(), rectangle, [](auto f) { src::for_each_engine_post_combo(f); },
-      [&]<src::EnginePostCombo C>() { return src::EnginePostPixelShader<C>{&params}; });
+  return draw_pass<src::EnginePostCombo, src::EnginePostPixelShader>(
+      ctx, w, h, luts.size(), rectangle, params, tally, [](auto f) { src::for_each_engine_post_combo(f); },
+      []<src::EnginePostCombo C>() { return &src::measure_engine_post<C>; });
 }
 
 std::vector<float> color_correct_exact(const rasterizer::Image& frame, std::span<const WeightedTransform> transforms) {

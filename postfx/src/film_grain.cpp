@@ -2,9 +2,12 @@
 
 #include "luxel/postfx/film_grain.hpp"
 
+#include "counted_draw.hpp"
+
 #include "luxel/postfx/screen_rectangle.hpp"
 #include "luxel/shading/source/film_grain.hpp"
 
+#include <atomic>
 #include <span>
 #include <stdexcept>
 #include <string>
@@ -44,7 +47,7 @@ rasterizer::Image grain_tile(const FilmGrainOptions& options, uint64_t frame_ind
   return tile;
 }
 
-void FilmGrain::apply(rasterizer::Context& ctx, rasterizer::ColorTarget& frame, uint64_t frame_index) {
+void FilmGrain::apply(rasterizer::Context& ctx, rasterizer::ColorTarget& frame, uint64_t frame_index, const ShaderTally& tally) {
   const rasterizer::Image tile = grain_tile(options_, frame_index);
   if (!grain_ || grain_->width() != tile.width) {
     grain_ = rasterizer::Texture::create_2d(tile.width, tile.height, rasterizer::TextureFormat::RGBA8, 1);
@@ -59,18 +62,20 @@ void FilmGrain::apply(rasterizer::Context& ctx, rasterizer::ColorTarget& frame, 
   // The tile's texels 0..W-1 x 0..H-1 (wrapping) on the frame's pixels, one to one.
   const TexelRect rect{0.0f, 0.0f, static_cast<float>(frame.width() - 1), static_cast<float>(frame.height() - 1),
                        tile.width, tile.height};
-  draw_screen_rectangle(ctx, frame, shading::source::film_grain_pipeline_state(),
-                        screen_rectangle(frame.width(), frame.height(), rect),
-                        shading::source::FilmGrainPixelShader{&params});
-  ctx.flush();  // the draw reads `params`, which ends here
+  namespace src = shading::source;
+  counted_draw<src::FilmGrainPixelShader>(tally, src::kSingleCombo, src::measure_film_grain, [&](std::atomic<uint64_t>* pixels) {
+    draw_screen_rectangle(ctx, frame, src::film_grain_pipeline_state(), screen_rectangle(frame.width(), frame.height(), rect),
+                          src::FilmGrainPixelShader{&params, pixels});
+    ctx.flush();  // the draw reads `params` and `pixels`, which end here
+  });
 }
 
-void FilmGrain::apply(rasterizer::Context& ctx, rasterizer::Image& frame, uint64_t frame_index) {
+void FilmGrain::apply(rasterizer::Context& ctx, rasterizer::Image& frame, uint64_t frame_index, const ShaderTally& tally) {
   if (!image_target_ || image_target_->width() != frame.width || image_target_->height() != frame.height) {
     image_target_.emplace(frame.width, frame.height);
   }
   rasterizer::load_image(ctx, frame, *image_target_);
-  apply(ctx, *image_target_, frame_index);
+  apply(ctx, *image_target_, frame_index, tally);
   rasterizer::resolve_into(ctx, *image_target_, frame);
 }
 

@@ -1,9 +1,12 @@
 #include "luxel/postfx/luminance_histogram.hpp"
 
+#include "counted_draw.hpp"
+
 #include "luxel/postfx/screen_rectangle.hpp"
 #include "luxel/rasterizer/draw.hpp"
 #include "luxel/rasterizer/srgb.hpp"
 
+#include <atomic>
 #include <cmath>
 #include <stdexcept>
 #include <string>
@@ -42,20 +45,32 @@ struct RegionDraw {
   }
 };
 
+/// The samples of the region in one bucket's range (§7.2), counted the way `count` says with the
+/// range test's combo C: the test inside the query, or the test marking the stencil and a
+/// counting draw inside the query.
 template <LuminanceRangeCombo C>
-void draw_range_test(rasterizer::Context& ctx, rasterizer::DepthStencilTarget& target, LuminancePass pass,
-                     const RegionDraw& region, const LuminanceRangeParams& params) {
-  region.draw(ctx, target, shading::source::luminance_range_pipeline_state(C.reject, pass),
-              shading::source::LuminanceRangePixelShader<C>{&params});
-}
-
-void draw_range_test(rasterizer::Context& ctx, rasterizer::DepthStencilTarget& target, LuminanceReject reject,
-                     LuminancePass pass, const RegionDraw& region, const LuminanceRangeParams& params) {
-  if (reject == LuminanceReject::alpha_test) {
-    draw_range_test<LuminanceRangeCombo{LuminanceReject::alpha_test}>(ctx, target, pass, region, params);
-  } else {
-    draw_range_test<LuminanceRangeCombo{LuminanceReject::texkill}>(ctx, target, pass, region, params);
-  }
+uint64_t count_in_range(rasterizer::Context& ctx, rasterizer::DepthStencilTarget& target, HistogramCount count,
+                        const RegionDraw& region, const LuminanceRangeParams& params, const ShaderTally& tally) {
+  using shading::source::luminance_range_pipeline_state;
+  using Test = shading::source::LuminanceRangePixelShader<C>;
+  uint64_t in_range = 0;
+  counted_draw<Test>(tally, C.name(), shading::source::measure_luminance_range<C>, [&](std::atomic<uint64_t>* pixels) {
+    rasterizer::OcclusionQuery query;
+    if (count == HistogramCount::direct_query) {
+      ctx.begin_query(query);
+      region.draw(ctx, target, luminance_range_pipeline_state(C.reject, LuminancePass::query), Test{&params, pixels});
+      ctx.end_query();
+    } else {
+      // The engine clears the stencil at the start of each frame; one mark per frame follows.
+      rasterizer::clear_depth_stencil(ctx, target, 1.0f, 0);
+      region.draw(ctx, target, luminance_range_pipeline_state(C.reject, LuminancePass::stencil_mark), Test{&params, pixels});
+      ctx.begin_query(query);
+      region.draw(ctx, target, luminance_range_pipeline_state(C.reject, LuminancePass::stencil_count), NoPixelWrite{});
+      ctx.end_query();
+    }
+    in_range = ctx.query_result(query);  // flushes: `params` and `pixels` outlive the draws
+  });
+  return in_range;
 }
 
 double srgb_decode(uint8_t code) {
@@ -82,7 +97,8 @@ LuminanceHistogram::LuminanceHistogram(const HistogramSettings& settings) : sett
   pending_.resize(buckets_.size());
 }
 
-void LuminanceHistogram::update(rasterizer::Context& ctx, const rasterizer::Image& frame, rasterizer::DepthStencilTarget& target) {
+void LuminanceHistogram::update(rasterizer::Context& ctx, const rasterizer::Image& frame, rasterizer::DepthStencilTarget& target,
+                                const ShaderTally& tally) {
   if (target.width() != frame.width || target.height() != frame.height)
     throw std::invalid_argument("histogram: a " + std::to_string(target.width()) + "x" + std::to_string(target.height()) +
                                 " target for a " + std::to_string(frame.width) + "x" + std::to_string(frame.height) + " frame");
@@ -93,7 +109,7 @@ void LuminanceHistogram::update(rasterizer::Context& ctx, const rasterizer::Imag
     BucketCount& b = buckets_[i];
     if (b.state == BucketCount::State::initial) {
       if (!issued) {
-        issue(ctx, frame, target, int(i));
+        issue(ctx, frame, target, int(i), tally);
         issued = true;
       }
     } else if (b.state != BucketCount::State::done && frame_ >= b.frame_queued + settings_.query_latency) {
@@ -108,11 +124,11 @@ void LuminanceHistogram::update(rasterizer::Context& ctx, const rasterizer::Imag
     if (buckets_[i].state == BucketCount::State::done && (oldest < 0 || buckets_[i].frame_queued < buckets_[size_t(oldest)].frame_queued))
       oldest = int(i);
   }
-  if (oldest >= 0) issue(ctx, frame, target, oldest);
+  if (oldest >= 0) issue(ctx, frame, target, oldest, tally);
 }
 
 void LuminanceHistogram::issue(rasterizer::Context& ctx, const rasterizer::Image& frame, rasterizer::DepthStencilTarget& target,
-                               int bucket) {
+                               int bucket, const ShaderTally& tally) {
   const int w = frame.width, h = frame.height;
   // UpdateScreenEffectTexture: the frame copied into a texture the range test reads.
   if (!frame_texture_ || frame_texture_->width() != w || frame_texture_->height() != h)
@@ -129,21 +145,10 @@ void LuminanceHistogram::issue(rasterizer::Context& ctx, const rasterizer::Image
   params.min_max_scale = shading::source::luminance_range_constant(b.range.min, b.range.max);
   const RegionDraw region(w, h, histogram_region(w, h, settings_.center_region_x, settings_.center_region_y));
 
-  rasterizer::OcclusionQuery query;
-  if (settings_.count == HistogramCount::direct_query) {
-    ctx.begin_query(query);
-    draw_range_test(ctx, target, settings_.reject, LuminancePass::query, region, params);
-    ctx.end_query();
-  } else {
-    // The engine clears the stencil at the start of each frame; one mark per frame follows.
-    rasterizer::clear_depth_stencil(ctx, target, 1.0f, 0);
-    draw_range_test(ctx, target, settings_.reject, LuminancePass::stencil_mark, region, params);
-    ctx.begin_query(query);
-    region.draw(ctx, target, shading::source::luminance_range_pipeline_state(settings_.reject, LuminancePass::stencil_count),
-                NoPixelWrite{});
-    ctx.end_query();
-  }
-  pending_[size_t(bucket)] = ctx.query_result(query);  // flushes: `params` outlives the draws
+  pending_[size_t(bucket)] =
+      settings_.reject == LuminanceReject::alpha_test
+          ? count_in_range<LuminanceRangeCombo{LuminanceReject::alpha_test}>(ctx, target, settings_.count, region, params, tally)
+          : count_in_range<LuminanceRangeCombo{LuminanceReject::texkill}>(ctx, target, settings_.count, region, params, tally);
   b.state = b.state == BucketCount::State::initial ? BucketCount::State::first_query_in_flight : BucketCount::State::query_in_flight;
   b.frame_queued = frame_;
   last_issued_ = bucket;

@@ -3,6 +3,7 @@
 #include "luxel/postfx/lut.hpp"
 
 #include <cmath>
+#include <utility>
 
 namespace luxel::postfx {
 
@@ -21,6 +22,19 @@ Lut Lut::identity() {
   return lut;
 }
 
+namespace {
+
+/// `colors` (one per entry) transformed and rounded into a LUT.
+Lut transformed(std::vector<glm::vec3> colors, const ColorTransform& transform) {
+  transform.apply(colors);
+  Lut lut;
+  for (size_t i = 0; i < colors.size(); ++i)
+    lut.entries[i] = {to_unorm8(colors[i].x), to_unorm8(colors[i].y), to_unorm8(colors[i].z)};
+  return lut;
+}
+
+}  // namespace
+
 Lut sample_lut(const ColorTransform& transform) {
   std::vector<glm::vec3> colors(kLutEntries);
   for (int b = 0; b < kLutSize; ++b)
@@ -28,11 +42,14 @@ Lut sample_lut(const ColorTransform& transform) {
       for (int r = 0; r < kLutSize; ++r)
         colors[static_cast<size_t>((b * kLutSize + g) * kLutSize + r)] =
             glm::vec3(lattice_color(r), lattice_color(g), lattice_color(b));
-  transform.apply(colors);
-  Lut lut;
+  return transformed(std::move(colors), transform);
+}
+
+Lut compose(const Lut& lut, const ColorTransform& then) {
+  std::vector<glm::vec3> colors(kLutEntries);
   for (size_t i = 0; i < colors.size(); ++i)
-    lut.entries[i] = {to_unorm8(colors[i].x), to_unorm8(colors[i].y), to_unorm8(colors[i].z)};
-  return lut;
+    colors[i] = glm::vec3(lut.entries[i][0], lut.entries[i][1], lut.entries[i][2]) / 255.0f;
+  return transformed(std::move(colors), then);
 }
 
 rasterizer::Texture lut_volume(const Lut& lut) {

@@ -380,7 +380,7 @@ class Importer {
       const int s = model_.defaultScene >= 0 ? model_.defaultScene : 0;
       if (size_t(s) >= model_.scenes.size()) fail("scene " + std::to_string(s) + " does not exist");
       roots = model_.scenes[size_t(s)].nodes;
-      gltf::read_scene_extras(model_.scenes[size_t(s)].extras, scene_);
+      gltf::read_scene_extras(model_.scenes[size_t(s)].extras, scene_, [this](const std::string& what) { fail(what); });
     } else {
       // No scenes: every node without a parent is drawn.
       std::vector<char> child(model_.nodes.size(), 0);

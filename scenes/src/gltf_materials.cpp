@@ -138,8 +138,7 @@ Material material_from_gltf(const tinygltf::Material& g, size_t index, const Res
   }
   for (const FloatKey& k : kFloats) read(x.Get(k.key), m.*k.member);
   for (const Vec3Key& k : kVec3s) read(x.Get(k.key), m.*k.member);
-  for (const BoolKey& k : kBools)
-    if (const Value& v = x.Get(k.key); v.IsBool()) m.*k.member = v.Get<bool>();
+  for (const BoolKey& k : kBools) read(x.Get(k.key), m.*k.member);
   for (const TextureKey& k : kTextures) {
     const Value& t = x.Get(k.key);
     if (!t.IsObject() || !t.Get("index").IsNumber()) continue;

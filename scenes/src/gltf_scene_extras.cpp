@@ -2,6 +2,7 @@
 
 #include "gltf_values.hpp"
 
+#include <algorithm>
 #include <array>
 #include <utility>
 
@@ -12,6 +13,8 @@ namespace {
 using tinygltf::Value;
 
 constexpr std::array<std::pair<FogMode, const char*>, 3> kFogModes = {{{FogMode::none, "none"}, {FogMode::range, "range"}, {FogMode::height, "height"}}};
+constexpr std::array<std::pair<ColorCorrectionInput::Kind, const char*>, 2> kInputKinds = {
+    {{ColorCorrectionInput::Kind::enable, "enable"}, {ColorCorrectionInput::Kind::disable, "disable"}}};
 
 Value camera_value(const Camera& c) {
   Value::Object o;
@@ -54,6 +57,56 @@ void read_exposure(const Value& v, Exposure& e) {
   read(v.Get("bloomscale"), e.bloom_scale);
 }
 
+Value color_correction_value(const ColorCorrection& c) {
+  Value::Object o;
+  o["lut"] = Value(c.lut);
+  o["position"] = floats(c.position);
+  o["minfalloff"] = Value(double(c.min_falloff));
+  o["maxfalloff"] = Value(double(c.max_falloff));
+  o["maxweight"] = Value(double(c.max_weight));
+  o["fadein"] = Value(double(c.fade_in));
+  o["fadeout"] = Value(double(c.fade_out));
+  o["startdisabled"] = Value(c.start_disabled);
+  Value::Array inputs;
+  for (const ColorCorrectionInput& in : c.inputs) {
+    Value::Object i;
+    i["time"] = Value(double(in.time));
+    for (const auto& [kind, name] : kInputKinds)
+      if (kind == in.kind) i["input"] = Value(std::string(name));
+    inputs.emplace_back(std::move(i));
+  }
+  o["inputs"] = Value(std::move(inputs));
+  return Value(std::move(o));
+}
+
+/// Node `index` as the extras hold it; keys it lacks keep their defaults (files written before
+/// fades existed).
+ColorCorrection read_color_correction(const Value& o, size_t index, const std::function<void(const std::string&)>& fail) {
+  ColorCorrection c;
+  if (o.Get("lut").IsString()) c.lut = o.Get("lut").Get<std::string>();
+  read(o.Get("position"), c.position);
+  read(o.Get("minfalloff"), c.min_falloff);
+  read(o.Get("maxfalloff"), c.max_falloff);
+  read(o.Get("maxweight"), c.max_weight);
+  read(o.Get("fadein"), c.fade_in);
+  read(o.Get("fadeout"), c.fade_out);
+  read(o.Get("startdisabled"), c.start_disabled);
+  const Value& inputs = o.Get("inputs");
+  for (size_t k = 0; inputs.IsArray() && k < inputs.ArrayLen(); ++k) {
+    const Value& i = inputs.Get(int(k));
+    ColorCorrectionInput in;
+    read(i.Get("time"), in.time);
+    const std::string name = i.Get("input").IsString() ? i.Get("input").Get<std::string>() : "";
+    const auto known = std::find_if(kInputKinds.begin(), kInputKinds.end(), [&](const auto& k) { return name == k.second; });
+    if (known == kInputKinds.end())
+      fail("color correction " + std::to_string(index) + " input " + std::to_string(k) + " is '" + name +
+           "', not enable or disable");
+    in.kind = known->first;
+    c.inputs.push_back(in);
+  }
+  return c;
+}
+
 }  // namespace
 
 Value scene_extras(const Scene& s) {
@@ -87,16 +140,18 @@ Value scene_extras(const Scene& s) {
   }
   x["cubemapsamples"] = Value(std::move(samples));
   Value::Array corrections;
-  for (const ColorCorrection& c : s.color_corrections) {
-    Value::Object o;
-    o["lut"] = Value(c.lut);
-    o["position"] = floats(c.position);
-    o["minfalloff"] = Value(double(c.min_falloff));
-    o["maxfalloff"] = Value(double(c.max_falloff));
-    o["maxweight"] = Value(double(c.max_weight));
-    corrections.emplace_back(std::move(o));
-  }
+  for (const ColorCorrection& c : s.color_corrections) corrections.push_back(color_correction_value(c));
   x["colorcorrections"] = Value(std::move(corrections));
+  Value::Array volumes;
+  for (const ColorCorrectionVolume& v : s.color_correction_volumes) {
+    Value::Object o;
+    o["lut"] = Value(v.lut);
+    o["min"] = floats(v.min);
+    o["max"] = floats(v.max);
+    o["fadeduration"] = Value(double(v.fade_duration));
+    volumes.emplace_back(std::move(o));
+  }
+  x["colorcorrectionvolumes"] = Value(std::move(volumes));
   if (s.irradiance_volume) {
     Value::Object v;
     v["min"] = floats(s.irradiance_volume->min);
@@ -118,7 +173,7 @@ Value scene_extras(const Scene& s) {
   return Value(std::move(extras));
 }
 
-void read_scene_extras(const Value& extras, Scene& s) {
+void read_scene_extras(const Value& extras, Scene& s, const std::function<void(const std::string&)>& fail) {
   const Value& x = extras.Get("luxel");
   if (!x.IsObject()) return;
   read(x.Get("background"), s.background);
@@ -150,15 +205,17 @@ void read_scene_extras(const Value& extras, Scene& s) {
     s.cubemap_samples.push_back(c);
   }
   const Value& corrections = x.Get("colorcorrections");
-  for (size_t i = 0; corrections.IsArray() && i < corrections.ArrayLen(); ++i) {
-    const Value& o = corrections.Get(int(i));
-    ColorCorrection c;
-    if (o.Get("lut").IsString()) c.lut = o.Get("lut").Get<std::string>();
-    read(o.Get("position"), c.position);
-    read(o.Get("minfalloff"), c.min_falloff);
-    read(o.Get("maxfalloff"), c.max_falloff);
-    read(o.Get("maxweight"), c.max_weight);
-    s.color_corrections.push_back(c);
+  for (size_t i = 0; corrections.IsArray() && i < corrections.ArrayLen(); ++i)
+    s.color_corrections.push_back(read_color_correction(corrections.Get(int(i)), i, fail));
+  const Value& volumes = x.Get("colorcorrectionvolumes");
+  for (size_t i = 0; volumes.IsArray() && i < volumes.ArrayLen(); ++i) {
+    const Value& o = volumes.Get(int(i));
+    ColorCorrectionVolume v;
+    if (o.Get("lut").IsString()) v.lut = o.Get("lut").Get<std::string>();
+    read(o.Get("min"), v.min);
+    read(o.Get("max"), v.max);
+    read(o.Get("fadeduration"), v.fade_duration);
+    s.color_correction_volumes.push_back(v);
   }
   if (const Value& v = x.Get("irradiancevolume"); v.IsObject()) {
     IrradianceVolume volume;

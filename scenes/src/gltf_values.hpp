@@ -16,7 +16,7 @@ tinygltf::Value floats(const glm::vec<N, float>& v) {
   return tinygltf::Value(std::move(a));
 }
 
-/// Sets `out` when `v` is an array of N numbers; leaves it alone otherwise.
+/// Sets `out` when `v` is an array of N numbers (a number, a boolean: below); leaves it alone otherwise.
 template <int N>
 void read(const tinygltf::Value& v, glm::vec<N, float>& out) {
   if (!v.IsArray() || int(v.ArrayLen()) != N) return;
@@ -32,6 +32,9 @@ inline void read(const tinygltf::Value& v, float& out) {
 }
 inline void read(const tinygltf::Value& v, int& out) {
   if (v.IsNumber()) out = v.GetNumberAsInt();
+}
+inline void read(const tinygltf::Value& v, bool& out) {
+  if (v.IsBool()) out = v.Get<bool>();
 }
 
 }  // namespace luxel::scenes::gltf

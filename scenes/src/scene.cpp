@@ -40,6 +40,13 @@ namespace {
 
 bool finite(glm::vec3 v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
 
+bool non_negative(float v) { return std::isfinite(v) && v >= 0.0f; }
+
+/// A box with finite bounds, min <= max on every axis.
+bool ordered_box(glm::vec3 min, glm::vec3 max) {
+  return finite(min) && finite(max) && glm::all(glm::lessThanEqual(min, max));
+}
+
 [[noreturn]] void fail(const Scene& scene, const std::string& what) {
   throw std::invalid_argument((scene.name.empty() ? std::string("scene") : scene.name) + ": " + what);
 }
@@ -100,6 +107,19 @@ void check_mesh(const Scene& scene, const Mesh& m, size_t i) {
                             std::to_string(n) + " vertices");
       },
       m.indices);
+}
+
+void check_color_correction(const Scene& scene, const ColorCorrection& c, size_t i) {
+  const std::string where = "color correction " + std::to_string(i);
+  if (c.lut.empty()) fail(scene, where + " has no LUT");
+  if (!finite(c.position)) fail(scene, where + " has a position that is not finite");
+  for (float falloff : {c.min_falloff, c.max_falloff})
+    if (!non_negative(falloff) && falloff != -1.0f) fail(scene, where + " has a falloff that is not finite, >= 0 or -1");
+  for (float v : {c.max_weight, c.fade_in, c.fade_out})
+    if (!non_negative(v)) fail(scene, where + " has a weight or fade that is negative or not finite");
+  for (size_t k = 0; k < c.inputs.size(); ++k)
+    if (!std::isfinite(c.inputs[k].time) || (k > 0 && c.inputs[k].time < c.inputs[k - 1].time))
+      fail(scene, where + " input " + std::to_string(k) + " has a time that is not finite or earlier than the one before");
 }
 
 }  // namespace
@@ -163,16 +183,23 @@ void validate(const Scene& scene) {
   }
   auto check_exposure = [&](const Exposure& e, const std::string& where) {
     for (float v : {e.min_scale, e.max_scale, e.rate, e.percent_target, e.percent_bright, e.bloom_scale})
-      if (!(std::isfinite(v) && v >= 0.0f)) fail(scene, where + " has a value that is negative or not finite");
+      if (!non_negative(v)) fail(scene, where + " has a value that is negative or not finite");
     if (!(e.min_scale > 0.0f)) fail(scene, where + " has a minimum scale that is not positive");
   };
   check_exposure(scene.exposure, "the exposure");
   for (size_t i = 0; i < scene.exposure_zones.size(); ++i) {
     const ExposureZone& z = scene.exposure_zones[i];
     const std::string where = "exposure zone " + std::to_string(i);
-    if (!finite(z.min) || !finite(z.max) || z.min.x > z.max.x || z.min.y > z.max.y || z.min.z > z.max.z)
-      fail(scene, where + " has bounds that are not finite or not ordered");
+    if (!ordered_box(z.min, z.max)) fail(scene, where + " has bounds that are not finite or not ordered");
     check_exposure(z.exposure, where);
+  }
+  for (size_t i = 0; i < scene.color_corrections.size(); ++i) check_color_correction(scene, scene.color_corrections[i], i);
+  for (size_t i = 0; i < scene.color_correction_volumes.size(); ++i) {
+    const ColorCorrectionVolume& v = scene.color_correction_volumes[i];
+    const std::string where = "color correction volume " + std::to_string(i);
+    if (v.lut.empty()) fail(scene, where + " has no LUT");
+    if (!ordered_box(v.min, v.max)) fail(scene, where + " has bounds that are not finite or not ordered");
+    if (!non_negative(v.fade_duration)) fail(scene, where + " has a fade duration that is negative or not finite");
   }
   if (const auto& v = scene.irradiance_volume) {
     const size_t samples = static_cast<size_t>(std::max(v->counts.x, 0)) * std::max(v->counts.y, 0) * std::max(v->counts.z, 0);

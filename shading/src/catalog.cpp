@@ -254,7 +254,7 @@ void add_luminance_range(std::vector<ShaderVariant>& out) {
     auto shade = []<class L>(const auto& get) {
       return luminance_range_combine<C>(float3<L>(get(0), get(1), get(2)), p).color;
     };
-    out.push_back(variant("LuminanceRange", "luminance", C, 3, shade,
+    out.push_back(variant(LuminanceRangePixelShader<C>::kFamily, "luminance", C, 3, shade,
                           [](ShaderModel m) { return measure_luminance_range<C>(m); }));
   });
 }
@@ -273,7 +273,7 @@ void add_color_correction(std::vector<ShaderVariant>& out) {
       return float4<L>(color_correction_combine<C>(float3<L>(get(0), get(1), get(2)), lookups, p.lut_weights, p.default_weight),
                        L(1.0f));
     };
-    out.push_back(variant("ColorCorrection", "colorcorrection", C, 3 + 3 * kMaxColorCorrectionLuts, shade,
+    out.push_back(variant(ColorCorrectionPixelShader<C>::kFamily, "colorcorrection", C, 3 + 3 * kMaxColorCorrectionLuts, shade,
                           [](ShaderModel m) { return measure_color_correction<C>(m); }));
   });
 }
@@ -292,14 +292,14 @@ void add_engine_post(std::vector<ShaderVariant>& out) {
       for (int k = 0; k < kMaxColorCorrectionLuts; ++k) lookups[k] = float3<L>(get(6 + 3 * k), get(7 + 3 * k), get(8 + 3 * k));
       return float4<L>(color_correction_combine<C.correction()>(bloomed, lookups, p.lut_weights, p.default_weight), L(1.0f));
     };
-    out.push_back(variant("Engine_Post", "enginepost", C, 6 + 3 * kMaxColorCorrectionLuts, shade,
+    out.push_back(variant(EnginePostPixelShader<C>::kFamily, "enginepost", C, 6 + 3 * kMaxColorCorrectionLuts, shade,
                           [](ShaderModel m) { return measure_engine_post<C>(m); }));
   });
 }
 
 /// The post-processing shaders have no static combos: one variant each.
 struct SingleVariant {
-  std::string name() const { return "default"; }
+  std::string name() const { return kSingleCombo; }
 };
 
 void add_bloom(std::vector<ShaderVariant>& out) {
@@ -309,7 +309,7 @@ void add_bloom(std::vector<ShaderVariant>& out) {
     for (int i = 0; i < 4; ++i) taps[i] = float3<L>(get(3 * i), get(3 * i + 1), get(3 * i + 2));
     return downsample_combine(taps, downsample_params);
   };
-  out.push_back(variant("Downsample_nohdr", "downsample", SingleVariant{}, 12, downsample_shade, measure_downsample));
+  out.push_back(variant(DownsamplePixelShader::kFamily, "downsample", SingleVariant{}, 12, downsample_shade, measure_downsample));
 
   static const BlurParams blur_params = blur_constants(BlurAxis::vertical, 320, 180, BlurStep::sdk_width_quirk, 0.3f);
   auto blur_shade = []<class L>(const auto& get) {
@@ -322,10 +322,10 @@ void add_bloom(std::vector<ShaderVariant>& out) {
     }
     return blur_combine(t, blur_params);
   };
-  out.push_back(variant("BlurFilter", "blur", SingleVariant{}, 39, blur_shade, measure_blur));
+  out.push_back(variant(BlurPixelShader::kFamily, "blur", SingleVariant{}, 39, blur_shade, measure_blur));
 
   auto add_shade = []<class L>(const auto& get) { return bloom_add_combine(float3<L>(get(0), get(1), get(2))); };
-  out.push_back(variant("bloomadd", "bloomadd", SingleVariant{}, 3, add_shade, measure_bloom_add));
+  out.push_back(variant(BloomAddPixelShader::kFamily, "bloomadd", SingleVariant{}, 3, add_shade, measure_bloom_add));
 }
 
 void add_film_grain(std::vector<ShaderVariant>& out) {
@@ -335,7 +335,7 @@ void add_film_grain(std::vector<ShaderVariant>& out) {
     return q;
   }();
   auto shade = []<class L>(const auto& get) { return film_grain_combine(float4<L>(get(0), get(1), get(2), get(3)), p); };
-  out.push_back(variant("filmgrain", "filmgrain", SingleVariant{}, 4, shade, measure_film_grain));
+  out.push_back(variant(FilmGrainPixelShader::kFamily, "filmgrain", SingleVariant{}, 4, shade, measure_film_grain));
 }
 
 }  // namespace

@@ -17,16 +17,10 @@ namespace {
 
 constexpr int kSize = 32;
 
-/// A grey ramp filling the view (so that a LUT has something to change), the eye at (0, 0, 10),
-/// a fixed exposure, and a warm node `distance` above the eye, fading out from 0 to 128 inches.
+/// The color ramp (frame_support.hpp), the eye at (0, 0, 10), and a warm node `distance` above
+/// the eye, fading out from 0 to 128 inches.
 scenes::Scene graded(float distance) {
-  scenes::Scene s = top_down();
-  scenes::Material m;
-  m.family = scenes::ShaderFamily::unlit_generic;
-  s.materials = {m};
-  s.meshes = {square(-1, -1, 1, 1, 0, 0)};
-  s.meshes[0].colors = {{0.1f, 0.2f, 0.3f, 1}, {0.9f, 0.5f, 0.2f, 1}, {0.6f, 0.8f, 0.4f, 1}, {0.3f, 0.3f, 0.9f, 1}};
-  s.exposure.min_scale = s.exposure.max_scale = 1.0f;
+  scenes::Scene s = color_ramp();
   scenes::ColorCorrection warm;
   warm.lut = "builtin:warm";
   warm.position = {0, 0, 10 + distance};

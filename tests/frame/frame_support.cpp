@@ -28,6 +28,17 @@ scenes::Scene top_down() {
   return s;
 }
 
+scenes::Scene color_ramp() {
+  scenes::Scene s = top_down();
+  scenes::Material m;
+  m.family = scenes::ShaderFamily::unlit_generic;
+  s.materials = {m};
+  s.meshes = {square(-1, -1, 1, 1, 0, 0)};
+  s.meshes[0].colors = {{0.1f, 0.2f, 0.3f, 1}, {0.9f, 0.5f, 0.2f, 1}, {0.6f, 0.8f, 0.4f, 1}, {0.3f, 0.3f, 0.9f, 1}};
+  s.exposure.min_scale = s.exposure.max_scale = 1.0f;
+  return s;
+}
+
 scenes::Mesh square(float x0, float y0, float x1, float y1, float z, int material, bool flip) {
   scenes::Mesh m;
   m.material = material;
@@ -65,6 +76,13 @@ void attach_test_bake(scenes::Scene& scene) {
   auto it = bakes.find(scene.name);
   if (it == bakes.end()) it = bakes.emplace(scene.name, bake::bake(scene, test_bake_settings())).first;
   bake::attach(scene, it->second);
+}
+
+rasterizer::Image render_frame(const scenes::Scene& scene, const FrameSettings& settings, int threads) {
+  Renderer r(scene, settings);
+  rasterizer::Context ctx(threads);
+  r.render(ctx);
+  return r.image();
 }
 
 RenderedFrame render_builtin(std::string_view name, const FrameSettings& settings,

@@ -20,9 +20,16 @@ double srgb_encode(double linear);
 /// +Y), nothing else.
 scenes::Scene top_down();
 
+/// top_down() filled by an unlit square whose corners are four saturated colors (something for a
+/// grade to change), at a fixed exposure of 1.
+scenes::Scene color_ramp();
+
 /// The square [x0, x1] x [y0, y1] at height z, facing +Z (counter-clockwise seen from above)
 /// unless `flip`.
 scenes::Mesh square(float x0, float y0, float x1, float y1, float z, int material, bool flip = false);
+
+/// One frame of `scene` with `settings`, rendered on `threads` worker threads.
+rasterizer::Image render_frame(const scenes::Scene& scene, const FrameSettings& settings, int threads = 2);
 
 /// Attaches a cheap, deterministic bake (lightmaps, ambient cubes) to `scene`, baked once per
 /// scene name and test binary.

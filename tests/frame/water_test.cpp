@@ -186,13 +186,6 @@ FrameSettings settings(float exposure = 1.0f) {
   return f;
 }
 
-rasterizer::Image render(const scenes::Scene& s, const FrameSettings& f, int threads = 2) {
-  Renderer r(s, f);
-  rasterizer::Context ctx(threads);
-  r.render(ctx);
-  return r.image();
-}
-
 void expect_pixel(const rasterizer::Image& image, const Pixel& p, const double (&linear)[3], int tolerance,
                   const std::string& what) {
   ASSERT_TRUE(p.x >= 0 && p.x < kWidth && p.y >= 0 && p.y < kHeight) << what << ": off screen";
@@ -211,7 +204,7 @@ TEST(Water, ReflectsWhatIsAboveItAtTheMirroredPlace) {
   scenes::Scene s = water_scene(look, {0.1f, 0.1f, 0.1f}, {0.1f, 0.1f, 0.1f});
   const glm::vec3 post(0.8f, 0.3f, 0.1f);
   add_post(s, post);
-  const rasterizer::Image image = render(s, settings());
+  const rasterizer::Image image = render_frame(s, settings());
   double reflected[3];
   for (int c = 0; c < 3; ++c) reflected[c] = 4.0 * through_srgb8(0.25 * post[c]);
   // Inside the mirror image, away from its edges (the post's center and two points off it).
@@ -238,7 +231,7 @@ TEST(Water, ReflectionExposureRoundTripsThroughAQuarter) {
   const glm::vec3 sky(3.2f, 2.4f, 1.6f);
   add_ceiling(s, sky);
   const float exposure = 0.25f;
-  const rasterizer::Image image = render(s, settings(exposure));
+  const rasterizer::Image image = render_frame(s, settings(exposure));
   double expected[3];
   for (int c = 0; c < 3; ++c)
     expected[c] = through_srgb8(0.25 * exposure * sky[c]) * gamma_to_linear(look.reflect_tint[c]) * 4;
@@ -258,7 +251,7 @@ TEST(Water, FresnelBlendsRefractionAndReflectionByTheViewAngle) {
   scenes::Scene s = water_scene(look, fog, fog);
   const glm::vec3 ceiling(0.9f, 0.7f, 0.5f);
   add_ceiling(s, ceiling);
-  const rasterizer::Image image = render(s, settings());
+  const rasterizer::Image image = render_frame(s, settings());
   const double n[3] = {2 * 128 / 255.0 - 1, 2 * 128 / 255.0 - 1, 1.0};  // the flat normal map's texel
   int checked = 0;
   for (const glm::dvec3& at : {glm::dvec3(15, 10, 0), glm::dvec3(-50, 80, 0), glm::dvec3(40, -20, 0)}) {
@@ -296,7 +289,7 @@ TEST(Water, RefractionShowsTheFloorFadedByTheWatersDepth) {
   look.fog_end = 400.0f;
   const glm::vec3 green(0.1f, 0.6f, 0.1f), blue(0.1f, 0.1f, 0.6f);
   scenes::Scene s = water_scene(look, green, blue);
-  const rasterizer::Image image = render(s, settings());
+  const rasterizer::Image image = render_frame(s, settings());
   const double fog = gamma_to_linear(128);
   for (const glm::dvec3& at : {glm::dvec3(-30, 40, kFloorZ), glm::dvec3(45, 90, kFloorZ), glm::dvec3(-70, 160, kFloorZ)}) {
     const Pixel px = pixel_of(at);
@@ -320,7 +313,7 @@ TEST(Water, SameBytesOnOneAndTwoThreads) {
   scenes::Scene s = water_scene(look, {0.1f, 0.6f, 0.1f}, {0.1f, 0.1f, 0.6f});
   add_ceiling(s, {0.9f, 0.7f, 0.5f});
   add_post(s, {0.8f, 0.3f, 0.1f});
-  const rasterizer::Image one = render(s, settings(), 1), two = render(s, settings(), 2);
+  const rasterizer::Image one = render_frame(s, settings(), 1), two = render_frame(s, settings(), 2);
   EXPECT_EQ(one.rgba, two.rgba);
 }
 
@@ -334,7 +327,7 @@ TEST(Water, TheViewsScissorChangesNoPixel) {
   add_post(s, {0.8f, 0.3f, 0.1f});
   FrameSettings whole = settings();
   whole.water_view_scissor = false;
-  EXPECT_EQ(render(s, settings(), 2).rgba, render(s, whole, 2).rgba);
+  EXPECT_EQ(render_frame(s, settings(), 2).rgba, render_frame(s, whole, 2).rgba);
   scenes::Scene courtyard = scenes::make_builtin_scene("courtyard", {160, 90});
   attach_test_bake(courtyard);
   for (int camera : {0, 2}) {  // the overview, the fountain
@@ -367,13 +360,13 @@ TEST(Water, BlurredRefractionWhereTheModelHasIt) {
     f.model = model;
     return f;
   };
-  EXPECT_EQ(render(sharp, as(shading::ShaderModel::ps_2_0)).rgba, render(blurred, as(shading::ShaderModel::ps_2_0)).rgba);
-  const rasterizer::Image b2b = render(blurred, as(shading::ShaderModel::ps_2_b));
-  EXPECT_NE(render(sharp, as(shading::ShaderModel::ps_2_b)).rgba, b2b.rgba);
-  EXPECT_EQ(b2b.rgba, render(blurred, as(shading::ShaderModel::ps_3_0)).rgba);
+  EXPECT_EQ(render_frame(sharp, as(shading::ShaderModel::ps_2_0)).rgba, render_frame(blurred, as(shading::ShaderModel::ps_2_0)).rgba);
+  const rasterizer::Image b2b = render_frame(blurred, as(shading::ShaderModel::ps_2_b));
+  EXPECT_NE(render_frame(sharp, as(shading::ShaderModel::ps_2_b)).rgba, b2b.rgba);
+  EXPECT_EQ(b2b.rgba, render_frame(blurred, as(shading::ShaderModel::ps_3_0)).rgba);
   FrameSettings whole = as(shading::ShaderModel::ps_3_0);
   whole.water_view_scissor = false;
-  EXPECT_EQ(b2b.rgba, render(blurred, whole).rgba);
+  EXPECT_EQ(b2b.rgba, render_frame(blurred, whole).rgba);
   std::vector<ShaderUse> uses;
   Renderer r(blurred, [&] { FrameSettings f = as(shading::ShaderModel::ps_3_0); f.count_shading = true; return f; }());
   rasterizer::Context ctx(2);

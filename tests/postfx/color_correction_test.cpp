@@ -1,8 +1,8 @@
 // The color-correction pass: identity on every 8-bit color, the rasterizer's bytes equal to the
 // shader's scalar lane run per pixel, the same bytes for 1, 2 and 3 threads, weights blending as
 // luxel's rule says (checked in double), the exact path as the trilinear interpolation of a file's
-// own lattice, the engine's 32^3 8-bit way against the exact path within a measured bound, and the
-// argument checks.
+// own lattice, the engine's 32^3 8-bit way against the exact path within a measured bound, a LUT
+// composed with a transform, and the argument checks.
 
 #include "lut_support.hpp"
 #include "scenes/temp_dir.hpp"
@@ -68,6 +68,21 @@ TEST(ColorCorrection, IdentityLutIsTheIdentityOnEveryColor) {
   const WeightedLut luts[] = {{&identity, 1.0f}};
   rasterizer::Context ctx(2);
   EXPECT_EQ(max_step(frame, color_correct(ctx, frame, luts)), 0);
+}
+
+TEST(ColorCorrection, ComposeAppliesTheTransformToEveryEntry) {
+  // A channel swap and an inversion are exact on 8-bit values: entry e becomes (e.b, 255 - e.r, e.g).
+  const Lut warm = resolve_lut("builtin:warm");
+  const ColorTransform twist{"twist", "b, 1 - r, g", [](std::span<glm::vec3> colors) {
+                               for (glm::vec3& c : colors) c = glm::vec3(c.z, 1.0f - c.x, c.y);
+                             }};
+  const Lut composed = compose(warm, twist);
+  for (size_t i = 0; i < warm.entries.size(); ++i) {
+    const Lut::Color24& e = warm.entries[i];
+    ASSERT_EQ(composed.entries[i], (Lut::Color24{e[2], uint8_t(255 - e[0]), e[1]})) << "entry " << i;
+  }
+  const ColorTransform identity{"identity", "", [](std::span<glm::vec3>) {}};
+  EXPECT_EQ(compose(warm, identity), warm);
 }
 
 /// The pass's parameters built the way color_correct builds them, for the scalar reference.

@@ -241,7 +241,10 @@ Scene hand_built() {
   s.exposure.percent_bright = 3.0f, s.exposure.bloom_scale = 1.25f;
   s.exposure_zones = {{{-10, -20, -30}, {10, 20, 30}, Exposure{1.5f, 4.0f, 2.0f, 50.0f, 1.0f, 0.5f}}};
   s.cubemap_samples = {{{1, 2, 3}, 32, -1}, {{-100, 50, 64}, 128, -1}};
-  s.color_corrections = {{"builtin:warm", {10, 20, 30}, 64.0f, 256.0f, 0.8f}};
+  ColorCorrection warm;
+  warm.lut = "builtin:warm", warm.position = {10, 20, 30}, warm.min_falloff = 64.0f, warm.max_falloff = 256.0f;
+  warm.max_weight = 0.8f;
+  s.color_corrections = {warm};
   s.irradiance_volume = IrradianceVolume{{-1000, 0, -10}, {0, 10, 130}, {128, 64, 32}, {9, 2, 5}, {}};
   CameraKey key;
   key.time = 2.5f;

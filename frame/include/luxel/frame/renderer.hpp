@@ -58,13 +58,21 @@
 //    controls' bloom scale where the camera is, smoothed once per frame (postfx/bloom_amount.hpp)
 //    from the scale at the first frame (the SDK's starts at 1 once per game);
 //    then color correction (FrameSettings::color_correction): the scene's color-correction nodes
-//    weighted by the eye's distance through their falloffs, the four heaviest blended by
-//    Source's colorcorrection pass through 32^3 LUTs (postfx/color_correction.hpp), when any
-//    weight is not 0; then film grain when asked (FrameSettings::film_grain), its noise seeded
-//    by the options' seed and the clock's time. When bloom and color correction both run, the
-//    bloom's add and the correction are one Engine_Post draw, as in the engine (SOURCE_FACTS
-//    8.3): the lookups read the unrounded sum. Passes "bloom" (3 draws then, 5 with the add),
-//    "color correction", "film grain".
+//    (Source's color_correction: faded in and out by the inputs sent to them up to the clock's
+//    time with the SDK's fades, SOURCE_FACTS 9.3, an enabled node holding max_weight where the
+//    SDK spawns it at 1; weighted by the eye's distance through their falloffs) and volumes
+//    (color_correction_volume: ramped up from when the eye entered, down from when it left, the
+//    eye's place tested every 0.01 s of the clock from 0 as the volume thinks), the four
+//    heaviest blended by Source's colorcorrection pass through 32^3 LUTs
+//    (postfx/color_correction.hpp), when any weight is not 0. The weights are a function of the
+//    clock's time and the camera's path alone (frame/src/color_correction_nodes.hpp): a frame's
+//    do not depend on which frames were rendered before it. Then film grain when asked
+//    (FrameSettings::film_grain), its noise seeded by the options' seed and the clock's time. A
+//    look (FrameSettings::look, look.hpp) adds its grade to the color correction, over the
+//    scene's nodes, and its grain. When bloom and color correction both run, the bloom's add and
+//    the correction are one Engine_Post draw, as in the engine (SOURCE_FACTS 8.3): the lookups
+//    read the unrounded sum. Passes "bloom" (3 draws then, 5 with the add), "color correction",
+//    "film grain".
 // Order: the water's views, then opaque meshes in scene order (depth LESS, single-sided materials
 // cull their back faces, front faces counter-clockwise), alpha-tested ones with D3D9's alpha test (GREATEREQUAL
 // $alphatestreference), then the sky, then translucent meshes back to front by the distance of
@@ -100,6 +108,7 @@
 // [0, 1]). The view-projection matrix is computed in double and rounded once, so that a camera
 // whose exact matrix has float entries (the workloads' orthographic cameras) gets exactly those.
 
+#include "luxel/frame/look.hpp"
 #include "luxel/postfx/auto_exposure.hpp"
 #include "luxel/postfx/bloom.hpp"
 #include "luxel/postfx/film_grain.hpp"
@@ -108,6 +117,7 @@
 #include "luxel/rasterizer/image.hpp"
 #include "luxel/scenes/scene.hpp"
 #include "luxel/shading/shader_model.hpp"
+#include "luxel/shading/source/shader_use.hpp"
 
 #include <glm/mat4x4.hpp>
 #include <glm/vec4.hpp>
@@ -155,7 +165,11 @@ struct FrameSettings {
   bool color_correction = true;
   /// Film grain last; nullopt (the default, as Source without -filmgrain): none.
   std::optional<postfx::FilmGrainOptions> film_grain = std::nullopt;
-  /// Count the pixels each shader combo shades (Renderer::shader_uses); off, a frame counts nothing.
+  /// A look over the whole frame (look.hpp): archival grades every frame at full weight over the
+  /// scene's color-correction nodes and blends a stronger grain (film_grain's seed, or 0).
+  Look look = Look::none;
+  /// Count the pixels each shader combo shades, the post passes' included (Renderer::shader_uses);
+  /// off, a frame counts nothing.
   bool count_shading = false;
   /// Time each pass (Renderer::pass_times). The rasterizer then runs each pass over all tiles
   /// before the next instead of all passes tile by tile, so a timed frame is a little slower.
@@ -188,13 +202,9 @@ struct PassTime {
   int draws = 0;
 };
 
-/// One shader combo the last frame ran (FrameSettings::count_shading).
-struct ShaderUse {
-  std::string family;   ///< "LightmappedGeneric", "VertexLitGeneric", ...
-  std::string combo;    ///< the combo's name in the shading catalog
-  uint64_t pixels = 0;  ///< pixels it shaded (covered pixels, helper lanes not counted)
-  int slots = 0;        ///< its counted DX9 instruction slots per pixel (arithmetic + texture) on the frame's model
-};
+/// One shader combo the last frame ran (FrameSettings::count_shading): its family and combo, the
+/// pixels it shaded, its counted DX9 slots per pixel on the frame's model.
+using ShaderUse = shading::source::ShaderUse;
 
 /// The camera a frame with these settings looks through (FrameSettings::view when set). Throws
 /// std::invalid_argument when the scene has no such camera (an index out of range, a camera path
@@ -237,8 +247,9 @@ class Renderer {
   std::vector<glm::vec4> render_float(rasterizer::Context& ctx);
   /// What the draws of the last frame did, summed (the water's views included).
   const rasterizer::DrawStats& stats() const;
-  /// What each shader combo did in the last frame (the water's views included), in a fixed order
-  /// (first draw first); empty unless FrameSettings::count_shading.
+  /// What each shader combo did in the last frame, the water's views and the post passes
+  /// (histogram, bloom, color correction, film grain) included, in a fixed order (first draw
+  /// first); empty unless FrameSettings::count_shading.
   const std::vector<ShaderUse>& shader_uses() const;
   /// The last frame's passes in the order they ran, the ones the scene has; empty unless
   /// FrameSettings::time_passes.

@@ -30,6 +30,7 @@
 // first footprint only. Smaller frames throw std::invalid_argument.
 
 #include "luxel/postfx/screen_rectangle.hpp"
+#include "luxel/postfx/shader_tally.hpp"
 #include "luxel/rasterizer/context.hpp"
 #include "luxel/rasterizer/framebuffer.hpp"
 #include "luxel/rasterizer/image.hpp"
@@ -60,23 +61,23 @@ class Bloom {
 
   /// All five passes: adds the bloom of `frame` (any sample count) onto it. `amount` is this
   /// frame's bloom amount (BloomAmount::advance); at 0 or below nothing runs, as in the SDK
-  /// (bPerformBloom needs a bloom scale above 0).
-  void apply(rasterizer::Context& ctx, rasterizer::ColorTarget& frame, float amount);
+  /// (bPerformBloom needs a bloom scale above 0). The draws' shaders go to `tally`.
+  void apply(rasterizer::Context& ctx, rasterizer::ColorTarget& frame, float amount, const ShaderTally& tally = {});
   /// The same on a resolved frame held as an image.
-  void apply(rasterizer::Context& ctx, rasterizer::Image& frame, float amount);
+  void apply(rasterizer::Context& ctx, rasterizer::Image& frame, float amount, const ShaderTally& tally = {});
   /// Every pass but the add, for the combine that adds the bloom itself when color correction
   /// runs (color_correction.hpp): afterwards frame_texture() and bloom_texture() hold what it
   /// reads. Returns false, having run nothing, when `amount` is 0 or below.
-  bool blur(rasterizer::Context& ctx, const rasterizer::Image& frame, float amount);
+  bool blur(rasterizer::Context& ctx, const rasterizer::Image& frame, float amount, const ShaderTally& tally = {});
 
   // The passes one by one, in this order (benchmarks time them; tests look between them). A pass
   // before any copy throws std::logic_error.
   void copy(rasterizer::Context& ctx, const rasterizer::ColorTarget& frame);
   void copy(const rasterizer::Image& frame);
-  void downsample(rasterizer::Context& ctx);
-  void blur_x(rasterizer::Context& ctx);
-  void blur_y(rasterizer::Context& ctx, float amount);
-  void add(rasterizer::Context& ctx, rasterizer::ColorTarget& frame);
+  void downsample(rasterizer::Context& ctx, const ShaderTally& tally = {});
+  void blur_x(rasterizer::Context& ctx, const ShaderTally& tally = {});
+  void blur_y(rasterizer::Context& ctx, float amount, const ShaderTally& tally = {});
+  void add(rasterizer::Context& ctx, rasterizer::ColorTarget& frame, const ShaderTally& tally = {});
 
   /// The small target as the last pass left it (after blur_y: the bloom texture that add reads).
   const rasterizer::Image& small_image() const { return small_image_; }
@@ -95,6 +96,8 @@ class Bloom {
   /// Reads the small target back (small_image_) into small texture `index`: a render target that
   /// the next pass samples, as the SDK's targets are also textures.
   void keep_small(rasterizer::Context& ctx, int index);
+  /// A blur with `params` drawn on the small target and kept in small texture `into`.
+  void draw_blur(rasterizer::Context& ctx, const shading::source::BlurParams& params, int into, const ShaderTally& tally);
 
   BloomOptions options_;
   std::optional<rasterizer::Texture> frame_texture_;   ///< _rt_FullFrameFB

@@ -25,6 +25,7 @@
 #include "luxel/postfx/bloom.hpp"
 #include "luxel/postfx/color_transform.hpp"
 #include "luxel/postfx/lut.hpp"
+#include "luxel/postfx/shader_tally.hpp"
 #include "luxel/rasterizer/context.hpp"
 #include "luxel/rasterizer/image.hpp"
 
@@ -49,16 +50,19 @@ struct WeightedTransform {
 /// The frame's own weight beside lookups of these weights: max(0, 1 - sum).
 float default_weight(std::span<const float> weights);
 
-/// The engine's pass over `frame` (RGBA8, alpha kept). Throws std::invalid_argument for no LUT
-/// or more than kMaxLuts, a missing LUT, or a weight that is negative or not finite.
+/// The engine's pass over `frame` (RGBA8, alpha kept); the draw's shader goes to `tally`. Throws
+/// std::invalid_argument for no LUT or more than kMaxLuts, a missing LUT, or a weight that is
+/// negative or not finite.
 rasterizer::Image color_correct(rasterizer::Context& ctx, const rasterizer::Image& frame,
-                                std::span<const WeightedLut> luts);
+                                std::span<const WeightedLut> luts, const ShaderTally& tally = {});
 
 /// The engine's pass when the frame also has a bloom (SOURCE_FACTS §8.3; Engine_Post,
 /// shading/source/engine_post.hpp): `bloom` has blurred the frame (Bloom::blur), and one draw adds
 /// the bloom to the frame and color-corrects the sum, unrounded in between. Returns the finished
-/// frame. Same argument checks as above; std::logic_error when `bloom` has blurred no frame.
-rasterizer::Image color_correct(rasterizer::Context& ctx, const Bloom& bloom, std::span<const WeightedLut> luts);
+/// frame; the draw's shader goes to `tally`. Same argument checks as above; std::logic_error when
+/// `bloom` has blurred no frame.
+rasterizer::Image color_correct(rasterizer::Context& ctx, const Bloom& bloom, std::span<const WeightedLut> luts,
+                                const ShaderTally& tally = {});
 
 /// The same blend in float: width * height * 4 floats, RGBA, rows top first, alpha the frame's
 /// (over 255). Same argument checks as color_correct.

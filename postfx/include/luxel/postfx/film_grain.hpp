@@ -14,6 +14,7 @@
 // The default noise scale, (0.1, 0.1, 0.1, 0.9), is our choice: it adds up to 0.1 and keeps
 // 0.9 to 1 of the frame, a light grain that lifts the blacks a little as film does.
 
+#include "luxel/postfx/shader_tally.hpp"
 #include "luxel/rasterizer/context.hpp"
 #include "luxel/rasterizer/framebuffer.hpp"
 #include "luxel/rasterizer/image.hpp"
@@ -41,10 +42,11 @@ class FilmGrain {
  public:
   explicit FilmGrain(FilmGrainOptions options = {}) : options_(options) {}
 
-  /// Blends frame `frame_index`'s grain onto the frame (any sample count).
-  void apply(rasterizer::Context& ctx, rasterizer::ColorTarget& frame, uint64_t frame_index);
+  /// Blends frame `frame_index`'s grain onto the frame (any sample count); the draw's shader goes
+  /// to `tally`.
+  void apply(rasterizer::Context& ctx, rasterizer::ColorTarget& frame, uint64_t frame_index, const ShaderTally& tally = {});
   /// The same on a resolved frame held as an image.
-  void apply(rasterizer::Context& ctx, rasterizer::Image& frame, uint64_t frame_index);
+  void apply(rasterizer::Context& ctx, rasterizer::Image& frame, uint64_t frame_index, const ShaderTally& tally = {});
 
  private:
   FilmGrainOptions options_;

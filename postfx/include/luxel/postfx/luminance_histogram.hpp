@@ -22,6 +22,7 @@
 // without queries or latency: the reference the occlusion histogram converges to.
 
 #include "luxel/postfx/histogram_buckets.hpp"
+#include "luxel/postfx/shader_tally.hpp"
 #include "luxel/rasterizer/context.hpp"
 #include "luxel/rasterizer/framebuffer.hpp"
 #include "luxel/rasterizer/image.hpp"
@@ -78,8 +79,10 @@ class LuminanceHistogram {
   /// One frame's update (above) on `frame`: the finished 8-bit image, sRGB-encoded. `target` is
   /// the depth-stencil target the range test draws into, the size of the frame, with the frame's
   /// samples (the frame's own, whose depth and stencil it may overwrite, as the engine draws into
-  /// its back buffer's).
-  void update(rasterizer::Context& ctx, const rasterizer::Image& frame, rasterizer::DepthStencilTarget& target);
+  /// its back buffer's). The range test's shader goes to `tally` (its counting draw, the
+  /// stencil's dev/no_pixel_write, is no shader of the catalog).
+  void update(rasterizer::Context& ctx, const rasterizer::Image& frame, rasterizer::DepthStencilTarget& target,
+              const ShaderTally& tally = {});
 
   const HistogramSettings& settings() const { return settings_; }
   /// The buckets, the calibration bucket last.
@@ -93,7 +96,8 @@ class LuminanceHistogram {
   uint64_t viewport_pixels() const { return viewport_pixels_; }
 
  private:
-  void issue(rasterizer::Context& ctx, const rasterizer::Image& frame, rasterizer::DepthStencilTarget& target, int bucket);
+  void issue(rasterizer::Context& ctx, const rasterizer::Image& frame, rasterizer::DepthStencilTarget& target, int bucket,
+             const ShaderTally& tally);
 
   HistogramSettings settings_;
   std::vector<BucketCount> buckets_;

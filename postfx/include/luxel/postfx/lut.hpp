@@ -45,6 +45,10 @@ uint8_t to_unorm8(float x);
 /// The transform evaluated at every lattice point, each channel rounded with to_unorm8.
 Lut sample_lut(const ColorTransform& transform);
 
+/// `lut` followed by `then`: each entry (over 255) transformed, rounded with to_unorm8. What a
+/// look blended on top of a scene's node does to that node (frame/look.hpp).
+Lut compose(const Lut& lut, const ColorTransform& then);
+
 /// The LUT as the shader's volume texture: 32^3 RGBA8 (alpha 255), one mip level, texel
 /// (r, g, b) = entry (r, g, b), read without sRGB decode.
 rasterizer::Texture lut_volume(const Lut& lut);

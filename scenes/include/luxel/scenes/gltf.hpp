@@ -76,9 +76,14 @@
 // Positions in Source inches, +Z up (not glTF's meters: only luxel reads them):
 //   background [3], fog {mode: none|range|height, color [3], start, end, maxdensity, waterz},
 //   exposure {minscale, maxscale, rate, percenttarget, percentbright, bloomscale},
+//   exposurezones [{min [3], max [3], exposure {...}}],
 //   cubemapsamples [{position [3], size}], colorcorrections [{lut, position [3], minfalloff,
-//   maxfalloff, maxweight}], irradiancevolume {min [3], max [3], spacing [3], counts [3]} (its
+//   maxfalloff, maxweight, fadein, fadeout, startdisabled, inputs [{time, input: enable|disable}]}],
+//   colorcorrectionvolumes [{lut, min [3], max [3], fadeduration}],
+//   irradiancevolume {min [3], max [3], spacing [3], counts [3]} (its
 //   baked cubes are not written), camerapath [{time, camera {position, target, up [3], fov, near, far}}].
+// A key a file lacks keeps the scene model's default (files written before it existed load as
+// they did); an input that is neither enable nor disable is an error.
 //
 // ## Lights (KHR_lights_punctual)
 // glTF's point and spot lights fall off as intensity / d^2, intensity in candela, d in meters;

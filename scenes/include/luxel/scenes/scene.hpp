@@ -254,12 +254,33 @@ struct IrradianceVolume {
   std::vector<AmbientCube> cubes;   ///< x fastest, then y, then z; empty until baked
 };
 
-/// A color-correction node (Source's color_correction entity): a 3D LUT weighted by distance.
+/// An input a map's logic sends a color-correction node at a time on the scene's clock (Source's
+/// Enable and Disable inputs of color_correction).
+struct ColorCorrectionInput {
+  enum class Kind : uint8_t { enable, disable };
+  float time = 0.0f;                ///< seconds
+  Kind kind = Kind::enable;
+};
+
+/// A color-correction node (Source's color_correction entity): a 3D LUT weighted by the eye's
+/// distance, faded in and out by the inputs it is sent (the frame's rules: frame/renderer.hpp).
 struct ColorCorrection {
   std::string lut;                  ///< file name (.cube, .3dl...) or "builtin:NAME"
   glm::vec3 position{0.0f};
-  float min_falloff = 0.0f, max_falloff = 0.0f;  ///< inches; 0, 0 = global
-  float max_weight = 1.0f;
+  float min_falloff = 0.0f, max_falloff = 0.0f;  ///< inches, >= 0 or -1 (none); equal = global
+  float max_weight = 1.0f;          ///< maxweight: the weight it holds while enabled
+  float fade_in = 0.0f;             ///< fadeInDuration: seconds from 0 to max_weight on Enable; 0 jumps
+  float fade_out = 0.0f;            ///< fadeOutDuration: seconds from max_weight to 0 on Disable; 0 jumps
+  bool start_disabled = false;      ///< StartDisabled: weight 0 until enabled
+  std::vector<ColorCorrectionInput> inputs;  ///< times in order (equal times: in list order)
+};
+
+/// A color-correction volume (Source's color_correction_volume, a trigger): its LUT ramps up
+/// while the eye is inside the box and down after it leaves (the frame's rules: frame/renderer.hpp).
+struct ColorCorrectionVolume {
+  std::string lut;                  ///< as ColorCorrection::lut
+  glm::vec3 min{0.0f}, max{0.0f};   ///< world bounds, inches (inclusive)
+  float fade_duration = 10.0f;      ///< fadeDuration, seconds (the FGD's default); 0 jumps
 };
 
 enum class FogMode : uint8_t { none, range, height };
@@ -316,6 +337,7 @@ struct Scene {
   std::vector<CubemapSample> cubemap_samples;
   std::optional<IrradianceVolume> irradiance_volume;
   std::vector<ColorCorrection> color_corrections;
+  std::vector<ColorCorrectionVolume> color_correction_volumes;
   Fog fog;
   Exposure exposure;
   std::vector<ExposureZone> exposure_zones;  ///< the last zone holding the camera wins
@@ -343,7 +365,9 @@ Bounds bounds_of(const Scene& scene);
 
 /// Checks what the frame relies on: indices within their vertex counts, array lengths, material
 /// and texture references in range, finite positions, texture images the size they claim, unit
-/// handedness. Throws std::invalid_argument naming the scene and the first problem.
+/// handedness, exposure controls and color-correction nodes and volumes with finite values that
+/// are not negative (a falloff may be -1), a LUT name, input times in order, ordered boxes.
+/// Throws std::invalid_argument naming the scene and the first problem.
 void validate(const Scene& scene);
 
 }  // namespace luxel::scenes

@@ -21,9 +21,7 @@
 // SIMD stamp (operator(), what draws run) or the float lane, one pixel at a time (ScalarReference
 // below, the scalar reference that tests hold the stamps to).
 //
-// Counting: when `pixels` is set, each invocation adds its covered lanes to it (relaxed atomics:
-// the sum is the same whatever the thread count; off by default, it costs a contended add per
-// stamp).
+// Counting: when `pixels` is set, each invocation adds its covered lanes to it (shader_use.hpp).
 //
 // Water fog to destination alpha: the world families' height-fog combos (the view through the
 // water, the refraction view) write the fog factor to alpha when `water_fog_to_alpha` is set, as
@@ -33,6 +31,7 @@
 
 #include "luxel/rasterizer/draw.hpp"
 #include "luxel/shading/source/lightmapped_generic.hpp"
+#include "luxel/shading/source/shader_use.hpp"
 #include "luxel/shading/source/sky.hpp"
 #include "luxel/shading/source/unlit_generic.hpp"
 #include "luxel/shading/source/vertexlit_generic.hpp"
@@ -40,7 +39,6 @@
 
 #include <array>
 #include <atomic>
-#include <bit>
 #include <cstdint>
 
 namespace luxel::shading::source {
@@ -158,10 +156,6 @@ LUXEL_INLINE float4<typename A::Lane> with_water_fog_alpha(float4<typename A::La
 
 LUXEL_INLINE void write(const float4<simd::Float>& c, rasterizer::PixelOutput& out) { out.color = {c.x, c.y, c.z, c.w}; }
 
-LUXEL_INLINE void count(std::atomic<uint64_t>* pixels, simd::LaneBits live) {
-  if (pixels) pixels->fetch_add(static_cast<uint64_t>(std::popcount(live)), std::memory_order_relaxed);
-}
-
 }  // namespace detail
 
 // ---- LightmappedGeneric -----------------------------------------------------------------------
@@ -223,7 +217,7 @@ struct LightmappedPixelShader {
   }
 
   void operator()(const rasterizer::PixelInput<kVaryings>& in, rasterizer::PixelOutput& out) const {
-    detail::count(pixels, in.live);
+    count_pixels(pixels, in.live);
     detail::write(shade(detail::StampAttributes<kAttributes, kVaryings>{in}), out);
   }
 };
@@ -272,7 +266,7 @@ struct VertexLitPixelShader {
   }
 
   void operator()(const rasterizer::PixelInput<kVaryings>& in, rasterizer::PixelOutput& out) const {
-    detail::count(pixels, in.live);
+    count_pixels(pixels, in.live);
     detail::write(shade(detail::StampAttributes<kAttributes, kVaryings>{in}), out);
   }
 };
@@ -323,7 +317,7 @@ struct UnlitPixelShader {
   }
 
   void operator()(const rasterizer::PixelInput<kVaryings>& in, rasterizer::PixelOutput& out) const {
-    detail::count(pixels, in.live);
+    count_pixels(pixels, in.live);
     detail::write(shade(detail::StampAttributes<kAttributes, kVaryings>{in}), out);
   }
 };
@@ -355,7 +349,7 @@ struct SkyPixelShader {
   }
 
   void operator()(const rasterizer::PixelInput<kVaryings>& in, rasterizer::PixelOutput& out) const {
-    detail::count(pixels, in.live);
+    count_pixels(pixels, in.live);
     detail::write(shade(detail::StampAttributes<kAttributes, kVaryings>{in}), out);
   }
 };
@@ -469,7 +463,7 @@ struct WaterPixelShader {
   }
 
   void operator()(const rasterizer::PixelInput<kVaryings>& in, rasterizer::PixelOutput& out) const {
-    detail::count(pixels, in.live);
+    count_pixels(pixels, in.live);
     detail::write(shade(detail::StampAttributes<kAttributes, kVaryings>{in}), out);
   }
 };

@@ -12,6 +12,7 @@
 
 #include "luxel/rasterizer/draw.hpp"
 #include "luxel/shading/source/common.hpp"
+#include "luxel/shading/source/shader_use.hpp"
 
 namespace luxel::shading::source {
 
@@ -51,11 +52,14 @@ inline rasterizer::PipelineState bloom_add_pipeline_state() {
 
 /// The shader as a rasterizer pixel functor: varying 0 .xy is the bloom texture's coordinate.
 struct BloomAddPixelShader {
+  static constexpr const char* kFamily = "bloomadd";  ///< its name in the shading catalog
   static constexpr bool kCanDiscard = false;
   static constexpr bool kWritesDepth = false;
   const BloomAddParams* params = nullptr;
+  std::atomic<uint64_t>* pixels = nullptr;  ///< counts the pixels shaded when set (shader_use.hpp)
 
   void operator()(const rasterizer::PixelInput<1>& in, rasterizer::PixelOutput& out) const {
+    count_pixels(pixels, in.live);
     const float4<simd::Float> c = bloom_add(float2<simd::Float>(in.varyings[0].x, in.varyings[0].y), *params);
     out.color = {c.x, c.y, c.z, c.w};
   }

@@ -24,6 +24,7 @@
 
 #include "luxel/rasterizer/draw.hpp"
 #include "luxel/shading/source/common.hpp"
+#include "luxel/shading/source/shader_use.hpp"
 
 #include <glm/vec4.hpp>
 
@@ -112,11 +113,14 @@ inline Cost measure_blur(ShaderModel model) {
 
 /// The shader as a rasterizer pixel functor: varying 0 .xy is the source coordinate.
 struct BlurPixelShader {
+  static constexpr const char* kFamily = "BlurFilter";  ///< its name in the shading catalog
   static constexpr bool kCanDiscard = false;
   static constexpr bool kWritesDepth = false;
   const BlurParams* params = nullptr;
+  std::atomic<uint64_t>* pixels = nullptr;  ///< counts the pixels shaded when set (shader_use.hpp)
 
   void operator()(const rasterizer::PixelInput<1>& in, rasterizer::PixelOutput& out) const {
+    count_pixels(pixels, in.live);
     const float4<simd::Float> c = blur(float2<simd::Float>(in.varyings[0].x, in.varyings[0].y), *params);
     out.color = {c.x, c.y, c.z, c.w};
   }

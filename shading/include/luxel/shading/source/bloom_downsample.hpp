@@ -24,6 +24,7 @@
 
 #include "luxel/rasterizer/draw.hpp"
 #include "luxel/shading/source/common.hpp"
+#include "luxel/shading/source/shader_use.hpp"
 
 #include <glm/vec2.hpp>
 #include <glm/vec4.hpp>
@@ -80,11 +81,14 @@ inline Cost measure_downsample(ShaderModel model) {
 
 /// The shader as a rasterizer pixel functor: taps in varyings 0.xy, 0.zw, 1.xy, 1.zw.
 struct DownsamplePixelShader {
+  static constexpr const char* kFamily = "Downsample_nohdr";  ///< its name in the shading catalog
   static constexpr bool kCanDiscard = false;
   static constexpr bool kWritesDepth = false;
   const DownsampleParams* params = nullptr;
+  std::atomic<uint64_t>* pixels = nullptr;  ///< counts the pixels shaded when set (shader_use.hpp)
 
   void operator()(const rasterizer::PixelInput<2>& in, rasterizer::PixelOutput& out) const {
+    count_pixels(pixels, in.live);
     const std::array<float2<simd::Float>, 4> coords = {
         float2<simd::Float>(in.varyings[0].x, in.varyings[0].y), float2<simd::Float>(in.varyings[0].z, in.varyings[0].w),
         float2<simd::Float>(in.varyings[1].x, in.varyings[1].y), float2<simd::Float>(in.varyings[1].z, in.varyings[1].w)};

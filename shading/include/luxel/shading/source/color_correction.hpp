@@ -22,6 +22,7 @@
 
 #include "luxel/rasterizer/draw.hpp"
 #include "luxel/shading/source/common.hpp"
+#include "luxel/shading/source/shader_use.hpp"
 
 #include <glm/vec4.hpp>
 
@@ -119,11 +120,14 @@ inline Cost measure_color_correction(ShaderModel model) {
 /// The shader as a rasterizer pixel functor: varying 0 .xy is the frame's texture coordinate.
 template <ColorCorrectionCombo C>
 struct ColorCorrectionPixelShader {
+  static constexpr const char* kFamily = "ColorCorrection";  ///< its name in the shading catalog
   static constexpr bool kCanDiscard = false;
   static constexpr bool kWritesDepth = false;
   const ColorCorrectionParams* params = nullptr;
+  std::atomic<uint64_t>* pixels = nullptr;  ///< counts the pixels shaded when set (shader_use.hpp)
 
   void operator()(const rasterizer::PixelInput<1>& in, rasterizer::PixelOutput& out) const {
+    count_pixels(pixels, in.live);
     const float2<simd::Float> uv(in.varyings[0].x, in.varyings[0].y);
     const float4<simd::Float> c = color_correction<C>(uv, *params);
     out.color = {c.x, c.y, c.z, c.w};

@@ -94,11 +94,14 @@ inline Cost measure_engine_post(ShaderModel model) {
 /// bloom's.
 template <EnginePostCombo C>
 struct EnginePostPixelShader {
+  static constexpr const char* kFamily = "Engine_Post";  ///< its name in the shading catalog
   static constexpr bool kCanDiscard = false;
   static constexpr bool kWritesDepth = false;
   const EnginePostParams* params = nullptr;
+  std::atomic<uint64_t>* pixels = nullptr;  ///< counts the pixels shaded when set (shader_use.hpp)
 
   void operator()(const rasterizer::PixelInput<1>& in, rasterizer::PixelOutput& out) const {
+    count_pixels(pixels, in.live);
     const float2<simd::Float> frame_uv(in.varyings[0].x, in.varyings[0].y), bloom_uv(in.varyings[0].z, in.varyings[0].w);
     const float4<simd::Float> c = engine_post<C>(frame_uv, bloom_uv, *params);
     out.color = {c.x, c.y, c.z, c.w};

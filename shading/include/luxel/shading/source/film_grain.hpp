@@ -18,6 +18,7 @@
 
 #include "luxel/rasterizer/draw.hpp"
 #include "luxel/shading/source/common.hpp"
+#include "luxel/shading/source/shader_use.hpp"
 
 #include <glm/vec4.hpp>
 
@@ -61,11 +62,14 @@ inline rasterizer::PipelineState film_grain_pipeline_state() {
 
 /// The shader as a rasterizer pixel functor: varying 0 .xy is the grain texture's coordinate.
 struct FilmGrainPixelShader {
+  static constexpr const char* kFamily = "filmgrain";  ///< its name in the shading catalog
   static constexpr bool kCanDiscard = false;
   static constexpr bool kWritesDepth = false;
   const FilmGrainParams* params = nullptr;
+  std::atomic<uint64_t>* pixels = nullptr;  ///< counts the pixels shaded when set (shader_use.hpp)
 
   void operator()(const rasterizer::PixelInput<1>& in, rasterizer::PixelOutput& out) const {
+    count_pixels(pixels, in.live);
     const float4<simd::Float> c = film_grain(float2<simd::Float>(in.varyings[0].x, in.varyings[0].y), *params);
     out.color = {c.x, c.y, c.z, c.w};
   }

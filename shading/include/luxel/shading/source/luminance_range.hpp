@@ -30,6 +30,7 @@
 
 #include "luxel/rasterizer/draw.hpp"
 #include "luxel/shading/source/common.hpp"
+#include "luxel/shading/source/shader_use.hpp"
 #include "luxel/shading/source/hdr_type.hpp"
 
 #include <glm/vec3.hpp>
@@ -120,11 +121,14 @@ inline Cost measure_luminance_range(ShaderModel model) {
 /// The shader as a rasterizer pixel functor: varying 0 .xy is the frame's texture coordinate.
 template <LuminanceRangeCombo C>
 struct LuminanceRangePixelShader {
+  static constexpr const char* kFamily = "LuminanceRange";  ///< its name in the shading catalog
   static constexpr bool kCanDiscard = C.reject == LuminanceReject::texkill;
   static constexpr bool kWritesDepth = true;
   const LuminanceRangeParams* params = nullptr;
+  std::atomic<uint64_t>* pixels = nullptr;  ///< counts the pixels shaded when set (shader_use.hpp)
 
   void operator()(const rasterizer::PixelInput<1>& in, rasterizer::PixelOutput& out) const {
+    count_pixels(pixels, in.live);
     const float2<simd::Float> uv(in.varyings[0].x, in.varyings[0].y);
     const LuminanceRangeOutput<simd::Float> r = luminance_range<C>(uv, *params);
     out.color = {r.color.x, r.color.y, r.color.z, r.color.w};
