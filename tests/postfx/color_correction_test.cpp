@@ -161,11 +161,8 @@ TEST(ColorCorrection, SameBytesForAnyThreadCount) {
 }
 
 /// The 8-bit LUT's trilinear lookup in double, at an 8-bit color (§9.2's coordinates: c * 31).
-glm::dvec3 lookup_reference(const Lut& lut, const uint8_t* rgb) {
-  test::Lattice l{kLutSize, std::vector<glm::vec3>(lut.entries.size())};
-  for (size_t i = 0; i < lut.entries.size(); ++i)
-    l.values[i] = glm::vec3(lut.entries[i][0], lut.entries[i][1], lut.entries[i][2]);
-  return test::trilinear(l, glm::dvec3(rgb[0], rgb[1], rgb[2]) / 255.0) / 255.0;
+glm::dvec3 lookup_reference(const test::Lattice& lut, const uint8_t* rgb) {
+  return test::trilinear(lut, glm::dvec3(rgb[0], rgb[1], rgb[2]) / 255.0) / 255.0;
 }
 
 TEST(ColorCorrection, WeightsBlendAsTheFormulaSays) {
@@ -174,11 +171,12 @@ TEST(ColorCorrection, WeightsBlendAsTheFormulaSays) {
   const rasterizer::Image frame = random_frame(64, 48, 99);
   rasterizer::Context ctx(2);
   const rasterizer::Image out = color_correct(ctx, frame, luts);
+  const test::Lattice night_lattice = test::lut_lattice(night), archival_lattice = test::lut_lattice(archival);
   int near_half = 0, worst = 0;
   for (size_t p = 0; p < size_t(frame.width) * frame.height; ++p) {
     const uint8_t* in = &frame.rgba[4 * p];
-    const glm::dvec3 want = 0.25 * glm::dvec3(in[0], in[1], in[2]) / 255.0 + 0.25 * lookup_reference(night, in) +
-                            0.5 * lookup_reference(archival, in);
+    const glm::dvec3 want = 0.25 * glm::dvec3(in[0], in[1], in[2]) / 255.0 + 0.25 * lookup_reference(night_lattice, in) +
+                            0.5 * lookup_reference(archival_lattice, in);
     for (int c = 0; c < 3; ++c) {
       const double scaled = std::clamp(want[c], 0.0, 1.0) * 255.0;
       const int d = std::abs(int(out.rgba[4 * p + c]) - int(std::lround(scaled)));

@@ -37,10 +37,8 @@ rasterizer::Image bright_frame(int width, int height, uint32_t seed) {
   return image;
 }
 
-glm::dvec3 lookup(const Lut& lut, glm::dvec3 color) {
-  test::Lattice l{kLutSize, std::vector<glm::vec3>(lut.entries.size())};
-  for (size_t i = 0; i < lut.entries.size(); ++i) l.values[i] = glm::vec3(lut.entries[i][0], lut.entries[i][1], lut.entries[i][2]);
-  return test::trilinear(l, color) / 255.0;  // locate() clamps to the lattice, as the volume's sampler
+glm::dvec3 lookup(const test::Lattice& lut, glm::dvec3 color) {
+  return test::trilinear(lut, color) / 255.0;  // locate() clamps to the lattice, as the volume's sampler
 }
 
 TEST(EnginePost, MatchesADoubleReferenceOfTheUnroundedSumWithinOneStep) {
@@ -52,6 +50,7 @@ TEST(EnginePost, MatchesADoubleReferenceOfTheUnroundedSumWithinOneStep) {
   ASSERT_TRUE(bloom.blur(ctx, frame, 1.5f));
   const rasterizer::Image out = color_correct(ctx, bloom, luts);
 
+  const test::Lattice night_lattice = test::lut_lattice(night), warm_lattice = test::lut_lattice(warm);
   const test::Plane f = test::plane_of(frame), b = test::plane_of(bloom.small_image());
   const int W = frame.width, H = frame.height, w = b.width, h = b.height;
   const double ax = double(w - 1) / (W - 1), ay = (h - 1 + 0.5) / (H - 1);  // texels (0, -0.5) to (w-1, h-1)
@@ -59,7 +58,7 @@ TEST(EnginePost, MatchesADoubleReferenceOfTheUnroundedSumWithinOneStep) {
   for (int y = 0; y < H; ++y)
     for (int x = 0; x < W; ++x) {
       const glm::dvec3 sum = f.at(x, y) + b.sample((0.5 + x * ax) / w, (y * ay) / h);
-      const glm::dvec3 expected = sum * 0.2 + lookup(night, sum) * 0.45 + lookup(warm, sum) * 0.35;
+      const glm::dvec3 expected = sum * 0.2 + lookup(night_lattice, sum) * 0.45 + lookup(warm_lattice, sum) * 0.35;
       above_one += sum.x > 1.0 || sum.y > 1.0 || sum.z > 1.0;
       for (int c = 0; c < 3; ++c) {
         const int e = int(std::lround(std::clamp(expected[c], 0.0, 1.0) * 255.0));

@@ -3,6 +3,8 @@
 // function on a lattice, as .cube or as CLF with an interpolation attribute), and the trilinear and
 // tetrahedral interpolation of such a lattice in double, written from their definitions.
 
+#include "luxel/postfx/lut.hpp"
+
 #include <glm/vec3.hpp>
 
 #include <algorithm>
@@ -28,6 +30,13 @@ struct Lattice {
   std::vector<glm::vec3> values;  ///< index r + n g + n^2 b
   glm::dvec3 at(int r, int g, int b) const { return glm::dvec3(values[size_t((b * n + g) * n + r)]); }
 };
+
+/// The engine's LUT (its 8-bit entries, red fastest) as a lattice.
+inline Lattice lut_lattice(const Lut& lut) {
+  Lattice l{kLutSize, std::vector<glm::vec3>(lut.entries.size())};
+  for (size_t i = 0; i < lut.entries.size(); ++i) l.values[i] = glm::vec3(lut.entries[i][0], lut.entries[i][1], lut.entries[i][2]);
+  return l;
+}
 
 inline Lattice analytic_lattice(int n) {
   Lattice l{n, std::vector<glm::vec3>(size_t(n) * n * n)};

@@ -43,14 +43,8 @@ inline void for_each_engine_post_combo(F&& f) {
   }(std::make_index_sequence<std::size(kEnginePostCombos)>());
 }
 
-/// How the bloom texture is read: bilinear, no mips, clamped.
-inline rasterizer::Sampler engine_post_bloom_sampler() {
-  rasterizer::Sampler s;
-  s.min = s.mag = rasterizer::Filter::Linear;
-  s.mip = rasterizer::MipFilter::None;
-  s.u = s.v = s.w = rasterizer::Address::Clamp;
-  return s;
-}
+/// How the bloom texture is read: bilinear, no mips, clamped (the LUTs' state, one axis less).
+inline rasterizer::Sampler engine_post_bloom_sampler() { return color_correction_lut_sampler(); }
 
 struct EnginePostParams {
   Sampler2D frame{0, nullptr, color_correction_frame_sampler()};  ///< _rt_FullFrameFB, sRGB read off
