@@ -131,8 +131,9 @@
 
 namespace luxel::frame {
 
-/// How a model's ambient cube is read from the irradiance volume at its centroid.
-enum class AmbientSampling : uint8_t {
+/// How a model's ambient cube is read from the irradiance volume at its centroid. (An int: CLI11
+/// prints a uint8_t enum's values as characters in its help and errors.)
+enum class AmbientSampling : int {
   nearest,    ///< the nearest sample's cube (a model's light changes in steps as it moves)
   trilinear,  ///< the eight samples around the centroid, blended trilinearly per cube side
 };
