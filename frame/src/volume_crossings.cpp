@@ -2,7 +2,7 @@
 
 #include "volume_crossings.hpp"
 
-#include <glm/vector_relational.hpp>
+#include "luxel/scenes/scene.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -14,10 +14,6 @@ namespace {
 
 double tick_time(int64_t tick) { return double(tick) / VolumeCrossings::kTicksPerSecond; }
 
-bool holds(const Box& box, glm::vec3 p) {
-  return glm::all(glm::greaterThanEqual(p, box.min)) && glm::all(glm::lessThanEqual(p, box.max));
-}
-
 }  // namespace
 
 VolumeCrossings::VolumeCrossings(std::vector<Box> volumes, EyePath eye)
@@ -27,7 +23,7 @@ void VolumeCrossings::replay_to(int64_t last) {
   for (; next_tick_ <= last; ++next_tick_) {
     const glm::vec3 eye = eye_.at(static_cast<float>(tick_time(next_tick_)));
     for (size_t v = 0; v < volumes_.size(); ++v) {
-      const bool inside = holds(volumes_[v], eye);
+      const bool inside = scenes::box_holds(volumes_[v].min, volumes_[v].max, eye);
       if (inside != inside_[v]) crossings_[v].push_back(tick_time(next_tick_));
       inside_[v] = inside;
     }

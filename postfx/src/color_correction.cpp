@@ -92,14 +92,13 @@ rasterizer::Image draw_pass(rasterizer::Context& ctx, int width, int height, siz
 
 rasterizer::Image color_correct(rasterizer::Context& ctx, const rasterizer::Image& frame,
                                 std::span<const WeightedLut> luts, const ShaderTally& tally) {
-  checked_weights(luts);
+  src::ColorCorrectionParams params;
+  const std::vector<rasterizer::Texture> volumes = set_lookups(luts, params);
   check_frame(frame);
   rasterizer::Texture frame_texture =
       rasterizer::Texture::create_2d(frame.width, frame.height, rasterizer::TextureFormat::RGBA8, 1);
   frame_texture.upload(0, frame.rgba);
-  src::ColorCorrectionParams params;
   params.frame.texture = &frame_texture;
-  const std::vector<rasterizer::Texture> volumes = set_lookups(luts, params);
   return draw_pass<src::ColorCorrectionCombo, src::ColorCorrectionPixelShader>(
       ctx, frame.width, frame.height, luts.size(), screen_rectangle(frame.width, frame.height, whole_texture(frame.width, frame.height)),
       params, tally, [](auto f) { src::for_each_color_correction_combo(f); },

@@ -124,10 +124,14 @@ void check_color_correction(const Scene& scene, const ColorCorrection& c, size_t
 
 }  // namespace
 
+bool box_holds(glm::vec3 min, glm::vec3 max, glm::vec3 p) {
+  return glm::all(glm::greaterThanEqual(p, min)) && glm::all(glm::lessThanEqual(p, max));
+}
+
 const Exposure& exposure_at(const Scene& scene, glm::vec3 p) {
   for (size_t i = scene.exposure_zones.size(); i-- > 0;) {
     const ExposureZone& z = scene.exposure_zones[i];
-    if (glm::all(glm::greaterThanEqual(p, z.min)) && glm::all(glm::lessThanEqual(p, z.max))) return z.exposure;
+    if (box_holds(z.min, z.max, p)) return z.exposure;
   }
   return scene.exposure;
 }

@@ -349,6 +349,10 @@ struct Scene {
   std::optional<Lightmaps> lightmaps;
 };
 
+/// Whether the box from `min` to `max` holds `p`, bounds inclusive (exposure zones, color-correction
+/// volumes).
+bool box_holds(glm::vec3 min, glm::vec3 max, glm::vec3 p);
+
 /// The exposure controls at `position`: the last of Scene::exposure_zones whose box holds it
 /// (bounds inclusive), else Scene::exposure.
 const Exposure& exposure_at(const Scene& scene, glm::vec3 position);
