@@ -10,6 +10,7 @@
 // bake's gather, which bake/ keeps internal).
 
 #include "report/environment_image.hpp"
+#include "report/lane_timing.hpp"
 #include "report/sections.hpp"
 
 #include "luxel/scenes/image_io.hpp"
@@ -21,8 +22,6 @@
 #include "luxel/shading/source/spherical_harmonics.hpp"
 
 #include <algorithm>
-#include <array>
-#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -35,7 +34,6 @@ namespace {
 
 namespace src = shading::source;
 using shading::float3;
-namespace simd = rasterizer::simd;
 
 struct Environment {
   std::string scene, resolution, label, reference;
@@ -63,53 +61,6 @@ std::string number(double v, const char* format) {
   return text;
 }
 
-// ---- Timing ------------------------------------------------------------------------------------
-
-/// Median ns per pixel of `eval` (a generic lambda: float3<L> normal -> float3<L>) on both lanes,
-/// over 4096 normals (structure of arrays: they stay in L1) evaluated again and again; each result
-/// is stored and read, as catalog.cpp's timing does, so that nothing is optimised away.
-template <class Eval>
-std::pair<double, double> time_lanes(const Eval& eval, int repeats) {
-  constexpr int kNormals = 4096, kSimdPasses = 256, kScalarPasses = 32;
-  static const std::array<std::vector<float>, 3> soa = [] {
-    std::array<std::vector<float>, 3> r;
-    for (const glm::dvec3& n : src::fibonacci_normals(kNormals))
-      for (int c = 0; c < 3; ++c) r[size_t(c)].push_back(float(n[c]));
-    return r;
-  }();
-  using clock = std::chrono::steady_clock;
-  volatile float sink = 0.0f;
-  std::vector<double> simd_ns, scalar_ns;
-  for (int r = 0; r < std::max(repeats, 1); ++r) {
-    const auto t0 = clock::now();
-    for (int pass = 0; pass < kSimdPasses; ++pass) {
-      for (int p = 0; p < kNormals; p += simd::kLanes) {
-        const float3<simd::Float> n(simd::Float::load_unaligned(soa[0].data() + p), simd::Float::load_unaligned(soa[1].data() + p),
-                                    simd::Float::load_unaligned(soa[2].data() + p));
-        const float3<simd::Float> c = eval(n);
-        alignas(64) float lanes[simd::kLanes];
-        (c.x + c.y + c.z).store_aligned(lanes);
-        sink = sink + lanes[0];
-      }
-    }
-    const auto t1 = clock::now();
-    for (int pass = 0; pass < kScalarPasses; ++pass) {
-      for (int p = 0; p < kNormals; ++p) {
-        const float3<float> c = eval(float3<float>(soa[0][size_t(p)], soa[1][size_t(p)], soa[2][size_t(p)]));
-        sink = sink + c.x + c.y + c.z;
-      }
-    }
-    const auto t2 = clock::now();
-    simd_ns.push_back(std::chrono::duration<double, std::nano>(t1 - t0).count() / (double(kNormals) * kSimdPasses));
-    scalar_ns.push_back(std::chrono::duration<double, std::nano>(t2 - t1).count() / (double(kNormals) * kScalarPasses));
-  }
-  auto median = [](std::vector<double>& v) {
-    std::nth_element(v.begin(), v.begin() + std::ptrdiff_t(v.size() / 2), v.end());
-    return v[v.size() / 2];
-  };
-  return {median(simd_ns), median(scalar_ns)};
-}
-
 /// The three variants with their counted ps_3_0 costs and their times. The times do not depend on
 /// the constants' values, so one made-up set serves every environment.
 std::vector<Variant> variants(int repeats) {
@@ -127,9 +78,9 @@ std::vector<Variant> variants(int repeats) {
       {"ambient cube (ps_2_0+)", [](const float3<float>& n, const Fits& x) { return src::ambient_light(n, x.cube); }, measure(cube)},
       {"linear SH4 (ps_2_0+)", [](const float3<float>& n, const Fits& x) { return src::sh4_ambient_light(n, x.sh4); }, measure(sh4)},
       {"SH9 (ps_3_0)", [](const float3<float>& n, const Fits& x) { return src::sh9_ambient_light(n, x.sh9); }, measure(sh9)}};
-  std::tie(v[0].simd_ns, v[0].scalar_ns) = time_lanes(cube, repeats);
-  std::tie(v[1].simd_ns, v[1].scalar_ns) = time_lanes(sh4, repeats);
-  std::tie(v[2].simd_ns, v[2].scalar_ns) = time_lanes(sh9, repeats);
+  std::tie(v[0].simd_ns, v[0].scalar_ns) = time_normal_function(cube, repeats);
+  std::tie(v[1].simd_ns, v[1].scalar_ns) = time_normal_function(sh4, repeats);
+  std::tie(v[2].simd_ns, v[2].scalar_ns) = time_normal_function(sh9, repeats);
   return v;
 }
 
@@ -292,7 +243,8 @@ SectionResult run_lighting_bases(const ReportSettings& s) {
                       "linear tone map that puts the brightest true E/pi at 1.0 and sRGB encoding. Frame of the probes: +y up, "
                       "+z at the image's centre, +x to its right (environment_image.hpp).");
   out.notes.push_back("Slots and constant registers: counted on ps_3_0 (Counted lane). ns/px: median of " +
-                      std::to_string(s.timing_repeats) + " runs over 4096 normals again and again, the ambient term alone.");
+                      std::to_string(s.timing_repeats) + " runs over " + std::to_string(kTimingNormals) +
+                      " normals again and again, the ambient term alone.");
   out.notes.push_back("Not yet: the courtyard's own ambient (radiance around a point of builtin:courtyard needs the bake's gather).");
   if (!details.empty()) out.details = details;
   return out;
