@@ -225,8 +225,8 @@ inline float3<L> sh9_ambient_light(const float3<L>& n, const Sh9Ambient& sh) {
 // ---- Linear SH (bands 0-1) -----------------------------------------------------------------------
 
 /// Four float3 constant registers: E(n)/π truncated to bands 0 and 1, k0 + k1 x + k2 y + k3 z. Four
-/// RGB coefficients, what the seed says Max Payne 2 stored per light sample (a linear SH), beside
-/// the cube's six and SH9's nine.
+/// RGB coefficients, the linear SH issue #16 says Max Payne 2 stored (no source for that is at
+/// hand here), beside the cube's six and SH9's nine.
 struct Sh4Ambient {
   std::array<glm::vec3, 4> k{};
 };
