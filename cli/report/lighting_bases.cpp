@@ -47,7 +47,8 @@ struct Fits {
   src::Sh9Ambient sh9;
 };
 
-/// A basis: its name, its shader function (a generic lambda over the lane), its counted cost.
+/// A basis: its name, its shader code on the float lane (what the errors are measured on), its
+/// counted cost and its times.
 struct Variant {
   std::string name;
   std::function<float3<float>(const float3<float>&, const Fits&)> scalar;
@@ -103,7 +104,9 @@ std::vector<Environment> published_environments(const ReportSettings& s) {
   std::vector<Environment> r;
   for (const src::PublishedProbe& p : src::kRamamoorthi2001Probes) {
     const src::Sh9 sh = src::physical_radiance(src::published_radiance(p));
-    r.push_back({std::string(p.name) + " (R&H 2001 SH9, lifted)", "analytic", std::string(p.name) + " R&H",
+    r.push_back({std::string(p.name) + " (R&H 2001 SH9, lifted)",
+                 "analytic, " + std::to_string(s.grid_rows) + "x" + std::to_string(2 * s.grid_rows) + " grid",
+                 std::string(p.name) + " R&H",
                  grid_reference(s.grid_rows, s.normals),
                  src::sample_sphere_grid([&](const glm::dvec3& d) { return src::evaluate(sh, d); }, s.grid_rows)});
   }
