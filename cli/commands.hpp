@@ -17,5 +17,6 @@ Runner add_export_command(CLI::App& app);
 Runner add_info_command(CLI::App& app);
 Runner add_bake_command(CLI::App& app);
 Runner add_grade_command(CLI::App& app);
+Runner add_report_command(CLI::App& app);
 
 }  // namespace luxel::cli

@@ -1,5 +1,5 @@
 // luxel: render stills, compare shader models, count shader costs, export and describe scenes, bake lightmaps,
-// color-correct images (see `luxel --help`).
+// color-correct images, report speed against error (see `luxel --help`).
 
 #include "commands.hpp"
 
@@ -16,7 +16,8 @@ int main(int argc, char** argv) {
   std::vector<luxel::cli::Runner> runners = {luxel::cli::add_render_command(app), luxel::cli::add_compare_command(app),
                                             luxel::cli::add_cost_command(app),
                                             luxel::cli::add_export_command(app), luxel::cli::add_info_command(app),
-                                            luxel::cli::add_bake_command(app), luxel::cli::add_grade_command(app)};
+                                            luxel::cli::add_bake_command(app), luxel::cli::add_grade_command(app),
+                                            luxel::cli::add_report_command(app)};
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {

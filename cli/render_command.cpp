@@ -76,10 +76,10 @@ bool write_exposure_report(const std::string& folder, const std::vector<Sequence
   plot.title = "Auto exposure over the sequence";
   plot.x_label = "time (s)";
   plot.y_label = "tone-map scale";
-  plot.series = {{"scale drawn with", {255, 255, 255}, {}},
-                 {"goal (10-frame history)", {80, 200, 255}, {}},
-                 {"target: occlusion histogram", {255, 150, 40}, {}},
-                 {"target: exact histogram", {90, 220, 90}, {}}};
+  plot.series = {{"scale drawn with", {255, 255, 255}, {}, PlotStyle::lines, {}},
+                 {"goal (10-frame history)", {80, 200, 255}, {}, PlotStyle::lines, {}},
+                 {"target: occlusion histogram", {255, 150, 40}, {}, PlotStyle::lines, {}},
+                 {"target: exact histogram", {90, 220, 90}, {}, PlotStyle::lines, {}}};
   for (const SequenceFrame& f : frames) {
     plot.series[0].points.emplace_back(f.time, f.drawn);
     if (f.goal) plot.series[1].points.emplace_back(f.time, *f.goal);

@@ -78,10 +78,12 @@ void write_pixels(int width, int height, OIIO::TypeDesc type, const void* pixels
   if (width <= 0 || height <= 0) fail(path, "cannot write an empty image");
   auto out = OIIO::ImageOutput::create(path);
   if (!out) fail(path, "cannot write this file type (" + OIIO::geterror() + ")");
-  OIIO::ImageSpec spec(width, height, 4, type);
+  // Formats without alpha (Radiance .hdr, JPEG) take the rgb of each rgba pixel.
+  const int channels = out->supports("alpha") ? 4 : 3;
+  OIIO::ImageSpec spec(width, height, channels, type);
   spec.attribute("oiio:UnassociatedAlpha", 1);
   if (!out->open(path, spec)) fail(path, out->geterror());
-  if (!out->write_image(type, pixels)) fail(path, out->geterror());
+  if (!out->write_image(type, pixels, OIIO::stride_t(4 * type.size()))) fail(path, out->geterror());
   if (!out->close()) fail(path, out->geterror());
 }
 

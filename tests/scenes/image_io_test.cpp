@@ -85,6 +85,20 @@ TEST(ImageIo, FloatExrRoundTripIsExactAndStaysFloat) {
   EXPECT_EQ(back.rgba32f, hdr.rgba32f);
 }
 
+// Radiance .hdr holds rgb without alpha: the rgb is written (RGBE: 8-bit mantissas sharing an
+// exponent, exact for these values) and read back with alpha 1.
+TEST(ImageIo, FloatHdrKeepsRgbAndDropsAlpha) {
+  TempDir dir;
+  PixelImage hdr;
+  hdr.width = 2, hdr.height = 1;
+  hdr.rgba32f = {0.5f, 2.0f, 96.0f, 0.25f, 1.0f, 0.75f, 0.125f, 0.0f};
+  const std::string path = dir.file("probe.hdr");
+  write_image(hdr, path);
+  const PixelImage back = read_image(path);
+  ASSERT_TRUE(back.is_hdr());
+  EXPECT_EQ(back.rgba32f, (std::vector<float>{0.5f, 2.0f, 96.0f, 1.0f, 1.0f, 0.75f, 0.125f, 1.0f}));
+}
+
 // encode_png and read_image(bytes) are the glTF path for embedded textures: exact, and named.
 TEST(ImageIo, PngInMemoryRoundTripIsExact) {
   const PixelImage img = test_image();

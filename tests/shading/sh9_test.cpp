@@ -1,21 +1,23 @@
 // SH9 ambient (spherical_harmonics.hpp) against ground-truth irradiance, beside the ambient cube.
 //
-// Ground truth: E(n) = ∫ L(ω) max(0, n·ω) dω by quadrature in double (equal-area grid, 192 x 384
-// cells; its accuracy is checked against a closed form and against a grid twice as fine) for
+// Ground truth: E(n) = ∫ L(ω) max(0, n·ω) dω by quadrature in double (sphere_quadrature.hpp on an
+// equal-area grid, 192 x 384 cells; checked against closed forms in sphere_quadrature_test.cpp,
+// and here against a grid twice as fine) for
 // radiance environments made here: a sky over ground, the same with a small bright sun, strong
 // directional colours, and the three light probes of Ramamoorthi & Hanrahan 2001 rebuilt from
 // their published coefficients (band-limited, so SH9 must match them to quadrature accuracy: the
 // sharp test of the cosine-lobe constants). Each environment is fitted the two ways — the cube
 // as VRAD fills it (SOURCE_FACTS §2.2, dense-ray limit), SH9 by projection and the cosine
 // convolution — and both are evaluated with the shader's own float code over 1,000 normals.
-// Errors: relative to E per channel (max, RMS), and in 8-bit steps after FinalOutput's linear
-// tone-map scale (brightest true value -> 1.0) and sRGB encoding (SOURCE_FACTS §6.3).
+// Errors (irradiance_error.hpp): relative to E per channel (max, RMS), and in 8-bit steps after
+// FinalOutput's linear tone-map scale (brightest true value -> 1.0) and sRGB encoding.
 // Also: the basis and constants against the paper's, the cube read as SH9, and the cost of both
 // in DX9 slots and registers (and why the combo is ps_3_0 only).
 
-#include "ramamoorthi2001_probes.hpp"
-
 #include "luxel/shading/cost.hpp"
+#include "luxel/shading/source/irradiance_error.hpp"
+#include "luxel/shading/source/ramamoorthi2001.hpp"
+#include "luxel/shading/source/sphere_quadrature.hpp"
 #include "luxel/shading/source/spherical_harmonics.hpp"
 #include "luxel/shading/source/vertexlit_generic.hpp"
 
@@ -32,44 +34,19 @@
 namespace luxel::shading::source {
 namespace {
 
-using testing::kRamamoorthi2001Probes;
 using Radiance = std::function<glm::dvec3(const glm::dvec3&)>;
 
 constexpr double kPi = std::numbers::pi;
 constexpr int kGridRows = 192;
 
-/// Unit normals spread evenly over the sphere (Fibonacci lattice).
-std::vector<glm::dvec3> sphere_normals(int count) {
-  std::vector<glm::dvec3> r;
-  const double golden = kPi * (3.0 - std::sqrt(5.0));
-  for (int i = 0; i < count; ++i) {
-    const double z = 1.0 - (i + 0.5) * 2.0 / count;
-    const double s = std::sqrt(1.0 - z * z);
-    r.emplace_back(s * std::cos(golden * i), s * std::sin(golden * i), z);
-  }
-  return r;
-}
-
 /// An environment sampled once on the quadrature grid; irradiance(n) integrates it.
 class GroundTruth {
  public:
-  GroundTruth(const Radiance& radiance, int rows) {
-    for_each_sphere_cell(rows, [&](const glm::dvec3& d, double d_omega) {
-      dirs_.push_back(d);
-      weighted_.push_back(radiance(d) * d_omega);
-    });
-  }
-  glm::dvec3 irradiance(const glm::dvec3& n) const {
-    glm::dvec3 e(0.0);
-    for (size_t i = 0; i < dirs_.size(); ++i) {
-      const double c = glm::dot(n, dirs_[i]);
-      if (c > 0.0) e += weighted_[i] * c;
-    }
-    return e;
-  }
+  GroundTruth(const Radiance& radiance, int rows) : samples_(sample_sphere_grid(radiance, rows)) {}
+  glm::dvec3 irradiance(const glm::dvec3& n) const { return source::irradiance(samples_, n); }
 
  private:
-  std::vector<glm::dvec3> dirs_, weighted_;
+  SampledRadiance samples_;
 };
 
 // ---- Environments ------------------------------------------------------------------------------
@@ -100,24 +77,6 @@ glm::dvec3 coloured_lights(const glm::dvec3& d) {
          glm::dvec3(0.03);
 }
 
-Sh9 published_radiance(const testing::PublishedProbe& probe) {
-  Sh9 sh;
-  for (size_t i = 0; i < 9; ++i) sh.c[i] = probe.radiance[i];
-  return sh;
-}
-
-/// A published probe as an environment: its SH9 radiance dips below 0 in places (ringing), and
-/// then so does its irradiance for a few normals, where a relative error means nothing. Lifted by
-/// a constant (band 0: still band-limited) until its least radiance is a tenth of its mean.
-Sh9 physical_radiance(const Sh9& sh) {
-  glm::dvec3 least(1e30);
-  for_each_sphere_cell(64, [&](const glm::dvec3& d, double) { least = glm::min(least, evaluate(sh, d)); });
-  const glm::dvec3 mean = sh.c[0] * Sh9Norm::y00;  // L00 = ∫ L Y00 = Y00 · 4π · mean, Y00² = 1/(4π)
-  Sh9 lifted = sh;
-  lifted.c[0] += (glm::max(-least, glm::dvec3(0.0)) + mean * 0.1) / Sh9Norm::y00;
-  return lifted;
-}
-
 /// What SH9 must achieve on an environment: bounds on max and RMS |ΔE|/E, max |ΔE| / peak E, and
 /// 8-bit steps. Smooth lighting: within a few percent (R&H 2001). Band-limited (the published
 /// probes): exact but for float32 and the quadrature. A small sun or tight colour lobes are not
@@ -138,7 +97,7 @@ std::vector<Environment> environments() {
   std::vector<Environment> r = {{"sky over ground", sky_over_ground, {0.03, 0.005, 0.01, 2}},
                                 {"sky with sun", sky_with_sun, {0.75, 0.25, 0.08, 25}},
                                 {"coloured lights", coloured_lights, {0.40, 0.05, 0.02, 10}}};
-  for (const testing::PublishedProbe& p : kRamamoorthi2001Probes) {
+  for (const PublishedProbe& p : kRamamoorthi2001Probes) {
     const Sh9 sh = physical_radiance(published_radiance(p));
     r.push_back({std::string(p.name) + " (R&H 2001 SH9)", [sh](const glm::dvec3& d) { return evaluate(sh, d); },
                  {1e-3, 1e-4, 1e-4, 1}});
@@ -148,35 +107,12 @@ std::vector<Environment> environments() {
 
 // ---- Error measurement ---------------------------------------------------------------------------
 
-struct Error {
-  double max_relative = 0.0;  ///< max over normals and channels of |ΔE| / E
-  double rms_relative = 0.0;
-  double max_of_peak = 0.0;   ///< max |ΔE| / the brightest E
-  int max_steps = 0;          ///< 8-bit sRGB steps after the tone-map scale
-};
-
-/// Error of `approx` (E/π from a shader, per unit normal) against the ground truth `truth` (E).
+/// The error of `approx` (E/π from a shader, per unit normal) against the ground truth `truth` (E).
 template <class Approx>
-Error measure_error(const std::vector<glm::dvec3>& normals, const std::vector<glm::dvec3>& truth, Approx&& approx) {
-  double brightest = 0.0;
-  for (const glm::dvec3& e : truth) brightest = std::max({brightest, e.x, e.y, e.z});
-  const double tone_map = kPi / brightest;  // FinalOutput's linear scale: brightest E/π -> 1.0
-  Error err;
-  double sum_sq = 0.0;
-  for (size_t i = 0; i < normals.size(); ++i) {
-    const glm::dvec3 a = approx(normals[i]) * kPi;
-    for (int c = 0; c < 3; ++c) {
-      const double rel = std::abs(a[c] - truth[i][c]) / truth[i][c];
-      err.max_relative = std::max(err.max_relative, rel);
-      err.max_of_peak = std::max(err.max_of_peak, std::abs(a[c] - truth[i][c]) / brightest);
-      sum_sq += rel * rel;
-      const int steps = std::abs(int(srgb8_reference(a[c] / kPi * tone_map)) -
-                                 int(srgb8_reference(truth[i][c] / kPi * tone_map)));
-      err.max_steps = std::max(err.max_steps, steps);
-    }
-  }
-  err.rms_relative = std::sqrt(sum_sq / (3.0 * static_cast<double>(normals.size())));
-  return err;
+IrradianceError measure_error(const std::vector<glm::dvec3>& normals, const std::vector<glm::dvec3>& truth, Approx&& approx) {
+  std::vector<glm::dvec3> values;
+  for (const glm::dvec3& n : normals) values.push_back(approx(n));
+  return irradiance_error(truth, values);
 }
 
 float3<float> lane(const glm::dvec3& n) {
@@ -185,7 +121,7 @@ float3<float> lane(const glm::dvec3& n) {
 glm::dvec3 unlane(const float3<float>& v) { return glm::dvec3(v.x, v.y, v.z); }
 
 struct Comparison {
-  Error cube, sh9, sh9_of_cube;
+  IrradianceError cube, sh9, sh9_of_cube;
 };
 
 Comparison compare(const Environment& env, const std::vector<glm::dvec3>& normals) {
@@ -202,7 +138,7 @@ Comparison compare(const Environment& env, const std::vector<glm::dvec3>& normal
   r.sh9 = measure_error(normals, truth, [&](const glm::dvec3& n) { return unlane(sh9_ambient_light<float>(lane(n), sh9)); });
   r.sh9_of_cube = measure_error(normals, truth,
                                 [&](const glm::dvec3& n) { return unlane(sh9_ambient_light<float>(lane(n), sh9_of_cube)); });
-  auto show = [](const char* what, const Error& e) {
+  auto show = [](const char* what, const IrradianceError& e) {
     std::printf("  %-16s max %7.3f%%  rms %7.3f%%  max/peak %7.3f%%  %3d steps\n", what, 100 * e.max_relative,
                 100 * e.rms_relative, 100 * e.max_of_peak, e.max_steps);
   };
@@ -235,8 +171,7 @@ TEST(Sh9, ShaderPolynomialHasThePapersIrradianceConstants) {
   // The paper computed c1..c5 from its 6-digit normalisations (0.315392 · 3 · π/4 = 0.743125 where
   // the exact value is 0.7431238), so they can differ from ours by a unit of the 6th digit.
   constexpr double kTol = 2e-6;
-  using namespace testing;
-  EXPECT_NEAR(times_pi(registers_for(0).k[0]), kPaperC4, kTol);        // c4 L00
+    EXPECT_NEAR(times_pi(registers_for(0).k[0]), kPaperC4, kTol);        // c4 L00
   EXPECT_NEAR(times_pi(registers_for(3).k[1]), 2.0 * kPaperC2, kTol);  // 2 c2 L11 x
   EXPECT_NEAR(times_pi(registers_for(1).k[2]), 2.0 * kPaperC2, kTol);  // 2 c2 L1-1 y
   EXPECT_NEAR(times_pi(registers_for(2).k[3]), 2.0 * kPaperC2, kTol);  // 2 c2 L10 z
@@ -249,7 +184,7 @@ TEST(Sh9, ShaderPolynomialHasThePapersIrradianceConstants) {
 }
 
 TEST(Sh9, ProjectionRecoversThePublishedCoefficients) {
-  for (const testing::PublishedProbe& p : kRamamoorthi2001Probes) {
+  for (const PublishedProbe& p : kRamamoorthi2001Probes) {
     const Sh9 published = published_radiance(p);
     const Sh9 projected = project_sh9([&](const glm::dvec3& d) { return evaluate(published, d); }, kGridRows);
     for (size_t i = 0; i < 9; ++i)
@@ -259,22 +194,11 @@ TEST(Sh9, ProjectionRecoversThePublishedCoefficients) {
 
 // ---- The ground truth itself ---------------------------------------------------------------------
 
-TEST(Sh9, GroundTruthMatchesTheClosedFormOfAUniformUpperHemisphere) {
-  // A uniform sky of radiance 1 over z > 0 and nothing below: E(n) = π (1 + n_z) / 2.
-  const GroundTruth sky([](const glm::dvec3& d) { return glm::dvec3(d.z > 0.0 ? 1.0 : 0.0); }, kGridRows);
-  double worst = 0.0;
-  for (const glm::dvec3& n : sphere_normals(200)) {
-    const double exact = kPi * (1.0 + n.z) / 2.0;
-    worst = std::max(worst, std::abs(sky.irradiance(n).x - exact) / std::max(exact, 0.1));
-  }
-  EXPECT_LT(worst, 5e-4);
-}
-
 TEST(Sh9, GroundTruthIsConvergedOnItsGrid) {
   // Halving the cell size changes E by less than 0.05% anywhere, for the hardest environment (the sun).
   const GroundTruth coarse(sky_with_sun, kGridRows), fine(sky_with_sun, 2 * kGridRows);
   double worst = 0.0;
-  for (const glm::dvec3& n : sphere_normals(64)) {
+  for (const glm::dvec3& n : fibonacci_normals(64)) {
     const glm::dvec3 a = coarse.irradiance(n), b = fine.irradiance(n);
     for (int c = 0; c < 3; ++c) worst = std::max(worst, std::abs(a[c] - b[c]) / b[c]);
   }
@@ -284,7 +208,7 @@ TEST(Sh9, GroundTruthIsConvergedOnItsGrid) {
 // ---- SH9 and the ambient cube against the ground truth ---------------------------------------------
 
 TEST(Sh9, ErrorAgainstGroundTruthIrradiance) {
-  const std::vector<glm::dvec3> normals = sphere_normals(1000);
+  const std::vector<glm::dvec3> normals = fibonacci_normals(1000);
   for (const Environment& env : environments()) {
     const Comparison r = compare(env, normals);
     SCOPED_TRACE(env.name);
@@ -337,7 +261,7 @@ TEST(Sh9, CubeWithEqualOppositeSidesIsReproducedExactly) {
   cube.color = {glm::vec3(1.0f, 0.5f, 0.2f), glm::vec3(1.0f, 0.5f, 0.2f), glm::vec3(0.1f, 0.9f, 0.3f),
                 glm::vec3(0.1f, 0.9f, 0.3f), glm::vec3(2.0f, 0.0f, 0.7f), glm::vec3(2.0f, 0.0f, 0.7f)};
   const Sh9Ambient sh9 = sh9_ambient_constants(sh9_from_ambient_cube(cube));
-  for (const glm::dvec3& n : sphere_normals(500)) {
+  for (const glm::dvec3& n : fibonacci_normals(500)) {
     const glm::dvec3 a = unlane(sh9_ambient_light<float>(lane(n), sh9)), b = ambient_light_reference(n, cube);
     for (int c = 0; c < 3; ++c) EXPECT_NEAR(a[c], b[c], 2e-6);
   }

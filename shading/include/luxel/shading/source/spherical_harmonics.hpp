@@ -13,10 +13,11 @@
 // surface's exitance. The SH9 path produces the same quantity, E(n)/π, so it is a drop-in for the
 // cube (VertexLitCombo::sh9_ambient) and the two can be compared directly.
 //
-// CPU side (double): the basis, projection of a radiance function by an equal-area quadrature,
-// the cosine convolution, an ambient cube's SH9 (so cube data — VRAD's samples, folded lights —
-// can feed the SH9 combo), and the ambient cube VRAD would compute from the same
-// radiance (§2.2's cosine-weighted average per side), for comparing the two.
+// CPU side (double): the basis, projection of sampled radiance (sphere_quadrature.hpp: a
+// function on an equal-area grid, or an environment image's pixels), the cosine convolution,
+// an ambient cube's SH9 (so cube data — VRAD's samples, folded lights — can feed the SH9 combo),
+// and the ambient cube VRAD would compute from the same radiance (§2.2's cosine-weighted average
+// per side), for comparing the two.
 //
 // Pixel-shader side: the irradiance polynomial the coefficients expand to,
 //   E(n)/π = k0 + k1 x + k2 y + k3 z + k4 xy + k5 yz + k6 z² + k7 xz + k8 (x² − y²),
@@ -28,14 +29,19 @@
 // ps_3_0 has 224 constant registers, so saving two buys nothing; one rgb register per term keeps
 // every step an rgb mad, which is also what the SIMD lanes evaluate without shuffles.
 // Why ps_3_0 only: see VertexLitCombo::valid (a choice; the budget would allow ps_2_b).
+//
+// Linear SH (SH4): the same polynomial cut after band 1, four registers and three mads; the
+// cheapest basis `luxel report speed-error` compares, not a combo of the shaders.
 
 #include "luxel/shading/source/common.hpp"
+#include "luxel/shading/source/sphere_quadrature.hpp"
 
 #include <glm/vec3.hpp>
 
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <concepts>
 #include <numbers>
 
 namespace luxel::shading::source {
@@ -94,58 +100,52 @@ inline Sh9 convolve_cosine(const Sh9& radiance) {
   return e;
 }
 
-// ---- Quadrature and projection ----------------------------------------------------------------
+// ---- Projection (over samples: sphere_quadrature.hpp) ------------------------------------------
 
-/// Calls f(direction, solid angle) for the cells of an equal-area sphere grid: `rows` bands uniform
-/// in z = cos θ (Archimedes: equal z-steps cut equal areas) × 2·rows steps in φ, each cell sampled
-/// at its centre. Every cell has the same solid angle 4π / (2 rows²); a band edge lies on z = 0, so
-/// hemispheres split exactly along cells.
-template <class F>
-inline void for_each_sphere_cell(int rows, F&& f) {
-  const int cols = 2 * rows;
-  const double d_omega = 4.0 * std::numbers::pi / (static_cast<double>(rows) * cols);
-  for (int i = 0; i < rows; ++i) {
-    const double z = 1.0 - (i + 0.5) * 2.0 / rows;
-    const double s = std::sqrt(std::max(0.0, 1.0 - z * z));
-    for (int j = 0; j < cols; ++j) {
-      const double phi = (j + 0.5) * 2.0 * std::numbers::pi / cols;
-      f(glm::dvec3(s * std::cos(phi), s * std::sin(phi), z), d_omega);
-    }
+/// L_lm = ∫ L(ω) Y_lm(ω) dω ≈ Σ L_i Y_lm(ω_i) Δω_i.
+inline Sh9 project_sh9(const SampledRadiance& samples) {
+  Sh9 sh;
+  for (const RadianceSample& s : samples) {
+    const glm::dvec3 v = s.radiance * s.solid_angle;
+    const std::array<double, 9> y = sh9_basis(s.direction);
+    for (size_t i = 0; i < 9; ++i) sh.c[i] += v * y[i];
   }
+  return sh;
 }
 
-/// L_lm = ∫ f(ω) Y_lm(ω) dω of a function over directions (f: unit dvec3 -> dvec3), by the grid.
+/// The same for a function over directions (unit dvec3 -> dvec3), by the equal-area grid.
 template <class Function>
+  requires std::invocable<Function, const glm::dvec3&>
 inline Sh9 project_sh9(Function&& f, int rows = 256) {
-  Sh9 sh;
-  for_each_sphere_cell(rows, [&](const glm::dvec3& d, double d_omega) {
-    const glm::dvec3 v = f(d) * d_omega;
-    const std::array<double, 9> y = sh9_basis(d);
-    for (size_t i = 0; i < 9; ++i) sh.c[i] += v * y[i];
-  });
-  return sh;
+  return project_sh9(sample_sphere_grid(f, rows));
 }
 
 /// The ambient cube VRAD computes at a sample (SOURCE_FACTS §2.2): per side j,
 /// C_j = Σ L_i c_ij / Σ c_ij over ray directions with c_ij = dot(dir_i, axis_j) > 0. VRAD fires 162
-/// rays; here the rays are the grid's cell centres (equal solid angles, so equal weights as in
-/// VRAD's sum), i.e. the dense limit: C_j = E(axis_j) / π, the cosine-weighted mean radiance.
-template <class Radiance>
-inline AmbientCube fit_ambient_cube(Radiance&& radiance, int rows = 256) {
+/// rays; here the rays are the samples, each weighted by its solid angle (equal on the grid, so
+/// equal weights as in VRAD's sum), i.e. the dense limit: C_j = E(axis_j) / π, the
+/// cosine-weighted mean radiance.
+inline AmbientCube fit_ambient_cube(const SampledRadiance& samples) {
   std::array<glm::dvec3, 6> sum{};
   std::array<double, 6> weight{};
-  for_each_sphere_cell(rows, [&](const glm::dvec3& d, double) {
-    const glm::dvec3 l = radiance(d);
+  for (const RadianceSample& s : samples) {
     for (int a = 0; a < 3; ++a) {
-      const size_t side = static_cast<size_t>(2 * a + (d[a] >= 0.0 ? 0 : 1));
-      const double c = std::abs(d[a]);
-      sum[side] += l * c;
+      const size_t side = static_cast<size_t>(2 * a + (s.direction[a] >= 0.0 ? 0 : 1));
+      const double c = std::abs(s.direction[a]) * s.solid_angle;
+      sum[side] += s.radiance * c;
       weight[side] += c;
     }
-  });
+  }
   AmbientCube cube;
   for (size_t j = 0; j < 6; ++j) cube.color[j] = glm::vec3(sum[j] / weight[j]);
   return cube;
+}
+
+/// The same for a function over directions, by the equal-area grid.
+template <class Radiance>
+  requires std::invocable<Radiance, const glm::dvec3&>
+inline AmbientCube fit_ambient_cube(Radiance&& radiance, int rows = 256) {
+  return fit_ambient_cube(sample_sphere_grid(radiance, rows));
 }
 
 /// The irradiance SH9 of an ambient cube, read as what VRAD makes it (§2.2): six irradiance samples,
@@ -220,6 +220,34 @@ inline float3<L> sh9_ambient_light(const float3<L>& n, const Sh9Ambient& sh) {
   return constant<L>(sh.k[0]) + n.x * constant<L>(sh.k[1]) + n.y * constant<L>(sh.k[2]) +
          n.z * constant<L>(sh.k[3]) + cross.x * constant<L>(sh.k[4]) + cross.y * constant<L>(sh.k[5]) +
          n2.z * constant<L>(sh.k[6]) + cross.z * constant<L>(sh.k[7]) + x2_minus_y2 * constant<L>(sh.k[8]);
+}
+
+// ---- Linear SH (bands 0-1) -----------------------------------------------------------------------
+
+/// Four float3 constant registers: E(n)/π truncated to bands 0 and 1, k0 + k1 x + k2 y + k3 z. Four
+/// RGB coefficients, the linear SH issue #16 says Max Payne 2 stored (no source for that is at
+/// hand here), beside the cube's six and SH9's nine.
+struct Sh4Ambient {
+  std::array<glm::vec3, 4> k{};
+};
+
+/// R&H's irradiance formula truncated to band 1: E(n) = Â_0 L00 Y00 + Â_1 Σ L1m Y1m(n), from the
+/// irradiance coefficients E_lm = Â_l L_lm (bands 0-1 of them; band 2 is dropped, not refitted).
+inline Sh4Ambient sh4_ambient_constants(const Sh9& irradiance) {
+  const auto& e = irradiance.c;
+  const double inv_pi = 1.0 / std::numbers::pi;
+  Sh4Ambient r;
+  r.k[0] = glm::vec3(e[0] * (Sh9Norm::y00 * inv_pi));
+  r.k[1] = glm::vec3(e[3] * (Sh9Norm::y1 * inv_pi));  // x
+  r.k[2] = glm::vec3(e[1] * (Sh9Norm::y1 * inv_pi));  // y
+  r.k[3] = glm::vec3(e[2] * (Sh9Norm::y1 * inv_pi));  // z
+  return r;
+}
+
+/// E(n)/π from the four registers, for a unit normal n: three mads.
+template <Lane L>
+inline float3<L> sh4_ambient_light(const float3<L>& n, const Sh4Ambient& sh) {
+  return constant<L>(sh.k[0]) + n.x * constant<L>(sh.k[1]) + n.y * constant<L>(sh.k[2]) + n.z * constant<L>(sh.k[3]);
 }
 
 }  // namespace luxel::shading::source

@@ -8,12 +8,20 @@
 // rounds to the paper's two-decimal table (cross-checked against xufive/wxgl, wxgl/light.py),
 // and the Grace Cathedral column was re-derived from the probe image up to an exposure factor.
 // Numeric data, cited as facts. Row order and basis: spherical_harmonics.hpp (the paper's).
+// Frame: +x toward the probe image's right, +y up, +z the direction seen at the image's centre
+// (../shared/assets/sh9-ramamoorthi2001.md, "Frame").
+//
+// `luxel report speed-error` and tests/shading/sh9_test.cpp use them as environments, and the
+// report compares the first with its own projection of grace_probe.hdr.
+
+#include "luxel/shading/source/spherical_harmonics.hpp"
 
 #include <glm/vec3.hpp>
 
+#include <algorithm>
 #include <array>
 
-namespace luxel::shading::source::testing {
+namespace luxel::shading::source {
 
 struct PublishedProbe {
   const char* name;
@@ -45,4 +53,24 @@ inline const PublishedProbe kRamamoorthi2001Probes[] = {
 inline constexpr double kPaperC1 = 0.429043, kPaperC2 = 0.511664, kPaperC3 = 0.743125, kPaperC4 = 0.886227,
                         kPaperC5 = 0.247708;
 
-}  // namespace luxel::shading::source::testing
+/// A published probe's radiance coefficients as an Sh9.
+inline Sh9 published_radiance(const PublishedProbe& probe) {
+  Sh9 sh;
+  for (size_t i = 0; i < 9; ++i) sh.c[i] = probe.radiance[i];
+  return sh;
+}
+
+/// A published probe as an environment: its SH9 radiance dips below 0 in places (ringing), and
+/// then so does its irradiance for a few normals, where a relative error means nothing. Lifted by
+/// a constant (band 0: still band-limited) until its least radiance (over a 64-row grid) is a tenth
+/// of its mean.
+inline Sh9 physical_radiance(const Sh9& sh) {
+  glm::dvec3 least(1e30);
+  for_each_sphere_cell(64, [&](const glm::dvec3& d, double) { least = glm::min(least, evaluate(sh, d)); });
+  const glm::dvec3 mean = sh.c[0] * Sh9Norm::y00;  // L00 = ∫ L Y00 = Y00 · 4π · mean, Y00² = 1/(4π)
+  Sh9 lifted = sh;
+  lifted.c[0] += (glm::max(-least, glm::dvec3(0.0)) + mean * 0.1) / Sh9Norm::y00;
+  return lifted;
+}
+
+}  // namespace luxel::shading::source

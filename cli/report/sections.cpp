@@ -1,0 +1,10 @@
+#include "report/sections.hpp"
+
+namespace luxel::cli {
+
+const std::vector<ReportSection>& report_sections() {
+  static const std::vector<ReportSection> sections = {lighting_bases_section()};
+  return sections;
+}
+
+}  // namespace luxel::cli

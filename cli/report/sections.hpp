@@ -1,0 +1,11 @@
+#pragma once
+// The report's sections, one function per file (cli/report/<name>.cpp); sections.cpp lists them
+// in report order. A new section: its file, its line here and its line in sections.cpp.
+
+#include "report/report.hpp"
+
+namespace luxel::cli {
+
+ReportSection lighting_bases_section();
+
+}  // namespace luxel::cli

@@ -1,0 +1,157 @@
+// `luxel report speed-error` on light probes written here (a uniform lat-long probe, a two-tone
+// angular map), small grids and few normals, so that it needs no shared assets:
+//  - the JSON's rows state scene, resolution, CPU and reference, with the counted costs;
+//  - references: the uniform probe's irradiance is πL exactly, which all three bases represent,
+//    so its rows' errors are ~0; R&H's published probes are band-limited, so SH9's rows are ~0;
+//    the quadrature behind both is checked against closed forms in
+//    tests/shading/sphere_quadrature_test.cpp and environment_image_test.cpp;
+//  - a second run writes the same JSON but for the `timing` fields, and the same PNG bytes;
+//  - the PNG reads back at the plot's size and the JSON lists each plot's series and labels.
+
+#include "cli/run_luxel.hpp"
+
+#include "luxel/scenes/image_io.hpp"
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include <unistd.h>
+
+#include <filesystem>
+#include <fstream>
+#include <set>
+#include <sstream>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace luxel::cli {
+namespace {
+
+namespace fs = std::filesystem;
+using test::Process;
+using test::run_luxel;
+
+std::string slurp(const fs::path& p) {
+  std::ifstream f(p, std::ios::binary);
+  std::stringstream s;
+  s << f.rdbuf();
+  return s.str();
+}
+
+scenes::PixelImage probe(int width, int height, float top, float bottom) {
+  scenes::PixelImage image;
+  image.width = width, image.height = height;
+  image.rgba32f.resize(size_t(width) * height * 4);
+  for (int i = 0; i < height; ++i)
+    for (int j = 0; j < width; ++j)
+      for (int c = 0; c < 4; ++c) image.rgba32f[(size_t(i) * width + j) * 4 + size_t(c)] = c == 3 ? 1.0f : i < height / 2 ? top : bottom;
+  return image;
+}
+
+/// The report run twice on the same probes into two folders.
+class ReportCommand : public ::testing::Test {
+ protected:
+  static void SetUpTestSuite() {
+    root_ = fs::temp_directory_path() / ("luxel_report_test_" + std::to_string(getpid()));
+    fs::create_directories(root_ / "probes" / "sub");
+    scenes::write_image(probe(64, 32, 0.5f, 0.5f), (root_ / "probes" / "uniform.hdr").string());
+    scenes::write_image(probe(48, 48, 2.0f, 0.25f), (root_ / "probes" / "sub" / "two_tone.hdr").string());
+    for (const char* out : {"a", "b"}) {
+      runs_.push_back(run_luxel("report speed-error --normals 200 --grid 96 --repeats 1 --probes " + (root_ / "probes").string() +
+                                " --out " + (root_ / out).string() + " 2>/dev/null"));
+    }
+  }
+  static void TearDownTestSuite() { fs::remove_all(root_); }
+
+  static nlohmann::json json(const char* run) { return nlohmann::json::parse(slurp(root_ / run / "speed_error.json")); }
+
+  static inline fs::path root_;
+  static inline std::vector<Process> runs_;
+};
+
+TEST_F(ReportCommand, WritesRowsThatStateWhatTheyMeasured) {
+  ASSERT_EQ(runs_[0].exit_code, 0) << runs_[0].out;
+  const nlohmann::json j = json("a");
+  ASSERT_EQ(j["sections"].size(), 1u);
+  const nlohmann::json& s = j["sections"][0];
+  EXPECT_EQ(s["name"], "lighting_bases");
+  // Three R&H probes and the two written here, three bases each.
+  ASSERT_EQ(s["rows"].size(), 15u);
+  std::set<std::string> scenes;
+  for (const nlohmann::json& row : s["rows"]) {
+    for (const char* field : {"scene", "resolution", "variant", "reference", "cpu"})
+      EXPECT_FALSE(row[field].get<std::string>().empty()) << field;
+    scenes.insert(row["scene"]);
+    const std::string variant = row["variant"];
+    const std::pair<int, int> cost(row["cost"]["slots"], row["cost"]["constant_registers"]);
+    const std::pair<int, int> expected = variant.starts_with("ambient cube") ? std::pair(9, 6)
+                                         : variant.starts_with("linear SH4") ? std::pair(3, 4)
+                                                                             : std::pair(11, 9);
+    EXPECT_EQ(cost, expected) << variant;
+    EXPECT_GT(row["timing"]["ns_per_pixel_simd"].get<double>(), 0.0);
+    // The uniform probe: E = πL, which every basis holds exactly; what remains is the reference's
+    // quadrature on 64 x 32 pixels (the cosine taken at each pixel's centre): 6e-4.
+    if (row["scene"] == "uniform.hdr") {
+      EXPECT_LT(row["error"]["max_relative"].get<double>(), 1e-3) << variant;
+    }
+    // Band-limited radiance: SH9 exact up to the 96-row grid's quadrature, which the fit and the
+    // reference share.
+    if (row["scene"].get<std::string>().find("R&H") != std::string::npos && variant.starts_with("SH9")) {
+      EXPECT_LT(row["error"]["max_relative"].get<double>(), 1e-3) << row["scene"];
+    }
+  }
+  EXPECT_TRUE(scenes.count("sub/two_tone.hdr"));
+  EXPECT_EQ(s["rows"][9]["resolution"], "48x48 angular map");  // sorted: sub/two_tone.hdr before uniform.hdr
+  EXPECT_EQ(s["rows"][12]["resolution"], "64x32 lat-long");
+}
+
+TEST_F(ReportCommand, TwoRunsGiveTheSameNumbersAndPlots) {
+  ASSERT_EQ(runs_[1].exit_code, 0) << runs_[1].out;
+  nlohmann::json a = json("a"), b = json("b");
+  for (nlohmann::json* j : {&a, &b})
+    for (nlohmann::json& s : (*j)["sections"])
+      for (nlohmann::json& row : s["rows"]) row.erase("timing");
+  EXPECT_EQ(a, b);
+  EXPECT_EQ(slurp(root_ / "a" / "lighting_bases.png"), slurp(root_ / "b" / "lighting_bases.png"));
+}
+
+TEST_F(ReportCommand, PlotIsAPngWithTheLabelsTheJsonLists) {
+  const nlohmann::json j = json("a");
+  const nlohmann::json& plot = j["sections"][0]["plot"];
+  ASSERT_EQ(plot["file"], "lighting_bases.png");
+  const scenes::PixelImage png = scenes::read_image((root_ / "a" / "lighting_bases.png").string());
+  EXPECT_EQ(png.width, plot["width"].get<int>());
+  EXPECT_EQ(png.height, plot["height"].get<int>());
+  std::set<std::string> series, labels;
+  for (const nlohmann::json& s : plot["series"]) {
+    series.insert(s["name"]);
+    for (const nlohmann::json& p : s["points"]) labels.insert(p["label"]);
+  }
+  EXPECT_EQ(series, (std::set<std::string>{"ambient cube (ps_2_0+)", "linear SH4 (ps_2_0+)", "SH9 (ps_3_0)"}));
+  EXPECT_EQ(labels, (std::set<std::string>{"Grace Cathedral R&H", "Eucalyptus Grove R&H", "St. Peter's Basilica R&H", "two_tone",
+                                           "uniform"}));
+  EXPECT_EQ(plot["x_label"], "ps_3_0 slots (counted)");
+  EXPECT_TRUE(plot["log_y"].get<bool>());
+}
+
+TEST_F(ReportCommand, PrintsTheTableItWrites) {
+  const std::string text = slurp(root_ / "a" / "speed_error.txt");
+  EXPECT_NE(runs_[0].out.find(text), std::string::npos);
+  EXPECT_NE(text.find("cpu: "), std::string::npos);
+  EXPECT_NE(text.find("== lighting_bases: "), std::string::npos);
+  EXPECT_NE(runs_[0].out.find("speed_error.json, lighting_bases.png"), std::string::npos);
+}
+
+TEST(ReportCommandProbes, AMissingFolderSkipsTheProbeRowsWithANote) {
+  const fs::path out = fs::temp_directory_path() / ("luxel_report_noprobes_" + std::to_string(getpid()));
+  const Process run = run_luxel("report speed-error --normals 20 --grid 16 --repeats 1 --probes " + (out / "none").string() +
+                                " --out " + out.string() + " 2>/dev/null");
+  ASSERT_EQ(run.exit_code, 0) << run.out;
+  EXPECT_NE(run.out.find("is not a folder; the probe rows are skipped"), std::string::npos) << run.out;
+  EXPECT_EQ(nlohmann::json::parse(slurp(out / "speed_error.json"))["sections"][0]["rows"].size(), 9u);
+  fs::remove_all(out);
+}
+
+}  // namespace
+}  // namespace luxel::cli
