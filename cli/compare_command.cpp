@@ -207,7 +207,8 @@ Runner add_compare_command(CLI::App& app) {
     const auto context_options = o->frame.context_options("compare", code);
     if (!context_options) return code;
     frame::FrameSettings settings = o->frame.settings;
-    const std::optional<scenes::Scene> scene = o->frame.prepare_scene("compare", settings, o->out, code);
+    const std::string png = o->out + ".png", json = o->out + ".json";
+    const std::optional<scenes::Scene> scene = o->frame.prepare_scene("compare", settings, {png, json}, code);
     if (!scene) return code;
 
     rasterizer::Context ctx(*context_options);
@@ -223,7 +224,6 @@ Runner add_compare_command(CLI::App& app) {
         pairs.push_back({&runs[i], &runs[k], frame::image_difference(runs[i].image, runs[k].image),
                          frame::difference_heat_map(runs[i].image, runs[k].image)});
 
-    const std::string png = o->out + ".png", json = o->out + ".json";
     try {
       std::vector<std::vector<SheetCell>> rows(2);
       for (const ModelRun& r : runs) rows[0].push_back({r.name, &r.image});

@@ -101,7 +101,19 @@ std::optional<rasterizer::ContextOptions> FrameOptions::context_options(const st
 }
 
 std::optional<scenes::Scene> FrameOptions::prepare_scene(const std::string& command, frame::FrameSettings& frame_settings,
-                                                         const std::string& out, int& code) const {
+                                                         const std::vector<std::string>& outs, int& code) const {
+  // The outputs first: a user should not wait for a render to learn it cannot be written.
+  for (const std::string& out : outs) {
+    const std::filesystem::path path(out), dir = path.parent_path();
+    const char* problem = !dir.empty() && !std::filesystem::is_directory(dir) ? "no such folder to write into"
+                          : std::filesystem::is_directory(path)              ? "is a folder, not a file to write"
+                                                                             : nullptr;
+    if (problem) {
+      std::cerr << "luxel " << command << ": " << out << ": " << problem << "\n";
+      code = 1;
+      return std::nullopt;
+    }
+  }
   scenes::GltfImportOptions gltf;
   if (scene.rfind("builtin:", 0) != 0) gltf.camera = std::exchange(frame_settings.camera, 0);
   std::optional<scenes::Scene> loaded =
@@ -113,12 +125,6 @@ std::optional<scenes::Scene> FrameOptions::prepare_scene(const std::string& comm
   } catch (const std::invalid_argument& e) {
     std::cerr << "luxel " << command << ": " << e.what() << "\n";
     code = 2;
-    return std::nullopt;
-  }
-  if (const std::filesystem::path dir = std::filesystem::path(out).parent_path();
-      !dir.empty() && !std::filesystem::is_directory(dir)) {
-    std::cerr << "luxel " << command << ": " << out << ": no such folder to write into\n";
-    code = 1;
     return std::nullopt;
   }
   if (needs_bake(*loaded)) {

@@ -15,6 +15,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <vector>
 
 namespace luxel::cli {
 
@@ -39,13 +40,14 @@ struct FrameOptions {
   std::optional<rasterizer::ContextOptions> context_options(const std::string& command, int& code) const;
 
   /// The scene, ready to render with `settings` (a copy of this->settings with the command's own
-  /// fields set): loaded (a file's camera N is made its first on import, as `luxel info` and
-  /// `export` do, and `settings` then looks through camera 0; a built-in is built for the
-  /// settings' size); then what can fail quickly is checked before a bake: the camera, and that
-  /// the folder of `out` (the command's output path or prefix) exists; then the bake it needs and
-  /// lacks is loaded or made (cli/baking.hpp). nullopt after printing one line, with `code` set.
+  /// fields set). What can fail quickly is checked first: that each of `outs` (the files the
+  /// command will write) has a folder and is not one. Then the scene is loaded (a file's camera N
+  /// is made its first on import, as `luxel info` and `export` do, and `settings` then looks
+  /// through camera 0; a built-in is built for the settings' size), its camera checked, and the
+  /// bake it needs and lacks loaded or made (cli/baking.hpp). nullopt after printing one line,
+  /// with `code` set.
   std::optional<scenes::Scene> prepare_scene(const std::string& command, frame::FrameSettings& settings,
-                                             const std::string& out, int& code) const;
+                                             const std::vector<std::string>& outs, int& code) const;
 
   /// A renderer of `scene` (which must outlive it) with `settings`, its clock at `frame`: started
   /// at frame 0 and moved through every frame before, so that the models' lighting is averaged

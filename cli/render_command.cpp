@@ -210,7 +210,7 @@ Runner add_render_command(CLI::App& app) {
     settings.model = shading::parse_pixel_model(options->model);
     settings.count_shading = options->stats;
     settings.time_passes = options->stats;
-    const std::optional<scenes::Scene> scene = options->frame.prepare_scene("render", settings, first_out, code);
+    const std::optional<scenes::Scene> scene = options->frame.prepare_scene("render", settings, {first_out}, code);
     if (!scene) return code;
     if (sequence && !scene->camera_path.empty()) settings.camera_path = true;
     rasterizer::Context ctx(*context_options);

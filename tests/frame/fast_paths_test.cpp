@@ -24,12 +24,6 @@ std::vector<uint8_t> render(std::string_view name, const FrameSettings& settings
   return f.image.rgba;
 }
 
-#if defined(__SANITIZE_ADDRESS__) || !defined(__OPTIMIZE__)
-constexpr bool kReduced = true;
-#else
-constexpr bool kReduced = false;
-#endif
-
 void check(std::string_view name, const FrameSettings& settings) {
   rasterizer::DrawStats all_on_stats, all_off_stats;
   const std::vector<uint8_t> all_on = render(name, settings, FastPaths(), &all_on_stats);

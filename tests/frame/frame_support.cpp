@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
+#include <memory>
 #include <mutex>
 #include <string>
 
@@ -85,11 +86,34 @@ rasterizer::Image render_frame(const scenes::Scene& scene, const FrameSettings& 
   return r.image();
 }
 
+std::shared_ptr<const scenes::Scene> builtin_scene(std::string_view name, int width, int height) {
+  // Tests render one scene many times over (per thread count, shader model, fast path), and
+  // building tris's million triangles costs more than drawing them small; keeping only the last
+  // scene bounds the memory.
+  static std::mutex mutex;
+  static std::string built_key;
+  static std::shared_ptr<const scenes::Scene> built;
+  const std::string key = std::string(name) + " " + std::to_string(width) + "x" + std::to_string(height);
+  std::lock_guard lock(mutex);
+  if (key != built_key || !built) {
+    built.reset();
+    auto fresh = std::make_shared<scenes::Scene>(scenes::make_builtin_scene(name, {width, height}));
+    if (name == "demo" || name == "courtyard") attach_test_bake(*fresh);
+    if (name == "tris" && kReduced) {
+      scenes::Mesh& m = fresh->meshes.at(0);  // non-indexed: each three vertices a triangle
+      m.positions.resize(std::min(m.positions.size(), 3 * kReducedTrisTriangles));
+      m.colors.resize(m.positions.size());
+    }
+    built = std::move(fresh);
+    built_key = key;
+  }
+  return built;
+}
+
 RenderedFrame render_builtin(std::string_view name, const FrameSettings& settings,
                              const rasterizer::ContextOptions& options, int frames) {
-  scenes::Scene scene = scenes::make_builtin_scene(name, {settings.width, settings.height});
-  if (name == "demo" || name == "courtyard") attach_test_bake(scene);
-  Renderer renderer(scene, settings);
+  const std::shared_ptr<const scenes::Scene> scene = builtin_scene(name, settings.width, settings.height);
+  Renderer renderer(*scene, settings);
   rasterizer::Context ctx(options);
   RenderedFrame f;
   for (int i = 0; i < frames; ++i) {

@@ -4,9 +4,22 @@
 #include "luxel/frame/renderer.hpp"
 #include "luxel/scenes/builtin.hpp"
 
+#include <cstddef>
+#include <memory>
 #include <string_view>
 
 namespace luxel::frame {
+
+/// Sanitizer and unoptimized builds render fewer and smaller frames.
+#if defined(__SANITIZE_ADDRESS__) || !defined(__OPTIMIZE__)
+inline constexpr bool kReduced = true;
+#else
+inline constexpr bool kReduced = false;
+#endif
+
+/// Where kReduced, builtin_scene keeps only this many of builtin:tris's million triangles (the
+/// first ones its generator makes, as small): two front-end chunks, at a twenty-fifth of the cost.
+inline constexpr size_t kReducedTrisTriangles = 40000;
 
 struct RenderedFrame {
   rasterizer::Image image;
@@ -35,7 +48,11 @@ rasterizer::Image render_frame(const scenes::Scene& scene, const FrameSettings& 
 /// scene name and test binary.
 void attach_test_bake(scenes::Scene& scene);
 
-/// Builds builtin:`name` for the settings' size (with attach_test_bake where it needs a bake), renders `frames` frames with `options`, and
+/// builtin:`name` built for a width x height image, with attach_test_bake where it needs a bake
+/// (and only kReducedTrisTriangles of tris where kReduced); the last one built is kept and shared.
+std::shared_ptr<const scenes::Scene> builtin_scene(std::string_view name, int width, int height);
+
+/// Renders builtin_scene(`name`) at the settings' size `frames` times with `options`, and
 /// returns the last (checking that every frame gave the same bytes).
 RenderedFrame render_builtin(std::string_view name, const FrameSettings& settings,
                              const rasterizer::ContextOptions& options, int frames = 1);

@@ -20,10 +20,10 @@ uint64_t fnv1a(const std::vector<uint8_t>& bytes) {
   return h;
 }
 
+// The whole workload, as the peer draws it (render_builtin keeps fewer of tris's triangles where
+// kReduced).
 rasterizer::Image render(std::string_view name, const FrameSettings& settings) {
-  rasterizer::ContextOptions options;
-  options.threads = 2;
-  return render_builtin(name, settings, options).image;
+  return render_frame(scenes::make_builtin_scene(name, {settings.width, settings.height}), settings, 2);
 }
 
 // Hashes of the images main 2082e6a rendered (its `luxel render`, PNGs decoded to RGBA8).
