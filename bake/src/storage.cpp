@@ -8,10 +8,12 @@
 #include <OpenImageIO/imageio.h>
 #include <nlohmann/json.hpp>
 
+#include <cmath>
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <limits>
 #include <stdexcept>
 #include <type_traits>
 
@@ -57,7 +59,30 @@ json settings_json(const BakeSettings& s) {
 }
 
 json vec3(glm::vec3 v) { return json::array({v.x, v.y, v.z}); }
-glm::vec3 vec3(const json& j) { return {j.at(0).get<float>(), j.at(1).get<float>(), j.at(2).get<float>()}; }
+// The index's numbers, checked: nlohmann's get<int>() and get<float>() cast whatever number they
+// find, and a cast out of range is undefined behavior.
+int int_field(const json& j) {
+  if (!j.is_number_integer()) throw std::runtime_error("a count that is not an integer: " + j.dump());
+  const bool fits = j.is_number_unsigned() ? j.get<uint64_t>() <= uint64_t(std::numeric_limits<int>::max())
+                                           : j.get<int64_t>() >= std::numeric_limits<int>::min() &&
+                                                 j.get<int64_t>() <= std::numeric_limits<int>::max();
+  if (!fits) throw std::runtime_error("a count out of range: " + j.dump());
+  return int(j.get<int64_t>());
+}
+
+uint64_t uint64_field(const json& j) {
+  if (!j.is_number_unsigned()) throw std::runtime_error("a count that is not a natural number: " + j.dump());
+  return j.get<uint64_t>();
+}
+
+float float_field(const json& j) {
+  if (!j.is_number()) throw std::runtime_error("not a number: " + j.dump());
+  const double d = j.get<double>();
+  if (!(std::abs(d) <= double(std::numeric_limits<float>::max()))) throw std::runtime_error("a number out of range: " + j.dump());
+  return float(d);
+}
+
+glm::vec3 vec3(const json& j) { return {float_field(j.at(0)), float_field(j.at(1)), float_field(j.at(2))}; }
 
 void write_map(const std::vector<glm::vec3>& map, int width, int height, const std::string& path) {
   auto out = OIIO::ImageOutput::create(path);
@@ -181,14 +206,14 @@ std::optional<BakeResult> load_bake(const std::string& dir, const scenes::Scene&
     throw std::runtime_error(path + ": not a bake index (" + e.what() + ")");
   }
   try {
-    if (index.value("format", "") != "luxel-bake" || index.value("version", 0) != kBakeFormatVersion) return std::nullopt;
+    if (index.value("format", "") != "luxel-bake" || index.value("version", json()) != json(kBakeFormatVersion)) return std::nullopt;
     if (index.value("hash", "") != hex(bake_input_hash(scene, settings))) return std::nullopt;
     BakeResult r;
     r.charted_meshes.resize(scene.meshes.size());
     if (index.contains("lightmaps")) {
       const json& l = index["lightmaps"];
       LightmapAtlas& a = r.lightmaps;
-      a.width = l.at("width").get<int>(), a.height = l.at("height").get<int>();
+      a.width = int_field(l.at("width")), a.height = int_field(l.at("height"));
       if (a.width <= 0 || a.height <= 0 || a.width > kMaxAtlasSide || a.height > kMaxAtlasSide)
         throw std::runtime_error("bad atlas size");
       const size_t texels = size_t(a.width) * size_t(a.height);
@@ -204,7 +229,7 @@ std::optional<BakeResult> load_bake(const std::string& dir, const scenes::Scene&
       if (coverage.size() != texels) throw std::runtime_error("coverage is not the atlas's size");
       a.coverage.resize(texels);
       for (size_t i = 0; i < texels; ++i) a.coverage[i] = LuxelCoverage(std::clamp(coverage[i] - '0', 0, 2));
-      r.stats.luxels = l.value("luxels", uint64_t(0));
+      r.stats.luxels = l.contains("luxels") ? uint64_field(l["luxels"]) : 0;
       // Charts the baker made are made again (a function of what the hash covers).
       if (!l.value("generated_uv1_meshes", json::array()).empty()) {
         GeneratedCharts charts = plan_charts(scene, settings);
@@ -216,21 +241,24 @@ std::optional<BakeResult> load_bake(const std::string& dir, const scenes::Scene&
       const json& v = index["volume"];
       AmbientCubes cubes;
       cubes.volume.min = vec3(v.at("min")), cubes.volume.max = vec3(v.at("max")), cubes.volume.spacing = vec3(v.at("spacing"));
-      cubes.volume.counts = {v.at("counts").at(0).get<int>(), v.at("counts").at(1).get<int>(), v.at("counts").at(2).get<int>()};
+      cubes.volume.counts = {int_field(v.at("counts").at(0)), int_field(v.at("counts").at(1)), int_field(v.at("counts").at(2))};
       for (const json& c : v.at("cubes")) {
         scenes::AmbientCube cube;
         for (size_t k = 0; k < 6; ++k) cube[k] = vec3(c.at(k));
         cubes.volume.cubes.push_back(cube);
       }
-      cubes.valid = v.at("valid").get<std::vector<char>>();
+      for (const json& valid : v.at("valid")) {
+        if (valid != 0 && valid != 1) throw std::runtime_error("a cube's validity that is not 0 or 1: " + valid.dump());
+        cubes.valid.push_back(char(valid == 1));
+      }
       const uint64_t n = uint64_t(std::max(cubes.volume.counts.x, 0)) * uint64_t(std::max(cubes.volume.counts.y, 0)) *
                          uint64_t(std::max(cubes.volume.counts.z, 0));
       if (cubes.volume.cubes.size() != n || cubes.valid.size() != n) throw std::runtime_error("the volume's cube count is wrong");
       r.cubes = std::move(cubes);
     }
     const json& s = index.at("stats");
-    r.stats.bounces = s.value("bounces", 0);
-    r.stats.rays = s.value("rays", uint64_t(0));
+    r.stats.bounces = s.contains("bounces") ? int_field(s["bounces"]) : 0;
+    r.stats.rays = s.contains("rays") ? uint64_field(s["rays"]) : 0;
     r.stats.seconds = s.value("seconds", 0.0);
     r.stats.width = r.lightmaps.width, r.stats.height = r.lightmaps.height;
     r.warnings = index.value("warnings", std::vector<std::string>{});

@@ -36,7 +36,9 @@ std::string condensed(std::string what, const std::string& absolute, const std::
   for (const std::string& quoted : {" (" + absolute + ")", "'" + absolute + "'"}) {
     for (size_t at; (at = what.find(quoted)) != std::string::npos;) what.erase(at, quoted.size());
   }
-  for (size_t at; (at = what.find(absolute)) != std::string::npos;) what.replace(at, absolute.size(), path);
+  // On from past each replacement: `path` may hold `absolute` (it is absolute when given so).
+  for (size_t at = what.find(absolute); at != std::string::npos; at = what.find(absolute, at + path.size()))
+    what.replace(at, absolute.size(), path);
   std::string line;
   for (char c : what) {
     const unsigned char u = static_cast<unsigned char>(c);

@@ -41,6 +41,23 @@ std::vector<T> expand_to_rgba(const std::vector<T>& raw, size_t pixels, int n, T
   return out;
 }
 
+/// The first `n` channels of every row, read in bands into `raw`, which grows with what was
+/// decoded: a small file whose header claims a large image fails on its first band instead of
+/// having the whole image allocated (and zeroed) first. False on a read error.
+template <class T>
+bool read_rows(OIIO::ImageInput& in, int n, OIIO::TypeDesc type, std::vector<T>& raw) {
+  constexpr int kBandRows = 64;
+  const OIIO::ImageSpec& spec = in.spec();
+  const size_t row = static_cast<size_t>(spec.width) * static_cast<size_t>(n);
+  for (int y = spec.y; y < spec.y + spec.height; y += kBandRows) {
+    const int end = std::min(y + kBandRows, spec.y + spec.height);
+    const size_t at = raw.size();
+    raw.resize(at + row * static_cast<size_t>(end - y));
+    if (!in.read_scanlines(0, 0, y, end, 0, 0, n, type, raw.data() + at)) return false;
+  }
+  return true;
+}
+
 PixelImage read_opened(OIIO::ImageInput& in, const std::string& name) {
   const OIIO::ImageSpec& spec = in.spec();
   if (spec.width <= 0 || spec.height <= 0 || spec.nchannels <= 0)
@@ -55,12 +72,12 @@ PixelImage read_opened(OIIO::ImageInput& in, const std::string& name) {
   image.width = spec.width;
   image.height = spec.height;
   if (is_float(spec.format)) {
-    std::vector<float> raw(pixels * n);
-    if (!in.read_image(0, 0, 0, n, OIIO::TypeDesc::FLOAT, raw.data())) fail(name, in.geterror());
+    std::vector<float> raw;
+    if (!read_rows(in, n, OIIO::TypeDesc::FLOAT, raw)) fail(name, in.geterror());
     image.rgba32f = expand_to_rgba(raw, pixels, n, 1.0f);
   } else {
-    std::vector<uint8_t> raw(pixels * n);
-    if (!in.read_image(0, 0, 0, n, OIIO::TypeDesc::UINT8, raw.data())) fail(name, in.geterror());
+    std::vector<uint8_t> raw;
+    if (!read_rows(in, n, OIIO::TypeDesc::UINT8, raw)) fail(name, in.geterror());
     image.rgba8 = expand_to_rgba(raw, pixels, n, uint8_t{255});
   }
   return image;

@@ -117,7 +117,9 @@ TEST(EnginePost, SameBytesForAnyThreadCount) {
     for (int n = 1; n <= 4; ++n) {
       const rasterizer::Image out = color_correct(ctx, bloom, std::span<const WeightedLut>(luts, size_t(n)));
       if (threads == 1 && n == 4) first = out.rgba;
-      if (threads > 1 && n == 4) EXPECT_EQ(out.rgba, first) << threads << " threads";
+      if (threads > 1 && n == 4) {
+        EXPECT_EQ(out.rgba, first) << threads << " threads";
+      }
     }
   }
 }

@@ -155,15 +155,16 @@ LUXEL_INLINE void counted_refs(const T& t, counted::Ref* out) {
 }
 
 /// A Counted vector from N references (no literal nodes made on the way, unlike Vec's default
-/// constructor).
-template <int N>
-LUXEL_INLINE Vec<Counted, N> counted_vec(const counted::Ref* r) {
+/// constructor). L is a parameter only so that Vec, defined below, is looked up when this is
+/// instantiated (Clang checks a non-dependent Vec<Counted, 2> where it reads it).
+template <int N, class L = Counted>
+LUXEL_INLINE Vec<L, N> counted_vec(const counted::Ref* r) {
   if constexpr (N == 2) {
-    return Vec<Counted, 2>(Counted(r[0]), Counted(r[1]));
+    return Vec<L, 2>(L(r[0]), L(r[1]));
   } else if constexpr (N == 3) {
-    return Vec<Counted, 3>(Counted(r[0]), Counted(r[1]), Counted(r[2]));
+    return Vec<L, 3>(L(r[0]), L(r[1]), L(r[2]));
   } else {
-    return Vec<Counted, 4>(Counted(r[0]), Counted(r[1]), Counted(r[2]), Counted(r[3]));
+    return Vec<L, 4>(L(r[0]), L(r[1]), L(r[2]), L(r[3]));
   }
 }
 
