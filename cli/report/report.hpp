@@ -20,6 +20,8 @@
 
 namespace luxel::cli {
 
+struct ReportScene;  // report_scene.hpp
+
 /// What a section is measured with: command-line settings shared by every section.
 struct ReportSettings {
   std::string probes;        ///< folder searched (recursively) for .hdr light probes
@@ -27,6 +29,9 @@ struct ReportSettings {
   int grid_rows = 192;       ///< rows of the equal-area grid analytic environments are sampled on
   int timing_repeats = 5;    ///< timing runs per variant; the median is reported
   std::function<void(const std::string&)> progress;  ///< one line per slow step (stderr)
+  /// The scene the frame sections render (--scene, prepared by the command when a chosen section
+  /// renders frames); null otherwise.
+  const ReportScene* scene = nullptr;
 };
 
 /// What a column holds, which decides where it goes in the JSON ("cost", "timing", "error").
@@ -70,6 +75,7 @@ struct ReportSection {
   std::string name;     ///< `--sections` picks it by this; also its PNG's name
   std::string summary;  ///< for --help
   std::function<SectionResult(const ReportSettings&)> run;
+  bool renders_frames = false;  ///< needs ReportSettings::scene
 };
 
 /// Every section, in report order.

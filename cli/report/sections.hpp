@@ -7,5 +7,8 @@
 namespace luxel::cli {
 
 ReportSection lighting_bases_section();
+ReportSection msaa_section();
+ReportSection shader_models_section();
+ReportSection ambient_sampling_section();
 
 }  // namespace luxel::cli
