@@ -6,7 +6,7 @@
 //    infinite PSNR (null in the JSON), and its cheapest row (ps_2_0, nearest) is not;
 //  - the rows state scene, resolution, reference and CPU; the second run gives the same numbers but
 //    for the timing columns, and the same plots, which are PNGs of the size the JSON says;
-// and the box filter behind the MSAA reference, against sums worked by hand.
+// and the box filter behind the MSAA references, in both spaces, against sums worked by hand.
 
 #include "cli/run_luxel.hpp"
 
@@ -83,11 +83,14 @@ TEST_F(ReportFrames, RowsStateWhatTheyMeasured) {
 }
 
 TEST_F(ReportFrames, MsaaErrorFallsAsSamplesRise) {
+  // Four rows against the box filter in the resolve's space, then four against linear light.
   const nlohmann::json rows = section("a", "msaa")["rows"];
-  ASSERT_EQ(rows.size(), 4u);
+  ASSERT_EQ(rows.size(), 8u);
   std::vector<int> samples;
   for (const nlohmann::json& row : rows) samples.push_back(row["cost"]["samples"]);
-  EXPECT_EQ(samples, (std::vector<int>{1, 2, 4, 8}));
+  EXPECT_EQ(samples, (std::vector<int>{1, 2, 4, 8, 1, 2, 4, 8}));
+  EXPECT_EQ(rows[0]["variant"], "MSAA vs sRGB-space box");
+  EXPECT_EQ(rows[4]["variant"], "MSAA vs linear-light box");
   const nlohmann::json &one = rows[0]["error"], &eight = rows[3]["error"];
   EXPECT_GT(one["mean_steps"].get<double>(), eight["mean_steps"].get<double>());
   EXPECT_LT(one["psnr_db"].get<double>(), eight["psnr_db"].get<double>());
@@ -173,6 +176,17 @@ TEST(BoxFilterDown, RoundsEachBlocksMeanHalfUpAsTheResolve) {
   EXPECT_TRUE(same.identical());
   EXPECT_TRUE(std::isinf(same.psnr_db));
   EXPECT_THROW(box_filter_down(big, 3), std::invalid_argument);
+}
+
+TEST(BoxFilterDown, LinearLightAveragesDecodedValues) {
+  // Black and white halves: 127.5 stored, rounded half up to 128; in linear light the mean is
+  // 0.5, sRGB-encoded 0.7354 x 255 = 187.5, rounded to 188. Alpha stays stored.
+  const rasterizer::Image big = image_of(2, 2, {0, 255, 255, 0});
+  EXPECT_EQ(box_filter_down(big, 2, BoxSpace::stored).pixel(0, 0)[0], 128);
+  const rasterizer::Image linear = box_filter_down(big, 2, BoxSpace::linear_light);
+  EXPECT_EQ(linear.pixel(0, 0)[0], 188);
+  EXPECT_EQ(linear.pixel(0, 0)[1], 0);
+  EXPECT_EQ(linear.pixel(0, 0)[3], 255);
 }
 
 }  // namespace
