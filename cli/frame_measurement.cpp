@@ -5,10 +5,12 @@
 
 namespace luxel::cli {
 
-double FrameMeasurement::median_ms() const {
-  const size_t n = ms.size();
-  return n % 2 ? ms[n / 2] : (ms[n / 2 - 1] + ms[n / 2]) / 2;
+double median_of_sorted(const std::vector<double>& sorted) {
+  const size_t n = sorted.size();
+  return n % 2 ? sorted[n / 2] : (sorted[n / 2 - 1] + sorted[n / 2]) / 2;
 }
+
+double FrameMeasurement::median_ms() const { return median_of_sorted(ms); }
 
 std::optional<double> FrameMeasurement::slots_per_pixel() const {
   double pixels = 0, slots = 0;

@@ -20,11 +20,14 @@ struct FrameMeasurement {
   std::vector<double> ms;                ///< the timed frames after it, sorted
   std::vector<frame::ShaderUse> uses;    ///< what the counted frame's shader combos did
 
-  /// The median of `ms` (the mean of the middle two for an even count).
+  /// median_of_sorted(ms).
   double median_ms() const;
   /// sum(pixels x slots) / sum(pixels) over `uses`, or nullopt when the frame counted no shading.
   std::optional<double> slots_per_pixel() const;
 };
+
+/// The median of sorted values (the mean of the middle two for an even count; at least one value).
+double median_of_sorted(const std::vector<double>& sorted);
 
 /// Makes a renderer with the settings given, or returns null after saying why (the caller's way).
 using RendererFactory = std::function<std::unique_ptr<frame::Renderer>(const frame::FrameSettings&)>;

@@ -10,5 +10,6 @@ ReportSection lighting_bases_section();
 ReportSection msaa_section();
 ReportSection shader_models_section();
 ReportSection ambient_sampling_section();
+ReportSection color_correction_section();
 
 }  // namespace luxel::cli

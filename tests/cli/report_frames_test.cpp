@@ -1,9 +1,10 @@
-// `luxel report speed-error`'s frame sections (msaa, shader_models, ambient_sampling) on a small
-// courtyard frame (a quick bake, made on demand in the build tree's cache), run twice:
-//  - MSAA: the error against the supersampled frame falls from 1 sample to 8 (the courtyard's
-//    walls, pillars and models have edges everywhere);
+// `luxel report speed-error`'s frame sections (msaa, shader_models, ambient_sampling,
+// color_correction) on a small courtyard frame (a quick bake, made on demand in the build tree's
+// cache), run twice:
+//  - MSAA: the error against the supersampled frame falls from 1 sample to 8;
 //  - each section's reference row is exactly its reference (ps_3_0, trilinear): 0 steps and an
 //    infinite PSNR (null in the JSON), and its cheapest row (ps_2_0, nearest) is not;
+//  - the engine's LUTs of the built-in grades stay within color_correction.hpp's 2 steps;
 //  - the rows state scene, resolution, reference and CPU; the second run gives the same numbers but
 //    for the timing columns, and the same plots, which are PNGs of the size the JSON says;
 // and the box filter behind the MSAA references, in both spaces, against sums worked by hand.
@@ -42,14 +43,14 @@ std::string slurp(const fs::path& p) {
   return s.str();
 }
 
-const char* const kSections[] = {"msaa", "shader_models", "ambient_sampling"};
+const char* const kSections[] = {"msaa", "shader_models", "ambient_sampling", "color_correction"};
 
 class ReportFrames : public ::testing::Test {
  protected:
   static void SetUpTestSuite() {
     root_ = fs::temp_directory_path() / ("luxel_report_frames_test_" + std::to_string(getpid()));
     for (const char* out : {"a", "b"})
-      runs_.push_back(run_luxel("report speed-error --sections msaa,shader_models,ambient_sampling --scene builtin:courtyard "
+      runs_.push_back(run_luxel("report speed-error --sections msaa,shader_models,ambient_sampling,color_correction --scene builtin:courtyard "
                                 "--bake quick --width 64 --height 36 --repeats 1 --out " +
                                 (root_ / out).string() + " 2>/dev/null"));
   }
@@ -75,7 +76,7 @@ TEST_F(ReportFrames, RowsStateWhatTheyMeasured) {
       EXPECT_EQ(row["scene"], "builtin:courtyard") << name;
       EXPECT_EQ(row["resolution"], "64x36") << name;
       for (const char* field : {"variant", "reference", "cpu"}) EXPECT_FALSE(row[field].get<std::string>().empty()) << name;
-      EXPECT_GT(row["timing"]["ms_per_frame"].get<double>(), 0.0) << name;
+      for (const auto& [key, ms] : row["timing"].items()) EXPECT_GT(ms.get<double>(), 0.0) << name << " " << key;
     }
   }
   EXPECT_NE(section("a", "msaa")["rows"][0]["reference"].get<std::string>().find("512x288 with 1 sample per pixel"),
@@ -124,6 +125,17 @@ TEST_F(ReportFrames, NearestAmbientAgainstTrilinear) {
   EXPECT_EQ(rows[0]["cost"]["volume_samples"], 1);
   EXPECT_EQ(rows[1]["cost"]["volume_samples"], 8);
   expect_reference_last(rows, "trilinear");
+}
+
+TEST_F(ReportFrames, EngineLutsStayNearTheExactGrades) {
+  // postfx/color_correction.hpp: the built-in presets through the engine's lattice are within 2
+  // steps of the exact grade over every 8-bit color.
+  const nlohmann::json rows = section("a", "color_correction")["rows"];
+  ASSERT_EQ(rows.size(), 4u);
+  for (const nlohmann::json& row : rows) {
+    EXPECT_LE(row["error"]["max_steps"].get<int>(), 2) << row["label"];
+    EXPECT_GT(row["cost"]["slots_per_pixel"].get<double>(), 0.0) << row["label"];
+  }
 }
 
 TEST_F(ReportFrames, TwoRunsGiveTheSameNumbersAndPlots) {
