@@ -1,9 +1,11 @@
-// `luxel report speed-error`'s frame sections (msaa, shader_models, ambient_sampling,
+// `luxel report speed-error`'s frame sections (msaa, shader_models, ambient_sampling, tone_mapping,
 // color_correction) on a small courtyard frame (a quick bake, made on demand in the build tree's
 // cache), run twice:
 //  - MSAA: the error against the supersampled frame falls from 1 sample to 8;
 //  - each section's reference row is exactly its reference (ps_3_0, trilinear): 0 steps and an
 //    infinite PSNR (null in the JSON), and its cheapest row (ps_2_0, nearest) is not;
+//  - tone mapping in the shader into 8 bits is the float target tone-mapped afterwards within a
+//    step: nothing blends in the capture it is measured on, so only the last rounding may differ;
 //  - the engine's LUTs of the built-in grades stay within color_correction.hpp's 2 steps;
 //  - the rows state scene, resolution, reference and CPU; the second run gives the same numbers but
 //    for the timing columns, and the same plots, which are PNGs of the size the JSON says;
@@ -43,16 +45,21 @@ std::string slurp(const fs::path& p) {
   return s.str();
 }
 
-const char* const kSections[] = {"msaa", "shader_models", "ambient_sampling", "color_correction"};
+const char* const kSections[] = {"msaa", "shader_models", "ambient_sampling", "tone_mapping", "color_correction"};
+
+/// The report of the frame sections into `out` (ctest runs each test in its own process: the one
+/// run the fixture makes serves a test, and only the determinism test makes a second).
+Process run_report(const fs::path& out) {
+  return run_luxel("report speed-error --sections msaa,shader_models,ambient_sampling,tone_mapping,color_correction "
+                   "--scene builtin:courtyard --bake quick --width 64 --height 36 --repeats 1 --out " +
+                   out.string() + " 2>/dev/null");
+}
 
 class ReportFrames : public ::testing::Test {
  protected:
   static void SetUpTestSuite() {
     root_ = fs::temp_directory_path() / ("luxel_report_frames_test_" + std::to_string(getpid()));
-    for (const char* out : {"a", "b"})
-      runs_.push_back(run_luxel("report speed-error --sections msaa,shader_models,ambient_sampling,color_correction --scene builtin:courtyard "
-                                "--bake quick --width 64 --height 36 --repeats 1 --out " +
-                                (root_ / out).string() + " 2>/dev/null"));
+    run_ = run_report(root_ / "a");
   }
   static void TearDownTestSuite() { fs::remove_all(root_); }
 
@@ -64,11 +71,11 @@ class ReportFrames : public ::testing::Test {
   }
 
   static inline fs::path root_;
-  static inline std::vector<Process> runs_;
+  static inline Process run_;
 };
 
 TEST_F(ReportFrames, RowsStateWhatTheyMeasured) {
-  ASSERT_EQ(runs_[0].exit_code, 0) << runs_[0].out;
+  ASSERT_EQ(run_.exit_code, 0) << run_.out;
   for (const char* name : kSections) {
     const nlohmann::json s = section("a", name);
     ASSERT_FALSE(s["rows"].empty()) << name;
@@ -127,6 +134,16 @@ TEST_F(ReportFrames, NearestAmbientAgainstTrilinear) {
   expect_reference_last(rows, "trilinear");
 }
 
+TEST_F(ReportFrames, InShaderToneMapIsTheFloatTargetsWithinAStep) {
+  const nlohmann::json rows = section("a", "tone_mapping")["rows"];
+  ASSERT_EQ(rows.size(), 3u);
+  for (const nlohmann::json& row : rows) {
+    EXPECT_LE(row["error"]["max_steps"].get<int>(), 1) << row["label"];
+    EXPECT_LT(row["error"]["differing_share"].get<double>(), 0.05) << row["label"];
+    EXPECT_EQ(row["cost"]["target_bytes_per_pixel"], 4) << row["label"];
+  }
+}
+
 TEST_F(ReportFrames, EngineLutsStayNearTheExactGrades) {
   // postfx/color_correction.hpp: the built-in presets through the engine's lattice are within 2
   // steps of the exact grade over every 8-bit color.
@@ -139,7 +156,8 @@ TEST_F(ReportFrames, EngineLutsStayNearTheExactGrades) {
 }
 
 TEST_F(ReportFrames, TwoRunsGiveTheSameNumbersAndPlots) {
-  ASSERT_EQ(runs_[1].exit_code, 0) << runs_[1].out;
+  const Process second = run_report(root_ / "b");
+  ASSERT_EQ(second.exit_code, 0) << second.out;
   for (const char* name : kSections) {
     nlohmann::json a = section("a", name), b = section("b", name);
     for (nlohmann::json* s : {&a, &b})
