@@ -34,7 +34,8 @@ SectionResult run_ambient_sampling(const ReportSettings& s) {
     int samples_read;
   };
   std::vector<std::pair<Variant, FrameMeasurement>> runs;
-  for (const Variant& v : {Variant{AmbientSampling::nearest, "nearest (the engine's)", 1}, Variant{AmbientSampling::trilinear, "trilinear", 8}}) {
+  const Variant variants[] = {{AmbientSampling::nearest, "nearest (the engine's)", 1}, {AmbientSampling::trilinear, "trilinear", 8}};
+  for (const Variant& v : variants) {
     s.progress(std::string("ambient_sampling: ") + v.name);
     frame::FrameSettings f = scene.settings;
     f.ambient = v.sampling;

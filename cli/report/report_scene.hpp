@@ -1,5 +1,5 @@
 #pragma once
-// What the report's frame sections (msaa, shader_models, ambient_sampling, color_correction) render: the scene named
+// What the report's frame sections (renders_frames in report.hpp) render: the scene named
 // by --scene, prepared once by the command (loaded, its bake made or loaded as `luxel render`
 // does), its textures uploaded once and shared by every renderer, and one rasterizer context.
 //
