@@ -138,7 +138,7 @@ Runner add_report_command(CLI::App& app) {
   CLI::App* report = app.add_subcommand("report", "Reports on luxel's approximations");
   report->require_subcommand(1);
   CLI::App* cmd = report->add_subcommand(
-      "speed-error", "Each approximation's cost and its error against a reference computed in double, as tables and plots");
+      "speed-error", "Each approximation's cost and its error against a reference luxel computes itself, as tables and plots");
   cmd->add_option("--sections", o->sections, "Sections to run, comma-separated (default: all): " + section_names())
       ->delimiter(',');
   cmd->add_option("--probes", o->probes, "Folder searched for .hdr light probes (angular maps, lat-long 2:1)")
