@@ -15,6 +15,7 @@
 
 #include "commands.hpp"
 #include "compare_sheet.hpp"
+#include "frame_measurement.hpp"
 #include "frame_options.hpp"
 
 #include "luxel/frame/image_difference.hpp"
@@ -48,26 +49,8 @@ struct CompareOptions {
 };
 
 /// What one model's frame gave.
-struct ModelRun {
+struct ModelRun : FrameMeasurement {
   std::string name;
-  rasterizer::Image image;
-  std::vector<double> ms;  ///< the timed frames, sorted
-  std::vector<frame::ShaderUse> uses;
-
-  double median_ms() const {
-    const size_t n = ms.size();
-    return n % 2 ? ms[n / 2] : (ms[n / 2 - 1] + ms[n / 2]) / 2;
-  }
-  /// sum(pixels x slots) / sum(pixels), or nullopt when the frame counted no shading.
-  std::optional<double> slots_per_pixel() const {
-    double pixels = 0, slots = 0;
-    for (const frame::ShaderUse& u : uses) {
-      pixels += double(u.pixels);
-      slots += double(u.pixels) * u.slots;
-    }
-    if (pixels == 0) return std::nullopt;
-    return slots / pixels;
-  }
 };
 
 /// The models named by --models, in order; nullopt after printing one line (exit 2).
@@ -157,34 +140,15 @@ void print_table(const std::vector<Pair>& pairs) {
   }
 }
 
-/// Renders the scene as `model`: one counted frame for the shader uses, then on a renderer that
-/// does not count, one warm-up frame (the image compared) and `frames` timed ones.
+/// Renders the scene as `model`, measured as frame_measurement.hpp says: the frame compared is the
+/// first, as `luxel render --model` writes it.
 std::optional<ModelRun> run_model(const FrameOptions& options, const scenes::Scene& scene, frame::FrameSettings settings,
                                   shading::ShaderModel model, int frames, rasterizer::Context& ctx, int& code) {
-  ModelRun run;
-  run.name = std::string(shading::caps(model).name);
   settings.model = model;
-  settings.count_shading = true;
-  {
-    const std::unique_ptr<frame::Renderer> counted = options.make_renderer("compare", scene, settings, ctx, code);
-    if (!counted) return std::nullopt;
-    counted->render(ctx);
-    run.uses = counted->shader_uses();
-  }
-  settings.count_shading = false;
-  const std::unique_ptr<frame::Renderer> timed = options.make_renderer("compare", scene, settings, ctx, code);
-  if (!timed) return std::nullopt;
-  timed->render(ctx);
-  // The first frame, as `luxel render --model` writes it: a frame carries state into the next
-  // (time-averaged lighting), so a later one would make the numbers depend on --frames.
-  run.image = timed->image();
-  for (int i = 0; i < frames; ++i) {
-    const auto start = std::chrono::steady_clock::now();
-    timed->render(ctx);
-    run.ms.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count());
-  }
-  std::sort(run.ms.begin(), run.ms.end());
-  return run;
+  std::optional<FrameMeasurement> m = measure_frame(
+      [&](const frame::FrameSettings& s) { return options.make_renderer("compare", scene, s, ctx, code); }, settings, frames, ctx);
+  if (!m) return std::nullopt;
+  return ModelRun{std::move(*m), std::string(shading::caps(model).name)};
 }
 
 }  // namespace

@@ -1,14 +1,19 @@
 // luxel report speed-error [--sections NAME,...] [--probes DIR] [--normals N] [--grid ROWS]
-// [--repeats R] --out DIR: each approximation's cost and its error against a reference luxel
-// computes itself (cli/report/report.hpp says what is written; each section's file what it
-// measures). The tables also go to stdout; progress to stderr as a live line, on a terminal only.
+// [--scene SCENE] [--width W] [--height H] [--bake full|quick] [--threads N] [--repeats R] --out DIR:
+// each approximation's cost and its error against a reference luxel computes itself
+// (cli/report/report.hpp says what is written; each section's file what it measures). The frame
+// sections render --scene, prepared once here as `luxel render` prepares it (frame_options.hpp),
+// only when one of them is chosen. The tables also go to stdout; progress to stderr as a live
+// line, on a terminal only.
 //
-// Exit codes: 2 for bad arguments (an unknown section), 1 for files (a probe that cannot be read,
-// an output that cannot be written); one line on stderr each.
+// Exit codes: 2 for bad arguments (an unknown section, a --scene that names no scene), 1 for files
+// (a probe or scene that cannot be read, an output that cannot be written); one line on stderr each.
 
 #include "commands.hpp"
+#include "frame_options.hpp"
 
 #include "report/report.hpp"
+#include "report/report_scene.hpp"
 
 #include <unistd.h>
 
@@ -17,6 +22,7 @@
 #include <filesystem>
 #include <iostream>
 #include <memory>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -30,7 +36,18 @@ struct SpeedErrorOptions {
   std::string probes = "../shared/assets/hdr";
   std::string out;
   int normals = 1000, grid = 192, repeats = 5;
+  FrameOptions frame;  ///< --scene --width --height --bake --threads; the rest is the report's (report_scene.hpp)
 };
+
+/// The frames' options: the scene at --width x --height, the frame's defaults otherwise, the post
+/// passes off (report_scene.hpp).
+FrameOptions report_frame_options() {
+  FrameOptions o;
+  o.scene = "builtin:courtyard";
+  o.settings.width = 320, o.settings.height = 180;
+  o.settings.color_correction = false;
+  return o;
+}
 
 std::string section_names() {
   std::string names;
@@ -67,8 +84,30 @@ int run_speed_error(const SpeedErrorOptions& o) {
     std::cerr << "luxel report: " << o.out << ": cannot create the folder for the report\n";
     return 1;
   }
+  // The scene, when a chosen section renders frames: loaded, baked (or its bake loaded), its
+  // textures uploaded once.
+  std::optional<scenes::Scene> scene;
+  std::optional<rasterizer::Context> ctx;
+  ReportScene frames;
+  if (std::any_of(sections.begin(), sections.end(), [](const ReportSection* s) { return s->renders_frames; })) {
+    int code = 0;
+    const auto context_options = o.frame.context_options("report", code);
+    if (!context_options) return code;
+    frames.settings = o.frame.settings;
+    scene = o.frame.prepare_scene("report", frames.settings, {}, code);
+    if (!scene) return code;
+    try {
+      frames.textures = std::make_shared<const frame::SceneTextures>(*scene);
+    } catch (const std::exception& e) {
+      std::cerr << "luxel report: " << o.frame.scene << ": " << e.what() << "\n";
+      return 1;
+    }
+    ctx.emplace(*context_options);
+    frames.name = o.frame.scene, frames.scene = &*scene, frames.ctx = &*ctx;
+  }
   const bool terminal = isatty(STDERR_FILENO);
   ReportSettings settings;
+  if (scene) settings.scene = &frames;
   settings.probes = o.probes, settings.normals = o.normals, settings.grid_rows = o.grid, settings.timing_repeats = o.repeats;
   // Progress: a live line on a terminal, cleared when done; nothing in a log, where an error
   // stays the one line on stderr.
@@ -95,10 +134,11 @@ int run_speed_error(const SpeedErrorOptions& o) {
 
 Runner add_report_command(CLI::App& app) {
   auto o = std::make_shared<SpeedErrorOptions>();
+  o->frame = report_frame_options();
   CLI::App* report = app.add_subcommand("report", "Reports on luxel's approximations");
   report->require_subcommand(1);
   CLI::App* cmd = report->add_subcommand(
-      "speed-error", "Each approximation's cost and its error against a reference computed in double, as tables and plots");
+      "speed-error", "Each approximation's cost and its error against a reference luxel computes itself, as tables and plots");
   cmd->add_option("--sections", o->sections, "Sections to run, comma-separated (default: all): " + section_names())
       ->delimiter(',');
   cmd->add_option("--probes", o->probes, "Folder searched for .hdr light probes (angular maps, lat-long 2:1)")
@@ -108,6 +148,21 @@ Runner add_report_command(CLI::App& app) {
       ->capture_default_str();
   cmd->add_option("--grid", o->grid, "Rows of the equal-area grid analytic environments are sampled on (x2 columns)")
       ->check(CLI::Range(8, 4096))
+      ->capture_default_str();
+  cmd->add_option("--scene", o->frame.scene, "Scene the frame sections render: FILE.gltf, FILE.glb or builtin:NAME")
+      ->capture_default_str();
+  cmd->add_option("--width", o->frame.settings.width, "Width of the frame sections' frames")
+      ->check(CLI::Range(1, 8192))
+      ->capture_default_str();
+  cmd->add_option("--height", o->frame.settings.height, "Height of the frame sections' frames")
+      ->check(CLI::Range(1, 8192))
+      ->capture_default_str();
+  cmd->add_option("--bake", o->frame.bake,
+                  "When the scene needs a bake it lacks (kept as `luxel bake` keeps it): full, or quick (a preview in seconds)")
+      ->check(CLI::IsMember({"full", "quick"}))
+      ->capture_default_str();
+  cmd->add_option("--threads", o->frame.threads, "Worker threads of the frame sections (0 = one per core)")
+      ->check(CLI::Range(0, 256))
       ->capture_default_str();
   cmd->add_option("--repeats", o->repeats, "Timing runs per variant (the median is reported)")
       ->check(CLI::Range(1, 101))

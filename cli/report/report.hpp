@@ -1,8 +1,9 @@
 #pragma once
 // `luxel report speed-error`: for each approximation luxel makes, its cost and its error against a
-// reference luxel computes itself in double. The report is made of sections (lighting bases,
-// later world lighting, exposure, MSAA...); a section is one small file that measures its rows and
-// says how its plot is drawn, and this file writes every section the same way:
+// reference luxel computes itself (in double, or a frame drawn without the approximation). The
+// report is made of sections (lighting bases, MSAA, shader models, ambient sampling, tone mapping,
+// color correction; later world lighting, exposure...); a section is one small file that measures
+// its rows and says how its plot is drawn, and this file writes every section the same way:
 //
 //   DIR/speed_error.txt   the tables, one per section, with the notes and references under them
 //   DIR/speed_error.json  the same rows (cost, timing and error apart) and each plot's points
@@ -20,6 +21,8 @@
 
 namespace luxel::cli {
 
+struct ReportScene;  // report_scene.hpp
+
 /// What a section is measured with: command-line settings shared by every section.
 struct ReportSettings {
   std::string probes;        ///< folder searched (recursively) for .hdr light probes
@@ -27,6 +30,9 @@ struct ReportSettings {
   int grid_rows = 192;       ///< rows of the equal-area grid analytic environments are sampled on
   int timing_repeats = 5;    ///< timing runs per variant; the median is reported
   std::function<void(const std::string&)> progress;  ///< one line per slow step (stderr)
+  /// The scene the frame sections render (--scene, prepared by the command when a chosen section
+  /// renders frames); null otherwise.
+  const ReportScene* scene = nullptr;
 };
 
 /// What a column holds, which decides where it goes in the JSON ("cost", "timing", "error").
@@ -70,6 +76,7 @@ struct ReportSection {
   std::string name;     ///< `--sections` picks it by this; also its PNG's name
   std::string summary;  ///< for --help
   std::function<SectionResult(const ReportSettings&)> run;
+  bool renders_frames = false;  ///< needs ReportSettings::scene
 };
 
 /// Every section, in report order.

@@ -7,5 +7,10 @@
 namespace luxel::cli {
 
 ReportSection lighting_bases_section();
+ReportSection msaa_section();
+ReportSection shader_models_section();
+ReportSection ambient_sampling_section();
+ReportSection tone_mapping_section();
+ReportSection color_correction_section();
 
 }  // namespace luxel::cli

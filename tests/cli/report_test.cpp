@@ -58,7 +58,8 @@ class ReportCommand : public ::testing::Test {
     scenes::write_image(probe(64, 32, 0.5f, 0.5f), (root_ / "probes" / "uniform.hdr").string());
     scenes::write_image(probe(48, 48, 2.0f, 0.25f), (root_ / "probes" / "sub" / "two_tone.hdr").string());
     for (const char* out : {"a", "b"}) {
-      runs_.push_back(run_luxel("report speed-error --normals 200 --grid 96 --repeats 1 --probes " + (root_ / "probes").string() +
+      runs_.push_back(run_luxel("report speed-error --sections lighting_bases --normals 200 --grid 96 --repeats 1 --probes " +
+                                (root_ / "probes").string() +
                                 " --out " + (root_ / out).string() + " 2>/dev/null"));
     }
   }
@@ -145,7 +146,8 @@ TEST_F(ReportCommand, PrintsTheTableItWrites) {
 
 TEST(ReportCommandProbes, AMissingFolderSkipsTheProbeRowsWithANote) {
   const fs::path out = fs::temp_directory_path() / ("luxel_report_noprobes_" + std::to_string(getpid()));
-  const Process run = run_luxel("report speed-error --normals 20 --grid 16 --repeats 1 --probes " + (out / "none").string() +
+  const Process run = run_luxel("report speed-error --sections lighting_bases --normals 20 --grid 16 --repeats 1 --probes " +
+                                (out / "none").string() +
                                 " --out " + out.string() + " 2>/dev/null");
   ASSERT_EQ(run.exit_code, 0) << run.out;
   EXPECT_NE(run.out.find("is not a folder; the probe rows are skipped"), std::string::npos) << run.out;

@@ -1,0 +1,223 @@
+// `luxel report speed-error`'s frame sections (msaa, shader_models, ambient_sampling, tone_mapping,
+// color_correction) on a small courtyard frame (a quick bake, made on demand in the build tree's
+// cache), run twice:
+//  - MSAA: the error against the supersampled frame falls from 1 sample to 8;
+//  - each section's reference row is exactly its reference (ps_3_0, trilinear): 0 steps and an
+//    infinite PSNR (null in the JSON), and its cheapest row (ps_2_0, nearest) is not;
+//  - tone mapping in the shader into 8 bits is the float target tone-mapped afterwards within a
+//    step: nothing blends in the capture it is measured on, so only the last rounding may differ;
+//  - the engine's LUTs of the built-in grades stay within color_correction.hpp's 2 steps;
+//  - the rows state scene, resolution, reference and CPU; the second run gives the same numbers but
+//    for the timing columns, and the same plots, which are PNGs of the size the JSON says;
+// and the box filter behind the MSAA references, in both spaces, against sums worked by hand.
+
+#include "cli/run_luxel.hpp"
+
+#include "report/box_filter.hpp"
+
+#include "luxel/frame/image_difference.hpp"
+#include "luxel/scenes/image_io.hpp"
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include <unistd.h>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace luxel::cli {
+namespace {
+
+namespace fs = std::filesystem;
+using test::Process;
+using test::run_luxel;
+
+std::string slurp(const fs::path& p) {
+  std::ifstream f(p, std::ios::binary);
+  std::stringstream s;
+  s << f.rdbuf();
+  return s.str();
+}
+
+const char* const kSections[] = {"msaa", "shader_models", "ambient_sampling", "tone_mapping", "color_correction"};
+
+/// The report of the frame sections into `out` (ctest runs each test in its own process: the one
+/// run the fixture makes serves a test, and only the determinism test makes a second).
+Process run_report(const fs::path& out) {
+  return run_luxel("report speed-error --sections msaa,shader_models,ambient_sampling,tone_mapping,color_correction "
+                   "--scene builtin:courtyard --bake quick --width 64 --height 36 --repeats 1 --out " +
+                   out.string() + " 2>/dev/null");
+}
+
+class ReportFrames : public ::testing::Test {
+ protected:
+  static void SetUpTestSuite() {
+    root_ = fs::temp_directory_path() / ("luxel_report_frames_test_" + std::to_string(getpid()));
+    run_ = run_report(root_ / "a");
+  }
+  static void TearDownTestSuite() { fs::remove_all(root_); }
+
+  static nlohmann::json section(const char* run, const std::string& name) {
+    const nlohmann::json report = nlohmann::json::parse(slurp(root_ / run / "speed_error.json"));
+    for (const nlohmann::json& s : report["sections"])
+      if (s["name"] == name) return s;
+    throw std::runtime_error("no section " + name);
+  }
+
+  static inline fs::path root_;
+  static inline Process run_;
+};
+
+TEST_F(ReportFrames, RowsStateWhatTheyMeasured) {
+  ASSERT_EQ(run_.exit_code, 0) << run_.out;
+  for (const char* name : kSections) {
+    const nlohmann::json s = section("a", name);
+    ASSERT_FALSE(s["rows"].empty()) << name;
+    for (const nlohmann::json& row : s["rows"]) {
+      EXPECT_EQ(row["scene"], "builtin:courtyard") << name;
+      EXPECT_EQ(row["resolution"], "64x36") << name;
+      for (const char* field : {"variant", "reference", "cpu"}) EXPECT_FALSE(row[field].get<std::string>().empty()) << name;
+      for (const auto& [key, ms] : row["timing"].items()) EXPECT_GT(ms.get<double>(), 0.0) << name << " " << key;
+    }
+  }
+  EXPECT_NE(section("a", "msaa")["rows"][0]["reference"].get<std::string>().find("512x288 with 1 sample per pixel"),
+            std::string::npos);
+}
+
+TEST_F(ReportFrames, MsaaErrorFallsAsSamplesRise) {
+  // Four rows against the box filter in the resolve's space, then four against linear light.
+  const nlohmann::json rows = section("a", "msaa")["rows"];
+  ASSERT_EQ(rows.size(), 8u);
+  std::vector<int> samples;
+  for (const nlohmann::json& row : rows) samples.push_back(row["cost"]["samples"]);
+  EXPECT_EQ(samples, (std::vector<int>{1, 2, 4, 8, 1, 2, 4, 8}));
+  EXPECT_EQ(rows[0]["variant"], "MSAA vs sRGB-space box");
+  EXPECT_EQ(rows[4]["variant"], "MSAA vs linear-light box");
+  const nlohmann::json &one = rows[0]["error"], &eight = rows[3]["error"];
+  EXPECT_GT(one["mean_steps"].get<double>(), eight["mean_steps"].get<double>());
+  EXPECT_LT(one["psnr_db"].get<double>(), eight["psnr_db"].get<double>());
+}
+
+/// The last row is the section's reference drawn again: 0 against it; the first, the cheapest
+/// approximation, is not.
+void expect_reference_last(const nlohmann::json& rows, const std::string& reference_variant) {
+  ASSERT_GE(rows.size(), 2u);
+  const nlohmann::json& last = rows.back();
+  EXPECT_EQ(last["variant"], reference_variant);
+  EXPECT_EQ(last["error"]["max_steps"], 0);
+  EXPECT_EQ(last["error"]["mean_steps"], 0.0);
+  EXPECT_TRUE(last["error"]["psnr_db"].is_null());  // +infinity
+  EXPECT_GT(rows[0]["error"]["max_steps"].get<int>(), 0) << rows[0]["variant"];
+  EXPECT_TRUE(std::isfinite(rows[0]["error"]["psnr_db"].get<double>())) << rows[0]["variant"];
+}
+
+TEST_F(ReportFrames, ShaderModelsAgainstPs30) {
+  const nlohmann::json rows = section("a", "shader_models")["rows"];
+  ASSERT_EQ(rows.size(), 3u);
+  EXPECT_EQ(rows[0]["variant"], "ps_2_0");
+  EXPECT_EQ(rows[1]["variant"], "ps_2_b");
+  expect_reference_last(rows, "ps_3_0");
+  for (const nlohmann::json& row : rows) EXPECT_GT(row["cost"]["slots_per_pixel"].get<double>(), 0.0);
+}
+
+TEST_F(ReportFrames, NearestAmbientAgainstTrilinear) {
+  const nlohmann::json rows = section("a", "ambient_sampling")["rows"];
+  ASSERT_EQ(rows.size(), 2u);
+  EXPECT_EQ(rows[0]["cost"]["volume_samples"], 1);
+  EXPECT_EQ(rows[1]["cost"]["volume_samples"], 8);
+  expect_reference_last(rows, "trilinear");
+}
+
+TEST_F(ReportFrames, InShaderToneMapIsTheFloatTargetsWithinAStep) {
+  const nlohmann::json rows = section("a", "tone_mapping")["rows"];
+  ASSERT_EQ(rows.size(), 3u);
+  for (const nlohmann::json& row : rows) {
+    EXPECT_LE(row["error"]["max_steps"].get<int>(), 1) << row["label"];
+    EXPECT_LT(row["error"]["differing_share"].get<double>(), 0.05) << row["label"];
+    EXPECT_EQ(row["cost"]["target_bytes_per_pixel"], 4) << row["label"];
+  }
+}
+
+TEST_F(ReportFrames, EngineLutsStayNearTheExactGrades) {
+  // postfx/color_correction.hpp: the built-in presets through the engine's lattice are within 2
+  // steps of the exact grade over every 8-bit color.
+  const nlohmann::json rows = section("a", "color_correction")["rows"];
+  ASSERT_EQ(rows.size(), 4u);
+  for (const nlohmann::json& row : rows) {
+    EXPECT_LE(row["error"]["max_steps"].get<int>(), 2) << row["label"];
+    EXPECT_GT(row["cost"]["slots_per_pixel"].get<double>(), 0.0) << row["label"];
+  }
+}
+
+TEST_F(ReportFrames, TwoRunsGiveTheSameNumbersAndPlots) {
+  const Process second = run_report(root_ / "b");
+  ASSERT_EQ(second.exit_code, 0) << second.out;
+  for (const char* name : kSections) {
+    nlohmann::json a = section("a", name), b = section("b", name);
+    for (nlohmann::json* s : {&a, &b})
+      for (nlohmann::json& row : (*s)["rows"]) row.erase("timing");
+    EXPECT_EQ(a, b) << name;
+    EXPECT_EQ(slurp(root_ / "a" / (std::string(name) + ".png")), slurp(root_ / "b" / (std::string(name) + ".png"))) << name;
+  }
+}
+
+TEST_F(ReportFrames, PlotsArePngsOfTheSizeTheJsonSays) {
+  for (const char* name : kSections) {
+    const nlohmann::json plot = section("a", name)["plot"];
+    ASSERT_EQ(plot["file"], std::string(name) + ".png");
+    const scenes::PixelImage png = scenes::read_image((root_ / "a" / plot["file"].get<std::string>()).string());
+    EXPECT_EQ(png.width, plot["width"].get<int>()) << name;
+    EXPECT_EQ(png.height, plot["height"].get<int>()) << name;
+  }
+}
+
+rasterizer::Image image_of(int width, int height, const std::vector<uint8_t>& red) {
+  rasterizer::Image image(width, height);
+  for (size_t i = 0; i < red.size(); ++i) {
+    image.rgba[i * 4] = red[i];
+    image.rgba[i * 4 + 3] = 255;
+  }
+  return image;
+}
+
+TEST(BoxFilterDown, RoundsEachBlocksMeanHalfUpAsTheResolve) {
+  // Two 2x2 blocks side by side: sums 1 (mean 0.25 -> 0), 2 (0.5 -> 1, half up) and, below, 6
+  // (1.5 -> 2) and 1020 (255).
+  const rasterizer::Image big = image_of(4, 4, {0, 0, 1, 1,        //
+                                                0, 1, 0, 0,        //
+                                                1, 2, 255, 255,    //
+                                                2, 1, 255, 255});
+  const rasterizer::Image small = box_filter_down(big, 2);
+  ASSERT_EQ(small.width, 2);
+  ASSERT_EQ(small.height, 2);
+  EXPECT_EQ(small.pixel(0, 0)[0], 0);
+  EXPECT_EQ(small.pixel(1, 0)[0], 1);
+  EXPECT_EQ(small.pixel(0, 1)[0], 2);
+  EXPECT_EQ(small.pixel(1, 1)[0], 255);
+  EXPECT_EQ(small.pixel(1, 1)[3], 255);
+  // Factor 1 is the image itself: against it, nothing differs and the PSNR is infinite.
+  const frame::ImageDifference same = frame::image_difference(box_filter_down(big, 1), big);
+  EXPECT_TRUE(same.identical());
+  EXPECT_TRUE(std::isinf(same.psnr_db));
+  EXPECT_THROW(box_filter_down(big, 3), std::invalid_argument);
+}
+
+TEST(BoxFilterDown, LinearLightAveragesDecodedValues) {
+  // Black and white halves: 127.5 stored, rounded half up to 128; in linear light the mean is
+  // 0.5, sRGB-encoded 0.7354 x 255 = 187.5, rounded to 188. Alpha stays stored.
+  const rasterizer::Image big = image_of(2, 2, {0, 255, 255, 0});
+  EXPECT_EQ(box_filter_down(big, 2, BoxSpace::stored).pixel(0, 0)[0], 128);
+  const rasterizer::Image linear = box_filter_down(big, 2, BoxSpace::linear_light);
+  EXPECT_EQ(linear.pixel(0, 0)[0], 188);
+  EXPECT_EQ(linear.pixel(0, 0)[1], 0);
+  EXPECT_EQ(linear.pixel(0, 0)[3], 255);
+}
+
+}  // namespace
+}  // namespace luxel::cli
