@@ -38,12 +38,6 @@ namespace fs = std::filesystem;
 using test::Process;
 using test::run_luxel;
 
-std::string slurp(const fs::path& p) {
-  std::ifstream f(p, std::ios::binary);
-  std::stringstream s;
-  s << f.rdbuf();
-  return s.str();
-}
 
 const char* const kSections[] = {"msaa", "shader_models", "ambient_sampling", "tone_mapping", "color_correction"};
 
@@ -64,7 +58,7 @@ class ReportFrames : public ::testing::Test {
   static void TearDownTestSuite() { fs::remove_all(root_); }
 
   static nlohmann::json section(const char* run, const std::string& name) {
-    const nlohmann::json report = nlohmann::json::parse(slurp(root_ / run / "speed_error.json"));
+    const nlohmann::json report = nlohmann::json::parse(test::file_text(root_ / run / "speed_error.json"));
     for (const nlohmann::json& s : report["sections"])
       if (s["name"] == name) return s;
     throw std::runtime_error("no section " + name);
@@ -163,7 +157,7 @@ TEST_F(ReportFrames, TwoRunsGiveTheSameNumbersAndPlots) {
     for (nlohmann::json* s : {&a, &b})
       for (nlohmann::json& row : (*s)["rows"]) row.erase("timing");
     EXPECT_EQ(a, b) << name;
-    EXPECT_EQ(slurp(root_ / "a" / (std::string(name) + ".png")), slurp(root_ / "b" / (std::string(name) + ".png"))) << name;
+    EXPECT_EQ(test::file_text(root_ / "a" / (std::string(name) + ".png")), test::file_text(root_ / "b" / (std::string(name) + ".png"))) << name;
   }
 }
 

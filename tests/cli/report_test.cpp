@@ -32,12 +32,6 @@ namespace fs = std::filesystem;
 using test::Process;
 using test::run_luxel;
 
-std::string slurp(const fs::path& p) {
-  std::ifstream f(p, std::ios::binary);
-  std::stringstream s;
-  s << f.rdbuf();
-  return s.str();
-}
 
 scenes::PixelImage probe(int width, int height, float top, float bottom) {
   scenes::PixelImage image;
@@ -65,7 +59,7 @@ class ReportCommand : public ::testing::Test {
   }
   static void TearDownTestSuite() { fs::remove_all(root_); }
 
-  static nlohmann::json json(const char* run) { return nlohmann::json::parse(slurp(root_ / run / "speed_error.json")); }
+  static nlohmann::json json(const char* run) { return nlohmann::json::parse(test::file_text(root_ / run / "speed_error.json")); }
 
   static inline fs::path root_;
   static inline std::vector<Process> runs_;
@@ -114,7 +108,7 @@ TEST_F(ReportCommand, TwoRunsGiveTheSameNumbersAndPlots) {
     for (nlohmann::json& s : (*j)["sections"])
       for (nlohmann::json& row : s["rows"]) row.erase("timing");
   EXPECT_EQ(a, b);
-  EXPECT_EQ(slurp(root_ / "a" / "lighting_bases.png"), slurp(root_ / "b" / "lighting_bases.png"));
+  EXPECT_EQ(test::file_text(root_ / "a" / "lighting_bases.png"), test::file_text(root_ / "b" / "lighting_bases.png"));
 }
 
 TEST_F(ReportCommand, PlotIsAPngWithTheLabelsTheJsonLists) {
@@ -137,7 +131,7 @@ TEST_F(ReportCommand, PlotIsAPngWithTheLabelsTheJsonLists) {
 }
 
 TEST_F(ReportCommand, PrintsTheTableItWrites) {
-  const std::string text = slurp(root_ / "a" / "speed_error.txt");
+  const std::string text = test::file_text(root_ / "a" / "speed_error.txt");
   EXPECT_NE(runs_[0].out.find(text), std::string::npos);
   EXPECT_NE(text.find("cpu: "), std::string::npos);
   EXPECT_NE(text.find("== lighting_bases: "), std::string::npos);
@@ -151,7 +145,7 @@ TEST(ReportCommandProbes, AMissingFolderSkipsTheProbeRowsWithANote) {
                                 " --out " + out.string() + " 2>/dev/null");
   ASSERT_EQ(run.exit_code, 0) << run.out;
   EXPECT_NE(run.out.find("is not a folder; the probe rows are skipped"), std::string::npos) << run.out;
-  EXPECT_EQ(nlohmann::json::parse(slurp(out / "speed_error.json"))["sections"][0]["rows"].size(), 9u);
+  EXPECT_EQ(nlohmann::json::parse(test::file_text(out / "speed_error.json"))["sections"][0]["rows"].size(), 9u);
   fs::remove_all(out);
 }
 
