@@ -341,7 +341,7 @@ void check_thread_counts(const char* name, const SceneFn& scene) {
   ASSERT_FALSE(reference.bytes.empty());
   // LUXEL_DUMP_DIR=dir writes each scene's bytes but the stats to dir/<name>.bin: builds for
   // different ISAs (x86-64-v3, native, x86-64-v2) can then be compared byte by byte
-  // (CMakeLists.txt: within 1 LSB), which one build alone cannot check.
+  // (scripts/compare-isa), which one build alone cannot check.
   if (const char* dir = std::getenv("LUXEL_DUMP_DIR")) {
     std::string file = std::string(dir) + "/" + name + ".bin";
     std::replace(file.begin() + std::ptrdiff_t(std::strlen(dir)), file.end(), ' ', '_');
