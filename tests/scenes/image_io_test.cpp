@@ -8,6 +8,9 @@
 
 #include <gtest/gtest.h>
 
+#include <sys/resource.h>
+#include <sys/wait.h>
+
 #include <filesystem>
 #include <fstream>
 #include <random>
@@ -134,6 +137,45 @@ TEST(ImageIo, OversizedImagesAreRefusedBeforeAllocation) {
   } catch (const std::runtime_error& e) {
     EXPECT_EQ(std::string(e.what()), ppm + ": 20000x20000 is larger than 16384 on a side");
   }
+}
+
+// A header within the size limit claiming 16000 x 16000 pixels, with three bytes of them: refused
+// naming the file, having allocated (and touched) far less than the 768 MB it claims. The read runs
+// in a child process, whose peak resident size is its own.
+TEST(ImageIo, AClaimedSizeIsNotAllocatedBeforeDataBacksIt) {
+  TempDir dir;
+  const std::string ppm = dir.file("claims.ppm");
+  std::ofstream(ppm, std::ios::binary) << "P6\n16000 16000\n255\n" << "abc";
+  int pipe_ends[2];
+  ASSERT_EQ(pipe(pipe_ends), 0);
+  const pid_t child = fork();
+  ASSERT_GE(child, 0);
+  if (child == 0) {
+    rusage before{}, after{};
+    getrusage(RUSAGE_SELF, &before);
+    std::string message = "no exception";
+    try {
+      read_image(ppm);
+    } catch (const std::runtime_error& e) {
+      message = e.what();
+    }
+    getrusage(RUSAGE_SELF, &after);
+    message = std::to_string(after.ru_maxrss - before.ru_maxrss) + " " + message;
+    (void)!write(pipe_ends[1], message.data(), message.size());
+    _exit(0);
+  }
+  close(pipe_ends[1]);
+  std::string reply;
+  char buffer[512];
+  for (ssize_t n; (n = read(pipe_ends[0], buffer, sizeof buffer)) > 0;) reply.append(buffer, size_t(n));
+  close(pipe_ends[0]);
+  int status = 0;
+  waitpid(child, &status, 0);
+  const long grown_kb = std::stol(reply);
+  const std::string message = reply.substr(reply.find(' ') + 1);
+  EXPECT_LT(grown_kb, 64 * 1024) << "peak resident size grew by " << grown_kb << " KB";
+  EXPECT_EQ(message.rfind(ppm + ": ", 0), 0u) << message;
+  EXPECT_EQ(message.find('\n'), std::string::npos) << message;
 }
 
 // image.hpp: "missing channels: alpha 255, grey replicated". Binary PGM (grey) and PPM (RGB)
