@@ -166,9 +166,16 @@ class Importer {
                                     &Importer::write_file, this};
     loader.SetFsCallbacks(callbacks);
     std::string err, warn;
-    const bool ok = glb ? loader.LoadBinaryFromMemory(&model_, &err, &warn, bytes.data(), unsigned(bytes.size()), dir_)
-                        : loader.LoadASCIIFromString(&model_, &err, &warn, reinterpret_cast<const char*>(bytes.data()),
-                                                     unsigned(bytes.size()), dir_);
+    bool ok = false;
+    try {
+      ok = glb ? loader.LoadBinaryFromMemory(&model_, &err, &warn, bytes.data(), unsigned(bytes.size()), dir_)
+               : loader.LoadASCIIFromString(&model_, &err, &warn, reinterpret_cast<const char*>(bytes.data()),
+                                            unsigned(bytes.size()), dir_);
+    } catch (const std::exception& e) {
+      // tinygltf indexes with at() where it does not check (a .glb buffer of byteLength 0 is
+      // data.at(0) of an empty vector): its exception becomes this file's error.
+      fail(std::string("tinygltf could not read it (") + e.what() + ")");
+    }
     if (!fs_error_.empty()) fail(fs_error_);
     if (!ok) {
       std::string why = first_line(err.empty() ? warn : err);
