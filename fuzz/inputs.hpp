@@ -5,6 +5,7 @@
 // finding(); what is not a defect is an input read, or refused with the reader's documented error
 // of one line naming the file.
 
+#include <cstddef>
 #include <cstdint>
 #include <span>
 #include <stdexcept>
@@ -42,11 +43,19 @@ inline constexpr const char* kLutExtensions[] = {"cube", "3dl", "csp", "spi1d", 
 /// loads must attach to the scene and leave it valid (scenes::validate).
 void read_bake_input(std::span<const uint8_t> input);
 
+/// `luxel`'s arguments (cli/command_line.hpp), one per line (at most kMaxCliArguments; no
+/// argument can hold a newline), parsed but not run: accepted, or --help on stdout with exit 0,
+/// or one line on stderr with exit 2. Parsing must not throw.
+void read_cli_input(std::span<const uint8_t> input);
+inline constexpr size_t kMaxCliArguments = 64;
+
 /// Seeds of the formats luxel writes itself, written to `dir`: small images in every format
 /// OpenImageIO writes here; the engine's identity LUT as .cube and .raw (extension byte first);
 /// the demo bake's index with its hash replaced by @HASH@.
 void write_image_seeds(const std::string& dir);
 void write_lut_seeds(const std::string& dir);
 void write_bake_seed(const std::string& dir);
+/// The command lines of the README and the CLI tests, one argument per line.
+void write_cli_seeds(const std::string& dir);
 
 }  // namespace luxel::fuzz

@@ -66,6 +66,7 @@ TEST(FuzzReplay, GltfRegressions) { replay(files_under(kData / "fuzz/gltf"), rea
 TEST(FuzzReplay, ImageRegressions) { replay(files_under(kData / "fuzz/image"), read_image_input); }
 TEST(FuzzReplay, LutRegressions) { replay(files_under(kData / "fuzz/lut"), read_lut_input); }
 TEST(FuzzReplay, BakeRegressions) { replay(files_under(kData / "fuzz/bake"), read_bake_input); }
+TEST(FuzzReplay, CliRegressions) { replay(files_under(kData / "fuzz/cli"), read_cli_input); }
 
 TEST(FuzzReplay, GltfSeeds) {
   const std::vector<fs::path> files = files_under(kData / "gltf", {".gltf", ".glb"});
@@ -84,6 +85,15 @@ TEST(FuzzReplay, LutSeeds) {
   const std::vector<fs::path> files = files_under(kData / "luts", {".cube", ".3dl"});
   ASSERT_GE(files.size(), 4u);
   replay(files, read_lut_input, lut_input);
+}
+
+TEST(FuzzReplay, CliSeeds) {
+  const fs::path dir = scratch_path("cli-seeds");
+  fs::create_directories(dir);
+  write_cli_seeds(dir.string());
+  const std::vector<fs::path> files = files_under(dir);
+  ASSERT_GE(files.size(), 10u);
+  replay(files, read_cli_input);
 }
 
 // The checks can fail: an error of two lines, or one not naming its file, is a finding.
