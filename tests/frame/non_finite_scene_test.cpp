@@ -183,7 +183,9 @@ TEST(NonFiniteScene, EveryNumericFieldBeyondFloat) {
   numeric_leaves(d, "", leaves);
   ASSERT_GT(leaves.size(), 100u);
   for (const std::string& leaf : leaves) {
+    // Sanitizer builds take the positive value only (each variant costs 25 ms there, not 1).
     for (const char* text : {"1e300", "-1e300"}) {
+      if (kReduced && text[0] == '-') continue;
       const std::string path = dir.file("variant.gltf");
       scenes::test::write_text(path, with_number(d, leaf, text));
       const std::string problem = judge(path);
@@ -200,6 +202,7 @@ TEST(NonFiniteScene, EveryVertexAttributeFloatAsNanAndInfinity) {
   for (const auto& [name, array] : clean.attributes()) {
     for (size_t i = 0; i < array->size(); ++i) {
       for (float v : values) {
+        if (kReduced && !std::isnan(v)) continue;  // sanitizer builds: NaN only
         QuadBuffer q;
         for (auto& [other, values_of] : q.attributes())
           if (std::string(other) == name) (*values_of)[i] = v;

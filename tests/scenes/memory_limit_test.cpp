@@ -78,19 +78,19 @@ GltfBuilder triangle() {
   return b;
 }
 
-// Geometry is estimated before it is read: 3 x 2^20 vertices with normals of accessors without a
-// buffer view (zeros; 168 MiB as read and kept, with their 32-bit corners) refused at a 16 MiB
+// Geometry is estimated before it is read: 3 x 2^18 vertices with normals of accessors without a
+// buffer view (zeros; 42 MiB as read and kept, with their 32-bit corners) refused at a 16 MiB
 // limit, loaded at the default.
 TEST(MemoryLimit, GltfGeometryIsRefusedFromItsCounts) {
   TempDir dir;
   GltfBuilder b = triangle();
-  b.doc["accessors"].push_back({{"componentType", 5126}, {"count", 3u << 20}, {"type", "VEC3"}});
-  b.doc["accessors"].push_back({{"componentType", 5126}, {"count", 3u << 20}, {"type", "VEC3"}});
+  b.doc["accessors"].push_back({{"componentType", 5126}, {"count", 3u << 18}, {"type", "VEC3"}});
+  b.doc["accessors"].push_back({{"componentType", 5126}, {"count", 3u << 18}, {"type", "VEC3"}});
   b.add_node({{"mesh", b.add_mesh({{"POSITION", 2}, {"NORMAL", 3}})}});
   const std::string path = b.write(dir);
   GltfImportOptions low;
   low.memory_limit = uint64_t{16} << 20;
-  const std::string m = expect_gltf_error(path, "needs about 168 MiB (1048577 triangles, 3145731 vertices, 0 images, ", [&] { load_gltf(path, low); });
+  const std::string m = expect_gltf_error(path, "needs about 42 MiB (262145 triangles, 786435 vertices, 0 images, ", [&] { load_gltf(path, low); });
   EXPECT_NE(m.find("beyond the memory limit of 16 MiB (raise it with --memory-limit or LUXEL_MEMORY_LIMIT)"), std::string::npos) << m;
   EXPECT_NO_THROW(load_gltf(path));
 }
