@@ -7,6 +7,7 @@
 
 #include "baking.hpp"
 #include "commands.hpp"
+#include "memory_limit_option.hpp"
 
 #include "luxel/bake/bake.hpp"
 #include "luxel/bake/storage.hpp"
@@ -29,6 +30,7 @@ struct BakeOptions {
   std::string scene, out;
   int threads = 0;
   bool quick = false, force = false, cubes_all_light = false;
+  MemoryLimitOption memory;
 };
 
 }  // namespace
@@ -44,11 +46,17 @@ Runner add_bake_command(CLI::App& app) {
   cmd->add_flag("--force", o->force, "Bake even when the folder holds a bake of the same inputs");
   cmd->add_flag("--cubes-all-light", o->cubes_all_light,
                 "Ambient cubes with the lights' direct light too (for comparisons; the engine adds it itself)");
+  o->memory.add_to(*cmd);
   return [cmd, o]() -> int {
     if (!cmd->parsed()) return -1;
+    int code = 0;
+    const std::optional<uint64_t> memory_limit = o->memory.bytes("bake", code);
+    if (!memory_limit) return code;
     std::optional<scenes::Scene> scene;
     try {
-      scene = scenes::load_scene(o->scene);
+      scenes::GltfImportOptions gltf;
+      gltf.memory_limit = *memory_limit;
+      scene = scenes::load_scene(o->scene, gltf);
     } catch (const scenes::SceneArgumentError& e) {
       std::cerr << "luxel bake: --scene " << e.what() << "\n";
       return 2;
@@ -73,6 +81,7 @@ Runner add_bake_command(CLI::App& app) {
     bake::BakeSettings settings = o->quick ? bake::BakeSettings::quick() : bake::BakeSettings{};
     settings.threads = o->threads;
     settings.cubes_all_light = o->cubes_all_light;
+    settings.max_memory_bytes = *memory_limit;
     const frame::CubemapSettings cube_settings = o->quick ? frame::CubemapSettings::quick() : frame::CubemapSettings{};
     try {
       std::optional<bake::BakeResult> r;

@@ -83,6 +83,7 @@ void FrameOptions::add_to(CLI::App& cmd) {
                  "at full weight over the scene's color-correction nodes, and film grain about 1.3 times as strong as "
                  "--film-grain's, seeded by --film-grain's SEED or 0)")
       ->transform(CLI::CheckedTransformer(frame::look_names(), CLI::ignore_case));
+  memory.add_to(cmd);
 }
 
 std::optional<rasterizer::ContextOptions> FrameOptions::context_options(const std::string& command, int& code) const {
@@ -102,6 +103,9 @@ std::optional<rasterizer::ContextOptions> FrameOptions::context_options(const st
 
 std::optional<scenes::Scene> FrameOptions::prepare_scene(const std::string& command, frame::FrameSettings& frame_settings,
                                                          const std::vector<std::string>& outs, int& code) const {
+  const std::optional<uint64_t> memory_limit = memory.bytes(command, code);
+  if (!memory_limit) return std::nullopt;
+  frame_settings.memory_limit = *memory_limit;
   // The outputs first: a user should not wait for a render to learn it cannot be written.
   for (const std::string& out : outs) {
     const std::filesystem::path path(out), dir = path.parent_path();
@@ -115,6 +119,7 @@ std::optional<scenes::Scene> FrameOptions::prepare_scene(const std::string& comm
     }
   }
   scenes::GltfImportOptions gltf;
+  gltf.memory_limit = *memory_limit;
   if (scene.rfind("builtin:", 0) != 0) gltf.camera = std::exchange(frame_settings.camera, 0);
   std::optional<scenes::Scene> loaded =
       load_scene_or_report(command, scene, gltf, {frame_settings.width, frame_settings.height}, code);
@@ -127,6 +132,15 @@ std::optional<scenes::Scene> FrameOptions::prepare_scene(const std::string& comm
     code = 2;
     return std::nullopt;
   }
+  // Before a bake: a frame beyond the memory limit is known from its sizes (the renderer checks
+  // again with the bake's maps).
+  try {
+    frame::check_memory(*loaded, frame_settings);
+  } catch (const scenes::MemoryLimitError& e) {
+    std::cerr << "luxel " << command << ": " << e.what() << "\n";
+    code = 1;
+    return std::nullopt;
+  }
   if (needs_bake(*loaded)) {
     const std::string folder = default_bake_folder(scene);
     if (folder.empty()) {
@@ -137,6 +151,7 @@ std::optional<scenes::Scene> FrameOptions::prepare_scene(const std::string& comm
     }
     bake::BakeSettings bake_settings = bake == "quick" ? bake::BakeSettings::quick() : bake::BakeSettings{};
     bake_settings.threads = threads;
+    bake_settings.max_memory_bytes = *memory_limit;
     try {
       const frame::CubemapSettings cube_settings = bake == "quick" ? frame::CubemapSettings::quick() : frame::CubemapSettings{};
       bake_and_attach(*loaded, folder, bake_settings, cube_settings, ("luxel " + command).c_str());

@@ -1,7 +1,7 @@
 #pragma once
 // The options of the commands that render frames (`luxel render`, `luxel compare`): the scene, its
 // camera, the frame of its sequence, the image size, MSAA, worker threads and the bake made on
-// demand, the LUXEL_NO_FASTPATH
+// demand, the memory limit, the LUXEL_NO_FASTPATH
 // switches, and how each of them is reported when it is bad: one line on stderr naming the
 // argument, exit 2 for an argument (an unknown built-in, a camera the scene lacks, a bad switch),
 // 1 for a file that cannot be read or written.
@@ -9,6 +9,7 @@
 #include "luxel/frame/renderer.hpp"
 #include "luxel/rasterizer/context.hpp"
 #include "luxel/scenes/scene.hpp"
+#include "memory_limit_option.hpp"
 
 #include <CLI/CLI.hpp>
 
@@ -29,10 +30,11 @@ struct FrameOptions {
   std::optional<float> exposure;  ///< --exposure: a fixed tone-map scale
   bool no_bloom = false, bloom_true_height = false;
   std::optional<uint64_t> film_grain_seed;  ///< --film-grain SEED
+  MemoryLimitOption memory;                 ///< --memory-limit: the scene's import, the bake, the renderer
 
   /// Registers --scene --width --height --msaa --camera --camera-path --frame --fps --threads
   /// --bake --ambient --exposure --tonemap-algorithm --histogram --query-latency
-  /// --no-color-correction --no-bloom --bloom-true-height --film-grain --look on `cmd`.
+  /// --no-color-correction --no-bloom --bloom-true-height --film-grain --look --memory-limit on `cmd`.
   void add_to(CLI::App& cmd);
 
   /// The rasterizer context's options: the threads and LUXEL_NO_FASTPATH; nullopt after printing
@@ -40,8 +42,9 @@ struct FrameOptions {
   std::optional<rasterizer::ContextOptions> context_options(const std::string& command, int& code) const;
 
   /// The scene, ready to render with `settings` (a copy of this->settings with the command's own
-  /// fields set). What can fail quickly is checked first: that each of `outs` (the files the
-  /// command will write) has a folder and is not one. Then the scene is loaded (a file's camera N
+  /// fields set; its memory limit is set here). What can fail quickly is checked first: the memory
+  /// limit, and that each of `outs` (the files the command will write) has a folder and is not
+  /// one. Then the scene is loaded (a file's camera N
   /// is made its first on import, as `luxel info` and `export` do, and `settings` then looks
   /// through camera 0; a built-in is built for the settings' size), its camera checked, and the
   /// bake it needs and lacks loaded or made (cli/baking.hpp). nullopt after printing one line,

@@ -17,6 +17,7 @@
 // cannot be read or written; one line on stderr each.
 
 #include "commands.hpp"
+#include "memory_limit_option.hpp"
 
 #include "luxel/postfx/color_correction.hpp"
 #include "luxel/postfx/lut_file.hpp"
@@ -45,6 +46,7 @@ struct GradeOptions {
   bool exact = false;
   std::string save_lut;
   int threads = 0;
+  MemoryLimitOption memory;
 };
 
 std::string number(float v) {
@@ -76,9 +78,14 @@ std::vector<float> weights_of(const GradeOptions& o, std::string& error) {
   return o.weights;
 }
 
-/// The input as an 8-bit frame; throws std::runtime_error "IN: problem".
-rasterizer::Image read_frame(const std::string& path) {
-  scenes::PixelImage image = scenes::read_image(path);
+/// The input as an 8-bit frame, refused when it and its grade (in float with --exact) would need
+/// more than `memory_limit`; throws std::runtime_error "IN: problem".
+rasterizer::Image read_frame(const std::string& path, bool exact, uint64_t memory_limit) {
+  scenes::PixelImage image = scenes::read_image(path, memory_limit);
+  const uint64_t w = uint64_t(image.width), h = uint64_t(image.height);
+  scenes::check_memory(path, 2 * scenes::image_bytes(w, h, false) + (exact ? scenes::image_bytes(w, h, true) : 0),
+                       "a " + std::to_string(w) + "x" + std::to_string(h) + " image graded" + (exact ? " in float" : ""),
+                       memory_limit);
   if (image.is_hdr()) {
     throw std::runtime_error(path + ": a float image; luxel grade takes 8-bit frames (the engine grades its 8-bit back buffer)");
   }
@@ -132,6 +139,9 @@ void save_lut(const postfx::Lut& lut, const std::string& path, const std::string
 }
 
 int run_grade(const GradeOptions& o) {
+  int code = 0;
+  const std::optional<uint64_t> memory_limit = o.memory.bytes("grade", code);
+  if (!memory_limit) return code;
   std::string error;
   const std::vector<float> weights = weights_of(o, error);
   if (o.luts.size() > size_t(postfx::kMaxLuts)) {
@@ -148,7 +158,7 @@ int run_grade(const GradeOptions& o) {
   try {
     std::vector<postfx::ColorTransform> transforms;
     for (const std::string& name : o.luts) transforms.push_back(postfx::color_transform_named(name));
-    const rasterizer::Image frame = read_frame(o.in);
+    const rasterizer::Image frame = read_frame(o.in, o.exact, *memory_limit);
     if (o.exact) grade_exact(o, frame, transforms, weights);
     else grade_engine(o, frame, transforms, weights);
     if (!o.save_lut.empty()) save_lut(postfx::sample_lut(transforms[0]), o.save_lut, transforms[0].name);
@@ -186,6 +196,7 @@ Runner add_grade_command(CLI::App& app) {
                   "Also write the (one) LUT's 32^3 engine lattice: FILE.cube, or FILE.raw (Source's own format)");
   cmd->add_option("--threads", o->threads, "Worker threads (default: all cores); never changes the result")
       ->check(CLI::Range(0, 256));
+  o->memory.add_to(*cmd);
   return [cmd, o]() -> int {
     if (!cmd->parsed()) return -1;
     return run_grade(*o);

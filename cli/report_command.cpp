@@ -164,6 +164,7 @@ Runner add_report_command(CLI::App& app) {
   cmd->add_option("--threads", o->frame.threads, "Worker threads of the frame sections (0 = one per core)")
       ->check(CLI::Range(0, 256))
       ->capture_default_str();
+  o->frame.memory.add_to(*cmd);
   cmd->add_option("--repeats", o->repeats, "Timing runs per variant (the median is reported)")
       ->check(CLI::Range(1, 101))
       ->capture_default_str();

@@ -4,6 +4,7 @@
 // exit 2 for an argument that names no scene, 1 for a file that cannot be read.
 
 #include "luxel/scenes/load.hpp"
+#include "memory_limit_option.hpp"
 
 #include <CLI/CLI.hpp>
 
@@ -32,18 +33,23 @@ inline std::optional<scenes::Scene> load_scene_or_report(const std::string& comm
 struct SceneArgument {
   std::string scene;
   int camera = 0;
+  MemoryLimitOption memory;
 
   void add_to(CLI::App& cmd) {
     cmd.add_option("--scene", scene, "Scene: FILE.gltf, FILE.glb or builtin:NAME")->required();
     cmd.add_option("--camera", camera, "The file's camera to use first (index into its cameras)")
         ->check(CLI::Range(0, 1 << 20))
         ->capture_default_str();
+    memory.add_to(cmd);
   }
 
   /// The scene, or nullopt after printing one line and setting `code`.
   std::optional<scenes::Scene> load(const std::string& command, int& code) const {
     scenes::GltfImportOptions options;
     options.camera = camera;
+    const std::optional<uint64_t> limit = memory.bytes(command, code);
+    if (!limit) return std::nullopt;
+    options.memory_limit = *limit;
     return load_scene_or_report(command, scene, options, {}, code);
   }
 };

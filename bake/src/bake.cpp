@@ -3,6 +3,8 @@
 
 #include "stages.hpp"
 
+#include "luxel/scenes/memory_limit.hpp"
+
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -107,11 +109,14 @@ BakeResult bake(const scenes::Scene& original, const BakeSettings& settings, con
       warnings.push_back(scene.name + ": at " + std::to_string(luxel_size) + " inches a luxel the lightmap atlas is only " +
                          std::to_string(side) + " x " + std::to_string(side) + " luxels");
     }
-    const uint64_t bytes = uint64_t(side) * uint64_t(side) * kBytesPerTexel;
-    if (side > 0 && bytes > settings.max_memory_bytes)
-      throw BakeError(scene.name + ": a " + std::to_string(side) + " x " + std::to_string(side) + " lightmap atlas needs about " +
-                      std::to_string(bytes >> 20) + " MiB, more than the cap of " +
-                      std::to_string(settings.max_memory_bytes >> 20) + " MiB (a larger luxel size makes it smaller)");
+    try {
+      scenes::check_memory(scene.name, uint64_t(side) * uint64_t(side) * kBytesPerTexel,
+                           "a " + std::to_string(side) + " x " + std::to_string(side) +
+                               " lightmap atlas; a larger luxel size makes it smaller",
+                           settings.max_memory_bytes);
+    } catch (const scenes::MemoryLimitError& e) {
+      throw BakeError(e.what());
+    }
   }
 
   const bool glows = std::any_of(in.emissive.begin(), in.emissive.end(), [&](glm::vec3 e) { return e != glm::vec3(0.0f); });

@@ -13,6 +13,7 @@
 #include "luxel/rasterizer/framebuffer.hpp"
 #include "luxel/rasterizer/msaa.hpp"
 #include "luxel/rasterizer/srgb.hpp"
+#include "luxel/scenes/memory_limit.hpp"
 #include "luxel/scenes/paths.hpp"
 #include "luxel/scenes/tangents.hpp"
 #include "luxel/shading/source/normalization_cube.hpp"
@@ -229,10 +230,32 @@ const FrameSettings& checked(const scenes::Scene& scene, const FrameSettings& s)
   return s;
 }
 
+}  // namespace
+
+void check_memory(const scenes::Scene& scene, const FrameSettings& s) {
+  uint64_t uploads = 0;  // RGBA8 or RGBA16F, each with its mips (a third more)
+  for (const scenes::Texture& t : scene.textures)
+    for (const scenes::PixelImage& face : t.faces) uploads += uint64_t(face.width) * uint64_t(face.height) * (face.is_hdr() ? 8 : 4) * 4 / 3;
+  // The targets are allocated in whole tiles: color (4 bytes), depth (4) and stencil (1) per sample.
+  auto tiles = [](int pixels) { return uint64_t(pixels + kTileSize - 1) / kTileSize * kTileSize; };
+  const uint64_t targets = tiles(s.width) * tiles(s.height) * uint64_t(s.samples) * 9;
+  // The resolved image, the water's reflection and refraction textures, a post pass's target.
+  const uint64_t images = 4 * uint64_t(s.width) * uint64_t(s.height) * 4;
+  const uint64_t scene_bytes = scenes::scene_bytes(scene);
+  scenes::check_memory(scene.name, scene_bytes + uploads + targets + images,
+                       "a " + std::to_string(s.width) + "x" + std::to_string(s.height) + " frame at " + std::to_string(s.samples) +
+                           " samples: " + scenes::format_bytes(targets + images) + "; the scene's meshes and textures: " +
+                           scenes::format_bytes(scene_bytes + uploads),
+                       s.memory_limit);
+}
+
+namespace {
+
 /// The scene's textures, checked to be its own or prepared here, once the scene and settings passed.
 std::shared_ptr<const SceneTextures> prepared(const scenes::Scene& scene, const FrameSettings& s,
                                               std::shared_ptr<const SceneTextures> textures) {
   checked(scene, s);
+  check_memory(scene, s);
   if (!textures) return std::make_shared<const SceneTextures>(scene);
   if (textures->textures.size() != scene.textures.size())
     throw std::invalid_argument(scene.name + ": the prepared textures are not the scene's (" +

@@ -150,11 +150,23 @@ ColorTransform read_lut_file(const std::string& path) {
     fail(path, "too large to read");
   }
   static_assert(sizeof(glm::vec3) == 3 * sizeof(float), "colors are handed to OpenColorIO as packed RGB floats");
-  return {path, description, [cpu](std::span<glm::vec3> colors) {
-            if (colors.empty()) return;
-            OCIO::PackedImageDesc image(&colors[0].x, static_cast<long>(colors.size()), 1, 3);
-            cpu->apply(image);
-          }};
+  ColorTransform transform{path, description, [cpu](std::span<glm::vec3> colors) {
+                             if (colors.empty()) return;
+                             OCIO::PackedImageDesc image(&colors[0].x, static_cast<long>(colors.size()), 1, 3);
+                             cpu->apply(image);
+                           }};
+  // The LUTs' entries are checked above; a file's other numbers (a matrix, a range, a CDL's slope,
+  // a 1D LUT's domain) may be NaN or infinite too, and then so is what they give: run the 9^3
+  // lattice of [0, 1] through the whole transform.
+  std::vector<glm::vec3> probe;
+  for (int b = 0; b <= 8; ++b)
+    for (int g = 0; g <= 8; ++g)
+      for (int r = 0; r <= 8; ++r) probe.emplace_back(r / 8.0f, g / 8.0f, b / 8.0f);
+  transform.apply(probe);
+  for (const glm::vec3& c : probe)
+    if (!std::isfinite(c.x) || !std::isfinite(c.y) || !std::isfinite(c.z))
+      fail(path, "gives NaN or infinite colors for colors in [0, 1] (a number in it is NaN, infinite or beyond float)");
+  return transform;
 }
 
 void write_cube(const Lut& lut, const std::string& path, const std::string& title) {

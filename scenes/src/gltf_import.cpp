@@ -8,6 +8,7 @@
 #include "gltf_values.hpp"
 #include "luxel/scenes/gltf.hpp"
 #include "luxel/scenes/image_io.hpp"
+#include "luxel/scenes/memory_limit.hpp"
 #include "luxel/scenes/tangents.hpp"
 #include "tinygltf.hpp"
 
@@ -120,13 +121,25 @@ class Importer {
  private:
   [[noreturn]] void fail(const std::string& what) const { throw GltfError(path_ + ": " + what); }
 
+  /// The memory limit's check (memory_limit.hpp), its refusal a GltfError like every problem here.
+  void check_memory(uint64_t needed, const std::string& what) const {
+    try {
+      scenes::check_memory(path_, needed, what, options_.memory_limit);
+    } catch (const MemoryLimitError& e) {
+      throw GltfError(e.what());
+    }
+  }
+
   // --- Parsing -----------------------------------------------------------------------------------
 
-  std::vector<uint8_t> read_whole(const std::string& file, const std::string& what) const {
+  std::vector<uint8_t> read_whole(const std::string& file, const std::string& what) {
     std::error_code ec;
     const auto size = fs::file_size(file, ec);
     if (ec) fail(what + ": " + ec.message());
     if (size > kMaxFileBytes) fail(what + " has " + std::to_string(size) + " bytes, more than luxel reads");
+    // The file's bytes and tinygltf's copy of the buffers in them are held together.
+    file_bytes_ += size;
+    check_memory(2 * file_bytes_, "its " + format_bytes(file_bytes_) + " of files, read and parsed");
     std::ifstream in(file, std::ios::binary);
     std::vector<uint8_t> bytes(size);
     if (!in || !in.read(reinterpret_cast<char*>(bytes.data()), std::streamsize(size))) fail(what + ": cannot read it");
@@ -243,9 +256,9 @@ class Importer {
     const std::string name = where + ": image " + std::to_string(index) + (im.name.empty() ? "" : " '" + im.name + "'");
     try {
       if (im.bufferView >= 0) {
-        cached = read_image(accessors_->view(im.bufferView, name), name);
+        cached = read_image(accessors_->view(im.bufferView, name), name, options_.memory_limit);
       } else if (auto it = data_uri_images_.find(index); it != data_uri_images_.end()) {
-        cached = read_image(it->second, name);
+        cached = read_image(it->second, name, options_.memory_limit);
       } else if (im.uri.rfind("data:", 0) == 0) {
         fail(name + " has a data URI that is not base64 PNG or JPEG");
       } else if (!im.uri.empty()) {
@@ -254,7 +267,7 @@ class Importer {
         const std::string file = folder_prefix() + uri;
         std::error_code ec;
         if (!fs::is_regular_file(file, ec)) fail(name + " file '" + uri + "' is missing");
-        cached = read_image(file);
+        cached = read_image(file, options_.memory_limit);
       } else {
         fail(name + " has neither a URI nor a buffer view");
       }
@@ -263,6 +276,9 @@ class Importer {
     } catch (const std::exception& e) {
       fail(name + ": " + e.what());
     }
+    image_bytes_ += image_bytes(uint64_t(cached->width), uint64_t(cached->height), cached->is_hdr());
+    ++images_read_;
+    check_memory(buffer_bytes() + image_bytes_, std::to_string(images_read_) + " images and " + format_bytes(buffer_bytes()) + " of buffers");
     return *cached;
   }
 
@@ -428,7 +444,7 @@ class Importer {
     Flattened total;
     for (const Item& item : placed) {
       const Flattened f = flattened(model_.nodes[size_t(item.node)].mesh);
-      total.vertices += f.vertices, total.indices += f.indices;
+      total.vertices += f.vertices, total.indices += f.indices, total.bytes += f.bytes;
     }
     if (total.vertices > kMaxGltfSceneVertices)
       fail("the flattened scene has " + std::to_string(total.vertices) + " vertices, more than luxel reads (" +
@@ -436,6 +452,9 @@ class Importer {
     if (total.indices > kMaxGltfSceneIndices)
       fail("the flattened scene has " + std::to_string(total.indices) + " triangle corners, more than luxel reads (" +
            std::to_string(kMaxGltfSceneIndices) + ")");
+    check_memory(buffer_bytes() + image_bytes_ + total.bytes,
+                 std::to_string(total.indices / 3) + " triangles, " + std::to_string(total.vertices) + " vertices, " +
+                     std::to_string(images_read_) + " images, " + format_bytes(buffer_bytes()) + " of buffers");
     for (const Item& item : placed) {
       const tinygltf::Node& n = model_.nodes[size_t(item.node)];
       const std::string where = node_name(item.node);
@@ -446,15 +465,24 @@ class Importer {
     }
   }
 
+  uint64_t buffer_bytes() const {
+    uint64_t bytes = 0;
+    for (const tinygltf::Buffer& b : model_.buffers) bytes += b.data.size();
+    return bytes;
+  }
+
   std::string node_name(int index) const {
     const tinygltf::Node& n = model_.nodes[size_t(index)];
     return "node " + std::to_string(index) + (n.name.empty() ? "" : " '" + n.name + "'");
   }
 
-  struct Flattened { uint64_t vertices = 0, indices = 0; };
+  /// The vertices and triangle corners a mesh will have once read, and the bytes they take as read
+  /// and as kept (each attribute read as floats, then copied into the Mesh; the corners as 32-bit
+  /// indices, then kept in up to 32 bits).
+  struct Flattened { uint64_t vertices = 0, indices = 0, bytes = 0; };
 
-  /// The vertices and triangle corners a mesh will have once read: its POSITION counts (or a
-  /// vertex per corner where flat normals unweld it) and its triangle list's length.
+  /// A mesh's Flattened: its POSITION counts (or a vertex per corner where flat normals unweld it)
+  /// and its triangle list's length. (Materials are read before the nodes.)
   Flattened flattened(int mesh) const {
     Flattened total;
     if (mesh < 0 || size_t(mesh) >= model_.meshes.size()) return total;
@@ -466,8 +494,20 @@ class Importer {
       const uint64_t n = position == p.attributes.end() ? 0 : count(position->second);
       const uint64_t m = p.indices >= 0 ? count(p.indices) : n;
       const uint64_t corners = p.mode == TINYGLTF_MODE_TRIANGLES || p.mode < 0 ? m : 3 * (m > 2 ? m - 2 : 0);
-      total.vertices += p.attributes.count("NORMAL") ? n : corners;
+      // Flat normals unweld: a primitive without NORMAL, unless it gets a constant normal or is
+      // unlit (primitive() below).
+      const bool unlit = p.material >= 0 && size_t(p.material) < scene_.materials.size() &&
+                         scene_.materials[size_t(p.material)].family == ShaderFamily::unlit_generic;
+      const bool welded = p.attributes.count("NORMAL") || options_.missing_normal || unlit;
+      const uint64_t vertices = welded ? n : corners;
+      const bool uv0 = p.attributes.count("TEXCOORD_0") != 0;
+      const uint64_t vertex_bytes = sizeof(glm::vec3) * 2 +  // position, normal
+                                    (p.attributes.count("TANGENT") || (uv0 && options_.generate_tangents) ? sizeof(glm::vec4) : 0) +
+                                    (uv0 ? sizeof(glm::vec2) : 0) + (p.attributes.count("TEXCOORD_1") ? sizeof(glm::vec2) : 0) +
+                                    (p.attributes.count("COLOR_0") ? sizeof(glm::vec4) : 0);
+      total.vertices += vertices;
       total.indices += corners;
+      total.bytes += 2 * (vertices * vertex_bytes + corners * sizeof(uint32_t));
     }
     return total;
   }
@@ -775,6 +815,9 @@ class Importer {
   std::map<int, std::vector<uint8_t>> data_uri_images_;
   std::string fs_error_;
   std::vector<std::optional<PixelImage>> images_;
+  // What the memory limit counts as the file is read: its files' bytes, its images' pixels.
+  uint64_t file_bytes_ = 0, image_bytes_ = 0;
+  int images_read_ = 0;
   std::map<std::pair<int, ColorSpace>, int> textures_;
   std::vector<std::pair<int, Camera>> cameras_;
   Scene scene_;

@@ -1,14 +1,56 @@
 #include "luxel/scenes/image_io.hpp"
 
+#include "luxel/scenes/memory_limit.hpp"
+
 #include <OpenImageIO/filesystem.h>
 #include <OpenImageIO/imageio.h>
 
+#include <fcntl.h>
+#include <unistd.h>
+
 #include <algorithm>
+#include <cstdio>
+#include <mutex>
 #include <stdexcept>
 
 namespace luxel::scenes {
 
 namespace {
+
+/// Closes stderr (fd 2) while it lives: the libraries under OpenImageIO print complaints of their
+/// own there. libpng prints "libpng error: ..." for every damaged PNG (OpenImageIO 2.4's error
+/// handler records the message and returns, and libpng's default handler then prints it), a second
+/// line beside the one error luxel throws, which holds that message already. Process-wide, so
+/// counted: the first reader to start closes it, the last to finish opens it again; whatever
+/// another thread prints meanwhile is lost (luxel reads images while loading, not while drawing).
+class QuietStderr {
+ public:
+  QuietStderr() {
+    const std::lock_guard<std::mutex> lock(mutex_);
+    if (depth_++ > 0) return;
+    std::fflush(stderr);
+    saved_ = dup(STDERR_FILENO);
+    const int null = open("/dev/null", O_WRONLY | O_CLOEXEC);
+    if (saved_ >= 0 && null >= 0) dup2(null, STDERR_FILENO);
+    if (null >= 0) close(null);
+  }
+  ~QuietStderr() {
+    const std::lock_guard<std::mutex> lock(mutex_);
+    if (--depth_ > 0) return;
+    std::fflush(stderr);
+    if (saved_ >= 0) {
+      dup2(saved_, STDERR_FILENO);
+      close(saved_);
+    }
+  }
+  QuietStderr(const QuietStderr&) = delete;
+  QuietStderr& operator=(const QuietStderr&) = delete;
+
+ private:
+  static inline std::mutex mutex_;
+  static inline int depth_ = 0;
+  static inline int saved_ = -1;
+};
 
 /// OpenImageIO's messages can span lines; ours are one line.
 std::string one_line(std::string s) {
@@ -58,7 +100,7 @@ bool read_rows(OIIO::ImageInput& in, int n, OIIO::TypeDesc type, std::vector<T>&
   return true;
 }
 
-PixelImage read_opened(OIIO::ImageInput& in, const std::string& name) {
+PixelImage read_opened(OIIO::ImageInput& in, const std::string& name, uint64_t memory_limit) {
   const OIIO::ImageSpec& spec = in.spec();
   if (spec.width <= 0 || spec.height <= 0 || spec.nchannels <= 0)
     fail(name, "the image has no pixels");
@@ -68,10 +110,15 @@ PixelImage read_opened(OIIO::ImageInput& in, const std::string& name) {
   // Only the channels kept are read, so a file claiming thousands of channels allocates four.
   const int n = std::min(spec.nchannels, 4);
   const size_t pixels = static_cast<size_t>(spec.width) * static_cast<size_t>(spec.height);
+  // The channels as read and the RGBA image made of them are held together for a moment.
+  const bool hdr = is_float(spec.format);
+  check_memory(name, pixels * uint64_t(n) * (hdr ? 4 : 1) + image_bytes(uint64_t(spec.width), uint64_t(spec.height), hdr),
+               "a " + std::to_string(spec.width) + "x" + std::to_string(spec.height) + (hdr ? " float" : " 8-bit") + " image",
+               memory_limit);
   PixelImage image;
   image.width = spec.width;
   image.height = spec.height;
-  if (is_float(spec.format)) {
+  if (hdr) {
     std::vector<float> raw;
     if (!read_rows(in, n, OIIO::TypeDesc::FLOAT, raw)) fail(name, in.geterror());
     image.rgba32f = expand_to_rgba(raw, pixels, n, 1.0f);
@@ -114,14 +161,15 @@ void check_layout(const PixelImage& image, const std::string& name) {
 
 }  // namespace
 
-PixelImage read_image(const std::string& path) {
+PixelImage read_image(const std::string& path, uint64_t memory_limit) {
+  const QuietStderr quiet;
   const OIIO::ImageSpec config = straight_alpha_config();
   auto in = OIIO::ImageInput::open(path, &config);
   if (!in) fail(path, OIIO::geterror());
-  return read_opened(*in, path);
+  return read_opened(*in, path, memory_limit);
 }
 
-PixelImage read_image(std::span<const uint8_t> bytes, const std::string& name) {
+PixelImage read_image(std::span<const uint8_t> bytes, const std::string& name, uint64_t memory_limit) {
   // In memory there is no extension to pick a reader by: tell the formats glTF allows by their
   // signatures.
   static const uint8_t kPng[] = {0x89, 'P', 'N', 'G', 0x0d, 0x0a, 0x1a, 0x0a};
@@ -129,6 +177,7 @@ PixelImage read_image(std::span<const uint8_t> bytes, const std::string& name) {
   if (bytes.size() >= 8 && std::equal(kPng, kPng + 8, bytes.begin())) as = "memory.png";
   else if (bytes.size() >= 3 && bytes[0] == 0xff && bytes[1] == 0xd8 && bytes[2] == 0xff) as = "memory.jpg";
   if (!as) fail(name, "not a PNG or JPEG image");
+  const QuietStderr quiet;
   OIIO::Filesystem::IOMemReader reader(bytes.data(), bytes.size());
   // OIIO 2.4 ignores open()'s ioproxy argument when a config is given: pass it in the config.
   OIIO::ImageSpec config = straight_alpha_config();
@@ -136,7 +185,7 @@ PixelImage read_image(std::span<const uint8_t> bytes, const std::string& name) {
   config.attribute("oiio:ioproxy", OIIO::TypeDesc::PTR, &proxy);
   auto in = OIIO::ImageInput::open(as, &config);
   if (!in) fail(name, OIIO::geterror());
-  return read_opened(*in, name);
+  return read_opened(*in, name, memory_limit);
 }
 
 void write_image(const PixelImage& image, const std::string& path) {

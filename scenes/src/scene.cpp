@@ -8,6 +8,8 @@
 #include <cmath>
 #include <stdexcept>
 #include <string>
+#include <utility>
+#include <vector>
 
 namespace luxel::scenes {
 
@@ -74,6 +76,47 @@ void check_texture(const Scene& scene, const Texture& t, size_t i) {
       fail(scene, where + " holds the wrong number of texels for " + std::to_string(f.width) + "x" +
                       std::to_string(f.height));
   }
+}
+
+/// A shader computes with every number a material holds: one that is not finite (a glTF file's
+/// 1e300 kept as a float is infinity) gives NaN or infinity in the frame, e.g. pow(x, -inf) or
+/// inf x 0. Named by their .vmt names (gltf.hpp).
+void check_material_numbers(const Scene& scene, const Material& m, const std::string& where) {
+  const std::pair<const char*, std::vector<float>> numbers[] = {
+      {"color", {m.color.r, m.color.g, m.color.b, m.color.a}},
+      {"detailscale", {m.detail_scale}},
+      {"detailblendfactor", {m.detail_blend}},
+      {"envmaptint", {m.envmap_tint.r, m.envmap_tint.g, m.envmap_tint.b}},
+      {"envmapcontrast", {m.envmap_contrast}},
+      {"envmapsaturation", {m.envmap_saturation}},
+      {"fresnelreflection", {m.fresnel_reflection}},
+      {"phongexponent", {m.phong_exponent}},
+      {"phongboost", {m.phong_boost}},
+      {"phongfresnelranges", {m.phong_fresnel_ranges.x, m.phong_fresnel_ranges.y, m.phong_fresnel_ranges.z}},
+      {"phongtint", {m.phong_tint.r, m.phong_tint.g, m.phong_tint.b}},
+      {"rimlightexponent", {m.rim_exponent}},
+      {"rimlightboost", {m.rim_boost}},
+      {"heroboost", {m.hero_boost}},
+      {"selfillumtint", {m.self_illum_tint.r, m.self_illum_tint.g, m.self_illum_tint.b}},
+      {"emissive", {m.emissive.r, m.emissive.g, m.emissive.b}},
+      {"alphatestreference", {m.alpha_cutoff}},
+      {"scroll1", {m.water_scroll.x, m.water_scroll.y}},
+      {"reflectamount", {m.reflect_amount}},
+      {"refractamount", {m.refract_amount}},
+      {"reflecttint", {m.reflect_tint.r, m.reflect_tint.g, m.reflect_tint.b}},
+      {"refracttint", {m.refract_tint.r, m.refract_tint.g, m.refract_tint.b}},
+      {"fogcolor", {m.water_fog_color.r, m.water_fog_color.g, m.water_fog_color.b}},
+      {"fogstart", {m.water_fog_start}},
+      {"fogend", {m.water_fog_end}}};
+  for (const auto& [name, values] : numbers)
+    for (float v : values)
+      if (!std::isfinite(v)) fail(scene, where + " $" + name + " is not finite");
+  for (const auto& [name, ref] : {std::pair<const char*, const TextureRef*>{"basetexture", &m.base}, {"bumpmap", &m.bump},
+                                  {"detail", &m.detail}, {"envmapmask", &m.envmap_mask_texture},
+                                  {"phongexponenttexture", &m.phong_exponent_texture}, {"normalmap", &m.water_normal}})
+    if (!std::isfinite(ref->offset.x) || !std::isfinite(ref->offset.y) || !std::isfinite(ref->scale.x) ||
+        !std::isfinite(ref->scale.y) || !std::isfinite(ref->rotation))
+      fail(scene, where + " $" + name + " has a texture transform that is not finite");
 }
 
 void check_mesh(const Scene& scene, const Mesh& m, size_t i) {
@@ -144,10 +187,15 @@ void validate(const Scene& scene) {
     for (const TextureRef* r : {&m.base, &m.bump, &m.detail, &m.envmap_texture, &m.envmap_mask_texture,
                                 &m.phong_exponent_texture, &m.water_normal})
       check_ref(scene, *r, where);
+    check_material_numbers(scene, m, where);
     if (m.envmap == EnvmapSource::texture &&
         (!m.envmap_texture.bound() || scene.textures[m.envmap_texture.texture].shape != TextureShape::cube))
       fail(scene, where + " asks for an env map texture but has no cube bound");
   }
+  if (!finite(scene.background)) fail(scene, "the background color is not finite");
+  if (!finite(scene.fog.color) || !std::isfinite(scene.fog.start) || !std::isfinite(scene.fog.end) ||
+      !std::isfinite(scene.fog.max_density) || !std::isfinite(scene.fog.water_z))
+    fail(scene, "the fog has a value that is not finite");
   for (size_t i = 0; i < scene.meshes.size(); ++i) check_mesh(scene, scene.meshes[i], i);
   for (size_t i = 0; i < scene.models.size(); ++i)
     for (int mesh : scene.models[i].meshes)

@@ -119,7 +119,7 @@ TEST(BakeBadScenes, AnAtlasBeyondTheSideLimitOrTheMemoryCapIsAnError) {
   s.lightmap_luxel_size = 0.05f;  // 1440 a side: fine by side, not by a 64 MiB cap
   BakeSettings settings = fast();
   settings.max_memory_bytes = uint64_t(64) << 20;
-  EXPECT_THAT(error_of(s, settings), HasSubstr("more than the cap of 64 MiB"));
+  EXPECT_THAT(error_of(s, settings), HasSubstr("beyond the memory limit of 64 MiB"));
 }
 
 TEST(BakeBadScenes, BouncesThatDoNotConvergeStopAtTheCapWithAWarning) {

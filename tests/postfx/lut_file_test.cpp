@@ -212,6 +212,55 @@ TEST(LutFile, BadFilesGiveOneLineNamingTheFile) {
   expect_one_line(dir.file("image.cube"), "At line (1): '?PNG'. Malformed");
 }
 
+// NaN and infinity in each format's numbers: every one is refused in one line naming the file.
+// Text formats spell them "nan" and "inf"; a value beyond float (1e999, 1e300) is infinity once
+// read, or refused by the format's reader as malformed. (.raw holds bytes: no NaN can be written.)
+TEST(LutFile, NanAndInfinityInEveryFormat) {
+  const TempDir dir;
+  const std::string corners = "0 0 0\n1 0 0\n0 1 0\n1 1 0\n0 0 1\n1 0 1\n0 1 1\n";
+  const std::string spi3d = "SPILUT 1.0\n3 3\n2 2 2\n0 0 0 0 0 0\n0 0 1 0 0 1\n0 1 0 0 1 0\n0 1 1 0 1 1\n"
+                            "1 0 0 1 0 0\n1 0 1 1 0 1\n1 1 0 1 1 0\n1 1 1 ";
+  const std::string csp = "CSPLUTV100\n3D\n\n2\n0.0 1.0\n0.0 1.0\n2\n0.0 1.0\n0.0 1.0\n2\n0.0 1.0\n0.0 1.0\n\n2 2 2\n" + corners;
+  auto clf = [](const std::string& body) {
+    return "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<ProcessList id=\"t\" compCLFversion=\"3\">\n" + body + "</ProcessList>\n";
+  };
+  auto matrix = [&](const std::string& v) {
+    return clf("<Matrix inBitDepth=\"32f\" outBitDepth=\"32f\"><Array dim=\"3 3\">" + v + " 0 0 0 1 0 0 0 1</Array></Matrix>\n");
+  };
+  auto cdl = [](const std::string& slope) {
+    return "<ColorCorrection id=\"c\"><SOPNode><Slope>" + slope +
+           " 1 1</Slope><Offset>0 0 0</Offset><Power>1 1 1</Power></SOPNode><SatNode><Saturation>1</Saturation></SatNode></ColorCorrection>\n";
+  };
+  const std::pair<std::string, std::string> files[] = {
+      {"nan1d.cube", "LUT_1D_SIZE 2\n0 0 0\nnan 1 1\n"},
+      {"inf1d.cube", "LUT_1D_SIZE 2\n0 0 0\n1 -inf 1\n"},
+      {"huge.cube", "LUT_3D_SIZE 2\n" + corners + "1 1 1e300\n"},
+      {"nan.spi1d", "Version 1\nFrom 0.0 1.0\nLength 2\nComponents 1\n{\n0.0\nnan\n}\n"},
+      {"inf.spi1d", "Version 1\nFrom 0.0 1.0\nLength 2\nComponents 1\n{\n0.0\ninf\n}\n"},
+      {"nan.spi3d", spi3d + "nan 1 1\n"},
+      {"inf.spi3d", spi3d + "1 inf 1\n"},
+      {"nan.csp", csp + "nan 1 1\n"},
+      {"inf.csp", csp + "1 1 inf\n"},
+      {"nan-matrix.clf", matrix("nan")},
+      {"inf-matrix.clf", matrix("inf")},
+      {"huge-matrix.clf", matrix("1e300")},
+      {"nan-lut.clf", clf("<LUT1D inBitDepth=\"32f\" outBitDepth=\"32f\"><Array dim=\"2 3\">0 0 0 nan 1 1</Array></LUT1D>\n")},
+      {"nan-range.clf", clf("<Range inBitDepth=\"32f\" outBitDepth=\"32f\"><minInValue>nan</minInValue><maxInValue>1</maxInValue>"
+                            "<minOutValue>0</minOutValue><maxOutValue>1</maxOutValue></Range>\n")},
+      {"nan.cc", cdl("nan")},
+      {"inf.cc", cdl("inf")},
+  };
+  for (const auto& [name, text] : files) {
+    write(dir.file(name), text);
+    expect_one_line(dir.file(name), "");
+  }
+  // A NaN domain is read (OpenColorIO's .spi1d reader lets it through) and gives finite colors.
+  write(dir.file("nan-domain.spi1d"), "Version 1\nFrom nan 1.0\nLength 2\nComponents 1\n{\n0.0\n1.0\n}\n");
+  std::vector<glm::vec3> colors = {glm::vec3(0.0f), glm::vec3(0.5f), glm::vec3(1.0f), glm::vec3(2.0f)};
+  read_lut_file(dir.file("nan-domain.spi1d")).apply(colors);
+  for (const glm::vec3& c : colors) EXPECT_TRUE(std::isfinite(c.x) && std::isfinite(c.y) && std::isfinite(c.z));
+}
+
 TEST(LutSource, NamesPickPresetsOrFiles) {
   const ColorTransform warm = color_transform_named("builtin:warm");
   EXPECT_EQ(warm.name, "builtin:warm");

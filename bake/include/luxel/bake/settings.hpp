@@ -1,6 +1,9 @@
 #pragma once
 // What a bake is asked to do: sample counts, the stopping rule, the ambient-cube mode, limits.
-// Every field enters the bake's hash (storage.hpp) except `threads`, which never changes a byte.
+// Every field enters the bake's hash (storage.hpp) except `threads` and `max_memory_bytes`, which
+// never change a byte.
+
+#include "luxel/scenes/memory_limit.hpp"
 
 #include <glm/vec3.hpp>
 
@@ -41,9 +44,9 @@ struct BakeSettings {
   float luxel_size = 0.0f;
   /// Faces whose normals differ by less than this (degrees) join one chart.
   float chart_angle_degrees = 1.0f;
-  /// The four lightmaps plus the bake's per-luxel working set may not exceed this many bytes; a
-  /// bigger atlas is an error naming its size (BakeError).
-  uint64_t max_memory_bytes = uint64_t(2) << 30;
+  /// The memory limit (scenes/memory_limit.hpp): the four lightmaps plus the bake's per-luxel
+  /// working set may not exceed this many bytes; a bigger atlas is a BakeError naming its size.
+  uint64_t max_memory_bytes = scenes::kDefaultMemoryLimit;
 
   /// Worker threads (std::thread); 0 = std::thread::hardware_concurrency(). Never changes a byte.
   int threads = 0;

@@ -115,6 +115,7 @@
 #include "luxel/rasterizer/context.hpp"
 #include "luxel/rasterizer/draw.hpp"
 #include "luxel/rasterizer/image.hpp"
+#include "luxel/scenes/memory_limit.hpp"
 #include "luxel/scenes/scene.hpp"
 #include "luxel/shading/shader_model.hpp"
 #include "luxel/shading/source/shader_use.hpp"
@@ -182,6 +183,8 @@ struct FrameSettings {
   /// Scissor the water's views to what the water can read of them (water_passes.hpp); off, they
   /// draw the whole frame: slower, and the same bytes (tested), like the rasterizer's fast paths.
   bool water_view_scissor = true;
+  /// The most bytes a renderer may ask for (Renderer's constructor, scenes/memory_limit.hpp).
+  uint64_t memory_limit = scenes::kDefaultMemoryLimit;
 };
 
 /// A model's lighting in the last frame, after the time averaging (above), before a material's
@@ -212,6 +215,10 @@ using ShaderUse = shading::source::ShaderUse;
 /// asked of a scene without one).
 scenes::Camera frame_camera(const scenes::Scene& scene, const FrameSettings& settings);
 
+/// Throws scenes::MemoryLimitError naming the scene when a renderer of `scene` with `settings`
+/// would need more than settings.memory_limit: the estimate Renderer's constructor checks first.
+void check_memory(const scenes::Scene& scene, const FrameSettings& settings);
+
 /// World (inches, +Z up) to Direct3D clip space for `camera` drawn into a width x height image
 /// (its aspect, when the camera gives none).
 glm::mat4 view_projection(const scenes::Camera& camera, int width, int height);
@@ -227,6 +234,11 @@ class Renderer {
   /// unknown built-in LUT); std::runtime_error naming the file for a color-correction LUT file
   /// that cannot be read. `textures`: the scene's textures prepared before (textures.hpp: renderers of one scene
   /// share them); null: prepared here.
+  /// Before anything is allocated, what the renderer will hold is estimated and refused beyond
+  /// FrameSettings::memory_limit with scenes::MemoryLimitError naming the scene: the scene's
+  /// meshes and textures, the textures' uploaded copies with their mips, the color, depth and
+  /// stencil targets in whole tiles at the frame's samples (9 bytes a sample) and four 8-bit
+  /// images the size of the frame (the resolved image, the water's two views, a post pass).
   Renderer(const scenes::Scene& scene, const FrameSettings& settings, std::shared_ptr<const SceneTextures> textures = nullptr);
   ~Renderer();
   Renderer(Renderer&&) noexcept;

@@ -10,7 +10,9 @@
 // .cube whose LUT_3D_SIZE / LUT_1D_SIZE is below 2 or above OpenColorIO's own limits (checked on
 // the header before OpenColorIO reads it: its .cube reader reserves size^3 entries first and
 // checks the size only after, unlike its readers of the other formats), a LUT of fewer than two
-// points per axis in any format, a NaN or infinite LUT value.
+// points per axis in any format, a NaN or infinite LUT value, a transform giving a NaN or infinite
+// color for any of the 9^3 colors of a lattice over [0, 1] (a file's matrix, range, CDL or domain
+// holding NaN, infinity or a number beyond float).
 //
 // OpenColorIO caches what it read by path; reading clears its caches first, so a file rewritten
 // since (a test's, an artist's) is read anew.

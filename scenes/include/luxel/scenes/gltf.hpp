@@ -108,7 +108,17 @@
 // index values against the vertex count, the limits below, that URIs stay in the file's folder
 // (no "../", no absolute paths or schemes), that images exist and decode, that positions are
 // finite; then scenes::validate().
+//
+// ## Memory
+// What a file asks for is estimated before it is allocated and refused beyond
+// GltfImportOptions::memory_limit (memory_limit.hpp), a GltfError "FILE: needs about 9.1 GiB
+// (...), beyond the memory limit of 4 GiB (...)": the file's bytes and tinygltf's copy of its
+// buffers before they are read; each image's pixels from its header, and the images read so far
+// with the buffers; then, before any vertex is read, the flattened scene: per vertex the
+// attributes it will have (position, normal, tangent, uvs, color) and per triangle corner a 32-bit
+// index, each twice (as read, then as kept), with the buffers and images.
 
+#include "luxel/scenes/memory_limit.hpp"
 #include "luxel/scenes/scene.hpp"
 
 #include <glm/vec3.hpp>
@@ -142,6 +152,8 @@ struct GltfImportOptions {
   /// reads a missing array, which the llvmpipe peer's W3 workload relies on). Unlit materials get
   /// it too.
   std::optional<glm::vec3> missing_normal = std::nullopt;
+  /// The most bytes the file may ask for (above, and memory_limit.hpp).
+  uint64_t memory_limit = kDefaultMemoryLimit;
 };
 
 /// Reads a .gltf or .glb file (told apart by its first bytes). Scene::name is `path`.

@@ -9,9 +9,13 @@
 // Bytes are returned as stored: whether they are sRGB is for the texture using them to say.
 //
 // Every failure throws std::runtime_error whose what() is one line "NAME: problem", NAME being the
-// path (or the name given for bytes in memory). Images larger than kMaxImageSide on a side are
-// refused before their pixels are allocated.
+// path (or the name given for bytes in memory). Images larger than kMaxImageSide on a side, or
+// whose pixels would take more than the memory limit (memory_limit.hpp) as read and as kept, are
+// refused before their pixels are allocated (the latter with MemoryLimitError). While an image is
+// read, the process's stderr is closed: the libraries under OpenImageIO print complaints of their
+// own there (libpng a "libpng error: ..." line for every damaged PNG), which the error carries.
 
+#include "luxel/scenes/memory_limit.hpp"
 #include "luxel/scenes/scene.hpp"
 
 #include <cstdint>
@@ -25,10 +29,10 @@ namespace luxel::scenes {
 inline constexpr int kMaxImageSide = 16384;
 
 /// Reads an image file.
-PixelImage read_image(const std::string& path);
+PixelImage read_image(const std::string& path, uint64_t memory_limit = kDefaultMemoryLimit);
 
 /// Reads an image file held in memory (a glTF buffer view or data URI); `name` is used in messages.
-PixelImage read_image(std::span<const uint8_t> bytes, const std::string& name);
+PixelImage read_image(std::span<const uint8_t> bytes, const std::string& name, uint64_t memory_limit = kDefaultMemoryLimit);
 
 /// Writes an image; the format comes from the extension. 8-bit images are written as 8-bit, float
 /// images as float where the format holds floats (EXR, HDR) and converted (clamped) where not.

@@ -368,9 +368,11 @@ struct Bounds {
 Bounds bounds_of(const Scene& scene);
 
 /// Checks what the frame relies on: indices within their vertex counts, array lengths, material
-/// and texture references in range, finite positions, texture images the size they claim, unit
-/// handedness, exposure controls and color-correction nodes and volumes with finite values that
-/// are not negative (a falloff may be -1), a LUT name, input times in order, ordered boxes.
+/// and texture references in range, finite positions, finite material numbers and texture
+/// transforms (a shader computes with each), a finite background and fog, texture images the size
+/// they claim, unit handedness, exposure controls and color-correction nodes and volumes with
+/// finite values that are not negative (a falloff may be -1), a LUT name, input times in order,
+/// ordered boxes.
 /// Throws std::invalid_argument naming the scene and the first problem.
 void validate(const Scene& scene);
 
