@@ -1,5 +1,6 @@
 #include "command_line.hpp"
 
+#include <algorithm>
 #include <iostream>
 #include <string>
 
@@ -17,6 +18,16 @@ CommandLine::CommandLine()
 }
 
 std::optional<int> CommandLine::parse(int argc, const char* const* argv) {
+  // CLI11 would answer a mistyped command with "A subcommand is required", not naming it.
+  const CLI::App& app = app_;
+  const auto commands = app.get_subcommands([](const CLI::App*) { return true; });
+  const auto named = [&](const CLI::App* sub) { return argc > 1 && sub->get_name() == argv[1]; };
+  if (argc > 1 && argv[1][0] != '-' && std::none_of(commands.begin(), commands.end(), named)) {
+    std::string names;
+    for (const CLI::App* sub : commands) names += (names.empty() ? "" : ", ") + sub->get_name();
+    std::cerr << "luxel: '" << argv[1] << "' is not a command (" << names << "; see luxel --help)\n";
+    return 2;
+  }
   try {
     app_.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {
