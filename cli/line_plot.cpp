@@ -186,7 +186,7 @@ rasterizer::Image draw_line_plot(const LinePlot& plot) {
                                                        {x0 + 8, y1 - 4 - legend_height}}};
   size_t best = 0, best_count = drawn.size() + 1;
   for (size_t c = 0; c < corners.size(); ++c) {
-    const auto [lx, ly] = corners[c];
+    const int lx = corners[c].first, ly = corners[c].second;  // not a structured binding: Clang 14 cannot capture one
     const size_t count = size_t(std::count_if(drawn.begin(), drawn.end(), [&](const std::pair<int, int>& p) {
       return p.first >= lx - 6 && p.first <= lx + legend_width + 6 && p.second >= ly - 6 && p.second <= ly + legend_height + 6;
     }));

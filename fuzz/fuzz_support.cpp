@@ -2,6 +2,7 @@
 
 #include "inputs.hpp"
 
+#include <cstdint>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
@@ -11,15 +12,26 @@
 
 namespace luxel::fuzz {
 
+extern "C" void __sanitizer_set_report_fd(void* fd) __attribute__((weak));  // in sanitizer builds only
+
 namespace {
 bool throwing = false;
+
+/// The process's stderr as it was at start. Image reads close fd 2 for their duration
+/// (scenes/image_io.hpp): a finding, or a sanitizer's report of a crash inside the read, must not
+/// go there.
+const int report_fd = [] {
+  const int fd = dup(STDERR_FILENO);
+  if (fd >= 0 && __sanitizer_set_report_fd) __sanitizer_set_report_fd(reinterpret_cast<void*>(intptr_t(fd)));
+  return fd;
+}();
 }  // namespace
 
 void throw_findings() { throwing = true; }
 
 void finding(const std::string& what) {
   if (throwing) throw Finding(what);
-  std::fprintf(stderr, "luxel fuzz finding: %s\n", what.c_str());
+  dprintf(report_fd >= 0 ? report_fd : STDERR_FILENO, "luxel fuzz finding: %s\n", what.c_str());
   std::abort();
 }
 

@@ -85,14 +85,16 @@ std::vector<T> expand_to_rgba(const std::vector<T>& raw, size_t pixels, int n, T
 
 /// The first `n` channels of every row, read in bands into `raw`, which grows with what was
 /// decoded: a small file whose header claims a large image fails on its first band instead of
-/// having the whole image allocated (and zeroed) first. False on a read error.
+/// having the whole image allocated (and zeroed) first. A band is at most 64 rows and about
+/// 256 KB of kept channels, so that the buffer OpenImageIO converts a band in stays small too
+/// (a 16384-wide 16-bit file would otherwise take 8 MB for its first band). False on a read error.
 template <class T>
 bool read_rows(OIIO::ImageInput& in, int n, OIIO::TypeDesc type, std::vector<T>& raw) {
-  constexpr int kBandRows = 64;
   const OIIO::ImageSpec& spec = in.spec();
   const size_t row = static_cast<size_t>(spec.width) * static_cast<size_t>(n);
-  for (int y = spec.y; y < spec.y + spec.height; y += kBandRows) {
-    const int end = std::min(y + kBandRows, spec.y + spec.height);
+  const int band_rows = static_cast<int>(std::clamp<size_t>((size_t{256} << 10) / (row * sizeof(T)), 1, 64));
+  for (int y = spec.y; y < spec.y + spec.height; y += band_rows) {
+    const int end = std::min(y + band_rows, spec.y + spec.height);
     const size_t at = raw.size();
     raw.resize(at + row * static_cast<size_t>(end - y));
     if (!in.read_scanlines(0, 0, y, end, 0, 0, n, type, raw.data() + at)) return false;
@@ -133,6 +135,11 @@ PixelImage read_opened(OIIO::ImageInput& in, const std::string& name, uint64_t m
 /// Straight alpha in and out: without it OIIO's PNG reader premultiplies and its writer divides
 /// color by alpha, losing it where alpha is 0.
 OIIO::ImageSpec straight_alpha_config() {
+  // A file is read by the reader its extension (or, in memory, its signature) names, never by
+  // every format OpenImageIO has in turn: a damaged PNG would otherwise also be tried as a camera
+  // raw, a DICOM..., each failing its own way, at the cost of milliseconds and megabytes each.
+  static const bool once = OIIO::attribute("try_all_readers", 0);
+  (void)once;
   OIIO::ImageSpec config;
   config.attribute("oiio:UnassociatedAlpha", 1);
   return config;

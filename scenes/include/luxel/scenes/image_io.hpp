@@ -1,6 +1,8 @@
 #pragma once
 // Image files in and out, through OpenImageIO (PNG, JPEG, TIFF, OpenEXR, Radiance HDR, TGA, PPM...,
-// the format chosen by the file's contents on reading and by its extension on writing).
+// the format named by the file's extension, or in memory by its signature (PNG or JPEG, what glTF
+// allows), on reading; by its extension on writing). A file whose contents are not its
+// extension's format is refused, not tried as every other format in turn.
 //
 // Reading gives a PixelImage (scene.hpp): 4 channels, top row first, straight (unassociated)
 // alpha; missing channels are filled in (grey replicated to rgb, alpha 1). Files whose pixels are
