@@ -1,17 +1,14 @@
 #include "command_line.hpp"
 
-#include <algorithm>
 #include <iostream>
 #include <string>
+#include <utility>
 
 namespace luxel::cli {
 
 CommandLine::CommandLine()
     : app_{"luxel - a CPU rasterizer for the DirectX 9-era Source engine shading pipeline"} {
   app_.require_subcommand(1);
-  app_.failure_message([](const CLI::App* a, const CLI::Error& e) {
-    return std::string(a->get_name().empty() ? "luxel" : a->get_name()) + ": " + e.what() + " (see --help)\n";
-  });
   runners_ = {add_render_command(app_), add_compare_command(app_), add_cost_command(app_),
               add_export_command(app_), add_info_command(app_),    add_bake_command(app_),
               add_grade_command(app_),  add_report_command(app_)};
@@ -19,14 +16,17 @@ CommandLine::CommandLine()
 
 std::optional<int> CommandLine::parse(int argc, const char* const* argv) {
   // CLI11 would answer a mistyped command with "A subcommand is required", not naming it.
-  const CLI::App& app = app_;
-  const auto commands = app.get_subcommands([](const CLI::App*) { return true; });
-  const auto named = [&](const CLI::App* sub) { return argc > 1 && sub->get_name() == argv[1]; };
-  if (argc > 1 && argv[1][0] != '-' && std::none_of(commands.begin(), commands.end(), named)) {
+  if (argc > 1 && argv[1][0] != '-') {
     std::string names;
-    for (const CLI::App* sub : commands) names += (names.empty() ? "" : ", ") + sub->get_name();
-    std::cerr << "luxel: '" << argv[1] << "' is not a command (" << names << "; see luxel --help)\n";
-    return 2;
+    bool known = false;
+    for (const CLI::App* sub : std::as_const(app_).get_subcommands([](const CLI::App*) { return true; })) {
+      names += (names.empty() ? "" : ", ") + sub->get_name();
+      known = known || sub->get_name() == argv[1];
+    }
+    if (!known) {
+      std::cerr << "luxel: '" << argv[1] << "' is not a command (" << names << "; see luxel --help)\n";
+      return 2;
+    }
   }
   try {
     app_.parse(argc, argv);
