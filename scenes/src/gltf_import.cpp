@@ -461,7 +461,7 @@ class Importer {
       if (n.mesh >= 0) add_mesh(n.mesh, item.parent, where, n.extras.Get("luxel"), item.motion);
       if (n.camera >= 0) add_camera(n.camera, item.parent, where);
       if (auto it = n.extensions.find("KHR_lights_punctual"); it != n.extensions.end() && it->second.Get("light").IsNumber())
-        add_light(it->second.Get("light").GetNumberAsInt(), item.parent, where);
+        add_light(gltf::integer(it->second.Get("light")).value_or(-1), item.parent, where);
     }
   }
 

@@ -144,7 +144,7 @@ Material material_from_gltf(const tinygltf::Material& g, size_t index, const Res
     if (!t.IsObject() || !t.Get("index").IsNumber()) continue;
     TextureRef& r = m.*k.member;
     r = TextureRef{};
-    r.texture = resolve(t.Get("index").GetNumberAsInt(), k.color_space, where + " extras " + k.key);
+    r.texture = resolve(gltf::integer(t.Get("index")).value_or(-1), k.color_space, where + " extras " + k.key);
     read_transform(t, r);  // texCoord, offset, scale, rotation
   }
   glm::vec3 rgb(m.color);

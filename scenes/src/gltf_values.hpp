@@ -7,6 +7,10 @@
 #include <glm/vec3.hpp>
 #include <glm/vec4.hpp>
 
+#include <climits>
+#include <cmath>
+#include <optional>
+
 namespace luxel::scenes::gltf {
 
 template <int N>
@@ -30,8 +34,17 @@ void read(const tinygltf::Value& v, glm::vec<N, float>& out) {
 inline void read(const tinygltf::Value& v, float& out) {
   if (v.IsNumber()) out = float(v.GetNumberAsDouble());
 }
+/// The integer `v` holds, if it holds one that fits an int. tinygltf's GetNumberAsInt converts any
+/// number, and converting 1e300 or NaN to int is undefined: an index of 2.5 or 1e300 names nothing.
+inline std::optional<int> integer(const tinygltf::Value& v) {
+  if (v.IsInt()) return v.Get<int>();
+  if (!v.IsReal()) return std::nullopt;
+  const double d = v.Get<double>();
+  if (!(d >= double(INT_MIN) && d <= double(INT_MAX)) || d != std::floor(d)) return std::nullopt;
+  return int(d);
+}
 inline void read(const tinygltf::Value& v, int& out) {
-  if (v.IsNumber()) out = v.GetNumberAsInt();
+  if (const std::optional<int> i = integer(v)) out = *i;
 }
 inline void read(const tinygltf::Value& v, bool& out) {
   if (v.IsBool()) out = v.Get<bool>();

@@ -109,14 +109,14 @@ TestTriangle TriangleGenerator::make(TriKind kind) {
       // On the 1/16 pixel grid that holds every standard sample position: edges run through
       // samples, so the fill rule decides.
       const glm::dvec2 b = glm::floor(in_region(4));
-      for (auto& v : s) v = b + glm::dvec2(uniform_int(-128, 128), uniform_int(-128, 128)) / 16.0;
+      for (auto& v : s) v = b + glm::dvec2{uniform_int(-128, 128), uniform_int(-128, 128)} / 16.0;
       break;
     }
     case TriKind::Axis: {
       // A right triangle with one horizontal and one vertical edge (top, bottom, left or right).
       const glm::dvec2 b = glm::floor(in_region(4) * 16.0) / 16.0;
-      const double lx = uniform_int(1, 200) / 16.0 * (uniform_int(0, 1) ? 1 : -1);
-      const double ly = uniform_int(1, 200) / 16.0 * (uniform_int(0, 1) ? 1 : -1);
+      const double lx = with_random_sign(uniform_int(1, 200) / 16.0);
+      const double ly = with_random_sign(uniform_int(1, 200) / 16.0);
       s[0] = b;
       s[1] = b + glm::dvec2(lx, 0);
       s[2] = b + glm::dvec2(0, ly);
@@ -130,7 +130,7 @@ TestTriangle TriangleGenerator::make(TriKind kind) {
       const glm::dvec2 dir(std::cos(a), std::sin(a)), normal(-dir.y, dir.x);
       const glm::dvec2 p1 = p0 + uniform(20, 200) * dir;
       const double t = uniform(0.05, 0.95);
-      const double off = std::exp(uniform(std::log(1.0 / 512), std::log(2.0))) * (uniform_int(0, 1) ? 1 : -1);
+      const double off = with_random_sign(std::exp(uniform(std::log(1.0 / 512), std::log(2.0))));
       s[0] = q10(p0);
       s[1] = q10(p1);
       s[2] = q10(p0 + t * (p1 - p0) + off * normal);
@@ -138,12 +138,12 @@ TestTriangle TriangleGenerator::make(TriKind kind) {
     }
     case TriKind::Subpixel: {
       const glm::dvec2 b = in_region(2);
-      for (auto& v : s) v = q10(b + glm::dvec2(uniform(0, 1.5), uniform(0, 1.5)));
+      for (auto& v : s) v = q10(b + glm::dvec2{uniform(0, 1.5), uniform(0, 1.5)});
       break;
     }
     case TriKind::Degenerate: {
       const glm::dvec2 p0 = glm::floor(in_region(4) * 256.0) / 256.0;
-      const glm::dvec2 d = glm::dvec2(uniform_int(-4000, 4000), uniform_int(-4000, 4000)) / 256.0;
+      const glm::dvec2 d = glm::dvec2{uniform_int(-4000, 4000), uniform_int(-4000, 4000)} / 256.0;
       switch (uniform_int(0, 3)) {
         case 0: s[0] = p0; s[1] = p0 + d; s[2] = p0 + (uniform_int(0, 1) ? 2.0 : -1.0) * d; break;  // collinear
         case 1: s[0] = p0; s[1] = p0 + d; s[2] = p0 + d; break;                                       // repeated vertex
@@ -152,7 +152,7 @@ TestTriangle TriangleGenerator::make(TriKind kind) {
           // Not collinear in float, collinear after snapping (moved by 1/1024 pixel).
           s[0] = p0;
           s[1] = p0 + d;
-          s[2] = p0 + 2.0 * d + glm::dvec2(uniform_int(-1, 1), uniform_int(-1, 1)) / 1024.0;
+          s[2] = p0 + 2.0 * d + glm::dvec2{uniform_int(-1, 1), uniform_int(-1, 1)} / 1024.0;
           break;
       }
       std::shuffle(s, s + 3, rng_);
@@ -181,14 +181,14 @@ TestTriangle TriangleGenerator::make(TriKind kind) {
         // A right triangle with a vertical and a horizontal edge on the 1/16 grid (through sample
         // positions) and legs of thousands of pixels: the fill rule on the 64-bit path.
         const glm::dvec2 b = glm::floor(in_region(2) * 16.0) / 16.0;
-        const double lx = uniform_int(4200, 15000) * (uniform_int(0, 1) ? 1 : -1);
-        const double ly = uniform_int(4200, 15000) * (uniform_int(0, 1) ? 1 : -1);
+        const double lx = with_random_sign(uniform_int(4200, 15000));
+        const double ly = with_random_sign(uniform_int(4200, 15000));
         s[0] = b;
         s[1] = glm::clamp(b + glm::dvec2(lx, 0), glm::dvec2(-16000), glm::dvec2(16000));
         s[2] = glm::clamp(b + glm::dvec2(0, ly), glm::dvec2(-16000), glm::dvec2(16000));
         std::shuffle(s, s + 3, rng_);
       } else if (variant == 1) {
-        for (auto& v : s) v = q10(glm::dvec2(uniform(-16000, 16000), uniform(-16000, 16000)));
+        for (auto& v : s) v = q10(glm::dvec2{uniform(-16000, 16000), uniform(-16000, 16000)});
       } else {
         // A long triangle through the target: two far vertices on opposite sides, one near.
         const glm::dvec2 c = in_region(4);
@@ -205,7 +205,7 @@ TestTriangle TriangleGenerator::make(TriKind kind) {
     case TriKind::Ties: {
       // Odd multiples of 1/512 pixel: every coordinate is a rounding tie at 1/256.
       const glm::dvec2 b = glm::floor(in_region(4));
-      for (auto& v : s) v = b + glm::dvec2(2 * uniform_int(-2048, 2048) + 1, 2 * uniform_int(-2048, 2048) + 1) / 512.0;
+      for (auto& v : s) v = b + glm::dvec2{2 * uniform_int(-2048, 2048) + 1, 2 * uniform_int(-2048, 2048) + 1} / 512.0;
       break;
     }
     case TriKind::GuardBand: {

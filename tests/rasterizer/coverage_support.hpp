@@ -50,6 +50,11 @@ class TriangleGenerator {
  private:
   double uniform(double a, double b) { return std::uniform_real_distribution<double>(a, b)(rng_); }
   int uniform_int(int a, int b) { return std::uniform_int_distribution<int>(a, b)(rng_); }
+  /// m or -m, at random. (Draws that make one value are sequenced by calls like this one and by
+  /// braces: the order in which a function's arguments or an operator's operands are evaluated is
+  /// unspecified, and GCC and Clang differ, so `dvec2(uniform(), uniform())` would make different
+  /// scenes with each compiler.)
+  double with_random_sign(double m) { return uniform_int(0, 1) ? m : -m; }
   glm::dvec2 in_region(double margin);
   const CoverageConfig& config_;
   ViewportMap map_;

@@ -106,9 +106,9 @@ void ordered_blend_scene(Context& ctx, Output& out) {
   const int n = kTrianglesPerChunk * 2 + 1234;
   for (int i = 0; i < n; ++i) {
     const double cx = ux(rng), cy = uy(rng);
-    const glm::vec4 c(float(z(rng)), float(z(rng)), float(z(rng)), float(z(rng)));
+    const glm::vec4 c{float(z(rng)), float(z(rng)), float(z(rng)), float(z(rng))};
     for (int k = 0; k < 3; ++k) {
-      const glm::dvec2 p(cx + d(rng), cy + d(rng));
+      const glm::dvec2 p{cx + d(rng), cy + d(rng)};
       const float depth = float(z(rng));
       pos.push_back({float((p.x - map.x) / (map.w / 2) - 1), float(1 - (p.y - map.y) / (map.h / 2)), depth, 1.0f});
       col.push_back({c});
@@ -240,7 +240,7 @@ void textured_scene(Context& ctx, Output& out) {
     const float cx = ndc(rng), cy = ndc(rng), r = 0.05f + 0.3f * z(rng);
     for (int k = 0; k < 3; ++k) {
       pos.push_back({cx + r * ndc(rng), cy + r * ndc(rng), z(rng), 1.0f});
-      uv.push_back({glm::vec4(t(rng), t(rng), t(rng) * 3, t(rng) * 0.1f)});
+      uv.push_back({glm::vec4{t(rng), t(rng), t(rng) * 3, t(rng) * 0.1f}});
       idx.push_back(base + uint32_t(k));
     }
   }
@@ -283,7 +283,7 @@ void trivial_functor_scene(Context& ctx, Output& out) {
   std::vector<std::array<glm::vec4, 1>> col;
   for (int i = 0; i < 3000; ++i) {
     const float cx = ndc(rng), cy = ndc(rng);
-    const glm::vec4 c(z(rng), z(rng), z(rng), 1.0f);
+    const glm::vec4 c{z(rng), z(rng), z(rng), 1.0f};
     for (int k = 0; k < 3; ++k) {
       pos.push_back({cx + d(rng), cy + d(rng), z(rng), 1.0f});
       col.push_back({c * (0.5f + 0.5f * z(rng))});
