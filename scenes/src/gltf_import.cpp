@@ -460,8 +460,12 @@ class Importer {
       const std::string where = node_name(item.node);
       if (n.mesh >= 0) add_mesh(n.mesh, item.parent, where, n.extras.Get("luxel"), item.motion);
       if (n.camera >= 0) add_camera(n.camera, item.parent, where);
-      if (auto it = n.extensions.find("KHR_lights_punctual"); it != n.extensions.end() && it->second.Get("light").IsNumber())
-        add_light(gltf::integer(it->second.Get("light")).value_or(-1), item.parent, where);
+      if (auto it = n.extensions.find("KHR_lights_punctual"); it != n.extensions.end() && it->second.Get("light").IsNumber()) {
+        const tinygltf::Value& light = it->second.Get("light");
+        const std::optional<int> index = gltf::integer(light);
+        if (!index) fail(where + " refers to light " + gltf::number_text(light) + ", which is not an index");
+        add_light(*index, item.parent, where);
+      }
     }
   }
 

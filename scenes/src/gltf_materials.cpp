@@ -142,9 +142,14 @@ Material material_from_gltf(const tinygltf::Material& g, size_t index, const Res
   for (const TextureKey& k : kTextures) {
     const Value& t = x.Get(k.key);
     if (!t.IsObject() || !t.Get("index").IsNumber()) continue;
+    const std::optional<int> texture = integer(t.Get("index"));
+    if (!texture) {
+      fail(where + " extras " + k.key + " refers to texture " + number_text(t.Get("index")) + ", which is not an index");
+      continue;  // (fail throws)
+    }
     TextureRef& r = m.*k.member;
     r = TextureRef{};
-    r.texture = resolve(gltf::integer(t.Get("index")).value_or(-1), k.color_space, where + " extras " + k.key);
+    r.texture = resolve(*texture, k.color_space, where + " extras " + k.key);
     read_transform(t, r);  // texCoord, offset, scale, rotation
   }
   glm::vec3 rgb(m.color);

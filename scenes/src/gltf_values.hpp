@@ -9,7 +9,9 @@
 
 #include <climits>
 #include <cmath>
+#include <cstdio>
 #include <optional>
+#include <string>
 
 namespace luxel::scenes::gltf {
 
@@ -45,6 +47,12 @@ inline std::optional<int> integer(const tinygltf::Value& v) {
 }
 inline void read(const tinygltf::Value& v, int& out) {
   if (const std::optional<int> i = integer(v)) out = *i;
+}
+/// A number as the file wrote it (to double's precision), for an error that names it.
+inline std::string number_text(const tinygltf::Value& v) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.17g", v.GetNumberAsDouble());
+  return text;
 }
 inline void read(const tinygltf::Value& v, bool& out) {
   if (v.IsBool()) out = v.Get<bool>();

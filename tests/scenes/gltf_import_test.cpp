@@ -299,6 +299,27 @@ TEST(GltfImport, UnknownShaderInExtrasIsNamed) {
   expect_gltf_error(path, "material 0 extras ask for shader 'Refract'", [&] { load_gltf(path); });
 }
 
+// An index must be an integer that fits an int: 2.5 or 1e300 names nothing (converting 1e300 to
+// int is undefined), and the refusal names the number as the file wrote it.
+TEST(GltfImport, IndicesThatAreNotIntegersAreNamed) {
+  TempDir dir;
+  GltfBuilder b;
+  b.doc["extensionsUsed"] = {"KHR_lights_punctual"};
+  b.doc["extensions"] = {{"KHR_lights_punctual", {{"lights", {{{"type", "point"}}, {{"type", "point"}}, {{"type", "point"}}}}}}};
+  b.add_node({{"name", "lamp"}, {"extensions", {{"KHR_lights_punctual", {{"light", 2.5}}}}}});
+  const std::string half = b.write(dir, "half.gltf");
+  expect_gltf_error(half, "refers to light 2.5, which is not an index", [&] { load_gltf(half); });
+  b.doc["nodes"][0]["extensions"]["KHR_lights_punctual"]["light"] = 1e300;
+  const std::string huge = b.write(dir, "huge.gltf");
+  expect_gltf_error(huge, "refers to light 1.0000000000000001e+300, which is not an index", [&] { load_gltf(huge); });
+
+  GltfBuilder m;
+  m.doc["materials"] = {{{"extras", {{"luxel", {{"bumpmap", {{"index", -1e300}}}}}}}}};
+  const std::string texture = m.write(dir, "texture.gltf");
+  expect_gltf_error(texture, "material 0 extras bumpmap refers to texture -1.0000000000000001e+300, which is not an index",
+                    [&] { load_gltf(texture); });
+}
+
 // KHR_lights_punctual: a point light of 10 cd, color (1, 0.5, 0.25), 2 m up. At 50 inches
 // (50 / k m) glTF gives 10 / (50 / k)^2 = 10 k^2 / 2500 per unit color; Source gives
 // color / (quadratic d^2) with d = 50.
