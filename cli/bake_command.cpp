@@ -16,7 +16,6 @@
 
 #include <cstdio>
 #include <cstdlib>
-#include <filesystem>
 #include <iostream>
 #include <memory>
 #include <optional>
@@ -69,21 +68,14 @@ Runner add_bake_command(CLI::App& app) {
       std::cerr << "luxel bake: " << o->scene << ": no HOME or XDG_CACHE_HOME to keep the bake in; give --out DIR\n";
       return 2;
     }
-    {
-      // The folder first: a bake that cannot be kept is not started.
-      std::error_code ec;
-      std::filesystem::create_directories(folder, ec);
-      if (ec) {
-        std::cerr << "luxel bake: " << folder << ": cannot create the bake folder (" << ec.message() << ")\n";
-        return 1;
-      }
-    }
     bake::BakeSettings settings = o->quick ? bake::BakeSettings::quick() : bake::BakeSettings{};
     settings.threads = o->threads;
     settings.cubes_all_light = o->cubes_all_light;
     settings.max_memory_bytes = *memory_limit;
     const frame::CubemapSettings cube_settings = o->quick ? frame::CubemapSettings::quick() : frame::CubemapSettings{};
     try {
+      // The folder and its lock first: a bake that cannot be kept is not started.
+      const bake::FolderLock lock = lock_bake_folder(folder, "luxel bake");
       std::optional<bake::BakeResult> r;
       if (!o->force) {
         try {

@@ -1,6 +1,7 @@
 #include "baking.hpp"
 
 #include "luxel/bake/cubemap_storage.hpp"
+#include "luxel/bake/folder_lock.hpp"
 #include "luxel/bake/storage.hpp"
 
 #include <unistd.h>
@@ -71,8 +72,15 @@ bool needs_bake(const scenes::Scene& scene) {
   return (lightmapped && !scene.lightmaps) || (vertexlit && volume_empty) || cube_missing;
 }
 
+bake::FolderLock lock_bake_folder(const std::string& folder, const char* command) {
+  return bake::FolderLock(folder, [&] {
+    std::cerr << command << ": another luxel is baking into " << folder << "; waiting for it\n" << std::flush;
+  });
+}
+
 void bake_and_attach(scenes::Scene& scene, const std::string& folder, const bake::BakeSettings& settings,
                      const frame::CubemapSettings& cube_settings, const char* command) {
+  const bake::FolderLock lock = lock_bake_folder(folder, command);
   std::optional<bake::BakeResult> result;
   try {
     result = bake::load_bake(folder, scene, settings);

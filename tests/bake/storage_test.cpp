@@ -3,6 +3,7 @@
 
 #include "bake_support.hpp"
 
+#include "luxel/bake/folder_lock.hpp"
 #include "luxel/bake/storage.hpp"
 
 #include <gmock/gmock.h>
@@ -13,8 +14,10 @@
 #include <fstream>
 #include <unistd.h>
 
+#include <atomic>
 #include <chrono>
 #include <iterator>
+#include <optional>
 #include <thread>
 
 namespace luxel::bake::test {
@@ -133,6 +136,39 @@ TEST(BakeStorage, AttachWiresTheFourMapsAndTheCubesIntoTheScene) {
   EXPECT_EQ(s.textures[textures + 2].faces[0].rgba32f[0], r.lightmaps.maps[2][0].r);
   EXPECT_EQ(s.irradiance_volume->cubes.size(), 8u);
   EXPECT_NO_THROW(scenes::validate(s));
+}
+
+// Two holders of one folder's lock, as two processes would be (flock locks belong to the open
+// file, so two opens in one process exclude each other the same way): the second says it waits,
+// and gets the lock only once the first lets it go.
+TEST(BakeFolderLock, ASecondHolderWaitsUntilTheFirstReleases) {
+  TempDir dir;
+  std::optional<FolderLock> first(std::in_place, dir.path() + "/nested");  // created with the folder
+  ASSERT_TRUE(first->held());
+  std::atomic<bool> waiting = false, acquired = false;
+  std::thread second([&] {
+    const FolderLock lock(dir.path() + "/nested", [&] { waiting = true; });
+    acquired = true;
+  });
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(30);
+  while (!waiting && std::chrono::steady_clock::now() < deadline) std::this_thread::sleep_for(std::chrono::milliseconds(1));
+  ASSERT_TRUE(waiting) << "the second holder never said it waits";
+  std::this_thread::sleep_for(std::chrono::milliseconds(50));
+  EXPECT_FALSE(acquired) << "the second holder got the lock while the first held it";
+  first.reset();
+  second.join();
+  EXPECT_TRUE(acquired);
+  bool called = false;
+  const FolderLock free_lock(dir.path() + "/nested", [&] { called = true; });
+  EXPECT_FALSE(called) << "a free lock is not waited for";
+}
+
+TEST(BakeFolderLock, AFolderThatCannotBeCreatedIsAnErrorNamingIt) {
+  TempDir dir;
+  std::filesystem::create_directories(dir.path());
+  std::ofstream(dir.path() + "/file") << "not a folder";
+  EXPECT_THAT([&] { FolderLock lock(dir.path() + "/file/bake"); },
+              ::testing::ThrowsMessage<std::runtime_error>(::testing::HasSubstr("file/bake: cannot create the bake folder")));
 }
 
 }  // namespace

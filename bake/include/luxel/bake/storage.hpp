@@ -10,6 +10,8 @@
 //       "lightmaps": {"width", "height", "files", "unit", "luxels", "generated_uv1_meshes"},
 //       "volume": {"min", "max", "spacing", "counts", "cubes": [[[r, g, b] x 6], ...],
 //       "valid": [0/1, ...]}, "stats", "warnings"}.
+//   .lock
+//       what luxel processes using the folder take in turn (folder_lock.hpp).
 // Generated charts are not stored: they are a deterministic function of what the hash covers,
 // and are made again on loading.
 //
