@@ -53,26 +53,6 @@ struct ModelRun : FrameMeasurement {
   std::string name;
 };
 
-/// The models named by --models, in order; nullopt after printing one line (exit 2).
-std::optional<std::vector<shading::ShaderModel>> parse_models(const std::string& list) {
-  std::vector<shading::ShaderModel> models;
-  std::istringstream names(list);
-  std::string name;
-  try {
-    while (std::getline(names, name, ',')) {
-      const shading::ShaderModel m = shading::parse_pixel_model(name);
-      if (std::find(models.begin(), models.end(), m) != models.end())
-        throw std::invalid_argument(name + " is named twice");
-      models.push_back(m);
-    }
-    if (models.size() < 2) throw std::invalid_argument("name at least two models to compare, comma-separated");
-  } catch (const std::invalid_argument& e) {
-    std::cerr << "luxel compare: --models " << list << ": " << e.what() << "\n";
-    return std::nullopt;
-  }
-  return models;
-}
-
 nlohmann::json optional_number(std::optional<double> v) { return v ? nlohmann::json(*v) : nlohmann::json(nullptr); }
 
 std::string fixed(std::optional<double> v, int decimals) {
@@ -166,7 +146,7 @@ Runner add_compare_command(CLI::App& app) {
     if (!cmd->parsed()) return -1;
     const auto start = std::chrono::steady_clock::now();
     int code = 0;
-    const auto models = parse_models(o->models);
+    const auto models = parse_models("compare", "--models", o->models, 2);
     if (!models) return 2;
     const auto context_options = o->frame.context_options("compare", code);
     if (!context_options) return code;

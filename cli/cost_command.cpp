@@ -7,10 +7,18 @@
 // ambient cube's counts beside Valve's published ones. A report, not a benchmark:
 // bench/shading_source_bench.cpp has the careful numbers.
 //
+// luxel cost --scene SCENE [--model M] [render's size, MSAA, thread and bake options] [--repeats R]:
+// instead, what one frame of the scene costs on each pixel-shader model (or M): the pixels each
+// shader combo shaded with its counted slots and slots x pixels (the frame's passes, post passes
+// included), the median ms of each pass and of the frame over R frames after one, and the totals.
+// Measured as `luxel compare` measures (frame_measurement.hpp), so its numbers are compare's.
+//
 // Rows are '|'-separated columns, so that scripts and the test (tests/cli/cost_test.cpp) can read
 // them; the first lines say which CPU and lanes the times are from.
 
 #include "commands.hpp"
+#include "frame_measurement.hpp"
+#include "frame_options.hpp"
 
 #include "luxel/rasterizer/cpu_model.hpp"
 #include "luxel/shading/source/catalog.hpp"
@@ -18,6 +26,7 @@
 #include "luxel/shading/source/spherical_harmonics.hpp"
 
 #include <cstdio>
+#include <iostream>
 #include <memory>
 #include <string>
 #include <vector>
@@ -34,6 +43,8 @@ struct CostOptions {
   std::string shader = "all";
   int pixels = 1 << 16;
   int repeats = 5;
+  FrameOptions frame;  ///< --scene and what renders it
+  std::string model = "ps_2_0,ps_2_b,ps_3_0";
 };
 
 std::string limit(int v) { return v >= shading::kUnlimited ? "-" : std::to_string(v); }
@@ -85,6 +96,70 @@ void report_ambient_cube() {
               sh.arithmetic_slots, sh.uniform_registers, ps30);
 }
 
+/// One model's frame: its combos, its passes and its totals, as rows of three tables.
+struct FrameCost {
+  std::string model;
+  FrameMeasurement m;
+};
+
+void print_frame_costs(const std::vector<FrameCost>& costs, const CostOptions& o, int threads) {
+  const frame::FrameSettings& s = o.frame.settings;
+  std::printf("cpu: %s\n", rasterizer::cpu_model().c_str());
+  std::printf("frame: %s, %dx%d, %d samples per pixel, %d threads; ms: median of %d frames after one, each pass run to its "
+              "end before the next\n",
+              o.frame.scene.c_str(), s.width, s.height, s.samples, threads, o.repeats);
+  std::printf("\n%-6s | %-20s | %-54s | %10s | %5s | %14s | %6s\n", "model", "shader", "combo", "pixels", "slots",
+              "slots x pixels", "share");
+  for (const FrameCost& c : costs) {
+    uint64_t total = 0;
+    for (const frame::ShaderUse& u : c.m.uses) total += u.pixels * uint64_t(u.slots);
+    for (const frame::ShaderUse& u : c.m.uses) {
+      const uint64_t sp = u.pixels * uint64_t(u.slots);
+      std::printf("%-6s | %-20s | %-54s | %10llu | %5d | %14llu | %5.1f%%\n", c.model.c_str(), u.family.c_str(), u.combo.c_str(),
+                  static_cast<unsigned long long>(u.pixels), u.slots, static_cast<unsigned long long>(sp),
+                  total ? 100.0 * double(sp) / double(total) : 0.0);
+    }
+  }
+  std::printf("\n%-6s | %-20s | %5s | %9s\n", "model", "pass", "draws", "ms");
+  for (const FrameCost& c : costs)
+    for (const frame::PassTime& p : c.m.passes)
+      std::printf("%-6s | %-20s | %5d | %9.3f\n", c.model.c_str(), p.pass.c_str(), p.draws, p.ms);
+  std::printf("\n%-6s | %13s | %14s | %11s | %17s | %12s\n", "model", "pixels shaded", "slots x pixels", "slots/pixel",
+              "slots x px/screen", "ms per frame");
+  for (const FrameCost& c : costs) {
+    uint64_t pixels = 0, slot_pixels = 0;
+    for (const frame::ShaderUse& u : c.m.uses) pixels += u.pixels, slot_pixels += u.pixels * uint64_t(u.slots);
+    const std::optional<double> per_pixel = c.m.slots_per_pixel();
+    std::printf("%-6s | %13llu | %14llu | %11.2f | %17.2f | %12.3f\n", c.model.c_str(), static_cast<unsigned long long>(pixels),
+                static_cast<unsigned long long>(slot_pixels), per_pixel.value_or(0.0),
+                double(slot_pixels) / (double(s.width) * double(s.height)), c.m.median_ms());
+  }
+}
+
+/// `luxel cost --scene`: the frame costs of each model; the exit code.
+int run_frame_costs(CostOptions& o) {
+  int code = 0;
+  const auto models = parse_models("cost", "--model", o.model, 1);
+  if (!models) return 2;
+  const auto context_options = o.frame.context_options("cost", code);
+  if (!context_options) return code;
+  frame::FrameSettings settings = o.frame.settings;
+  const std::optional<scenes::Scene> scene = o.frame.prepare_scene("cost", settings, {}, code);
+  if (!scene) return code;
+  rasterizer::Context ctx(*context_options);
+  std::vector<FrameCost> costs;
+  for (ShaderModel model : *models) {
+    settings.model = model;
+    std::optional<FrameMeasurement> m = measure_frame(
+        [&](const frame::FrameSettings& s) { return o.frame.make_renderer("cost", *scene, s, ctx, code); }, settings,
+        o.repeats, ctx, true);
+    if (!m) return code;
+    costs.push_back({std::string(shading::caps(model).name), std::move(*m)});
+  }
+  print_frame_costs(costs, o, ctx.thread_count());
+  return 0;
+}
+
 std::vector<std::string> shader_options() {
   std::vector<std::string> names = {"all"};
   for (const src::ShaderVariant& v : src::shader_catalog())
@@ -102,11 +177,20 @@ Runner add_cost_command(CLI::App& app) {
   for (const std::string& n : names) help += (help.empty() ? "" : ", ") + n;
   cmd->add_option("--shader", options->shader, help)->check(CLI::IsMember(names))->capture_default_str();
   cmd->add_option("--pixels", options->pixels, "Pixels per timing run")->check(CLI::Range(64, 1 << 24))->capture_default_str();
-  cmd->add_option("--repeats", options->repeats, "Timing runs per variant and lane (the median is printed)")
+  cmd->add_option("--repeats", options->repeats,
+                  "Timing runs per variant and lane; with --scene, timed frames per model (the median is printed)")
       ->check(CLI::Range(1, 101))
       ->capture_default_str();
-  return [cmd, options]() -> int {
+  options->frame.add_to(*cmd);
+  CLI::Option* scene = cmd->get_option("--scene");
+  scene->description("Print what one frame of this scene costs on each model instead: pixels and slots x pixels per "
+                     "shader combo, ms per pass and per frame");
+  cmd->add_option("--model", options->model, "With --scene: the pixel-shader models measured, comma-separated")
+      ->needs(scene)
+      ->capture_default_str();
+  return [cmd, options, scene]() -> int {
     if (!cmd->parsed()) return -1;
+    if (scene->count() > 0) return run_frame_costs(*options);
     print_header(*options);
     for (const src::ShaderVariant& v : src::shader_catalog()) {
       if (options->shader != "all" && options->shader != v.option) continue;

@@ -2,12 +2,37 @@
 
 #include <algorithm>
 #include <chrono>
+#include <iostream>
+#include <map>
+#include <sstream>
+#include <stdexcept>
 
 namespace luxel::cli {
 
 double median_of_sorted(const std::vector<double>& sorted) {
   const size_t n = sorted.size();
   return n % 2 ? sorted[n / 2] : (sorted[n / 2 - 1] + sorted[n / 2]) / 2;
+}
+
+std::optional<std::vector<shading::ShaderModel>> parse_models(const std::string& command, const std::string& option,
+                                                              const std::string& list, size_t at_least) {
+  std::vector<shading::ShaderModel> models;
+  std::istringstream names(list);
+  std::string name;
+  try {
+    while (std::getline(names, name, ',')) {
+      const shading::ShaderModel m = shading::parse_pixel_model(name);
+      if (std::find(models.begin(), models.end(), m) != models.end())
+        throw std::invalid_argument(name + " is named twice");
+      models.push_back(m);
+    }
+    if (models.size() < at_least)
+      throw std::invalid_argument(at_least == 2 ? "name at least two models, comma-separated" : "name a model");
+  } catch (const std::invalid_argument& e) {
+    std::cerr << "luxel " << command << ": " << option << " " << list << ": " << e.what() << "\n";
+    return std::nullopt;
+  }
+  return models;
 }
 
 double FrameMeasurement::median_ms() const { return median_of_sorted(ms); }
@@ -23,7 +48,7 @@ std::optional<double> FrameMeasurement::slots_per_pixel() const {
 }
 
 std::optional<FrameMeasurement> measure_frame(const RendererFactory& make, frame::FrameSettings settings, int timed_frames,
-                                              rasterizer::Context& ctx) {
+                                              rasterizer::Context& ctx, bool time_passes) {
   FrameMeasurement m;
   settings.count_shading = true;
   {
@@ -33,16 +58,31 @@ std::optional<FrameMeasurement> measure_frame(const RendererFactory& make, frame
     m.uses = counted->shader_uses();
   }
   settings.count_shading = false;
+  settings.time_passes = time_passes;
   const std::unique_ptr<frame::Renderer> timed = make(settings);
   if (!timed) return std::nullopt;
   timed->render(ctx);
   m.image = timed->image();
+  // A pass's time in each timed frame (0 in a frame without it: "views" runs only when the clock
+  // or the exposure moved), by name in the order passes first ran.
+  std::map<std::string, std::vector<double>> pass_ms;
   for (int i = 0; i < timed_frames; ++i) {
     const auto start = std::chrono::steady_clock::now();
     timed->render(ctx);
     m.ms.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count());
+    for (const frame::PassTime& p : timed->pass_times()) {
+      std::vector<double>& ms = pass_ms[p.pass];
+      if (ms.empty()) m.passes.push_back({p.pass, 0.0, p.draws});
+      ms.resize(size_t(timed_frames), 0.0);
+      ms[size_t(i)] += p.ms;
+    }
   }
   std::sort(m.ms.begin(), m.ms.end());
+  for (frame::PassTime& p : m.passes) {
+    std::vector<double>& ms = pass_ms[p.pass];
+    std::sort(ms.begin(), ms.end());
+    p.ms = median_of_sorted(ms);
+  }
   return m;
 }
 

@@ -1,16 +1,18 @@
 #pragma once
-// One frame of a scene measured as `luxel compare` and `luxel report` measure it: the shader combos
-// it ran with their counted slots (from a renderer that counts), the first frame's image, and the
-// wall time of the frames after it. Shared so that both commands' "slots per pixel" and
-// "ms per frame" are the same numbers.
+// One frame of a scene measured as `luxel compare`, `luxel cost --scene` and `luxel report` measure
+// it: the shader combos it ran with their counted slots (from a renderer that counts), the first
+// frame's image, and the wall time of the frames after it (and of each pass, when asked). Shared
+// so that the commands' "slots per pixel" and "ms per frame" are the same numbers.
 
 #include "luxel/frame/renderer.hpp"
 #include "luxel/rasterizer/context.hpp"
 #include "luxel/rasterizer/image.hpp"
+#include "luxel/shading/shader_model.hpp"
 
 #include <functional>
 #include <memory>
 #include <optional>
+#include <string>
 #include <vector>
 
 namespace luxel::cli {
@@ -19,6 +21,7 @@ struct FrameMeasurement {
   rasterizer::Image image;               ///< the first frame of a renderer that does not count
   std::vector<double> ms;                ///< the timed frames after it, sorted
   std::vector<frame::ShaderUse> uses;    ///< what the counted frame's shader combos did
+  std::vector<frame::PassTime> passes;   ///< per pass, the median ms of the timed frames (when timed)
 
   /// median_of_sorted(ms).
   double median_ms() const;
@@ -29,14 +32,20 @@ struct FrameMeasurement {
 /// The median of sorted values (the mean of the middle two for an even count; at least one value).
 double median_of_sorted(const std::vector<double>& sorted);
 
+/// The pixel-shader models named in `list` ("ps_2_0,ps_3_0"), in order, at least `at_least` of
+/// them; nullopt after one line on stderr naming `command` and `option` (exit 2).
+std::optional<std::vector<shading::ShaderModel>> parse_models(const std::string& command, const std::string& option,
+                                                              const std::string& list, size_t at_least);
+
 /// Makes a renderer with the settings given, or returns null after saying why (the caller's way).
 using RendererFactory = std::function<std::unique_ptr<frame::Renderer>(const frame::FrameSettings&)>;
 
 /// One counted frame (settings.count_shading set) for the shader uses, then on a renderer that
 /// does not count, one frame (the image: a frame carries state into the next, the time-averaged
-/// lighting, so a later one would depend on `timed_frames`) and `timed_frames` timed ones.
-/// nullopt when `make` returns null.
+/// lighting, so a later one would depend on `timed_frames`) and `timed_frames` timed ones. With
+/// `time_passes` those also time each pass (FrameSettings::time_passes: each pass then runs to its
+/// end before the next, a little slower). nullopt when `make` returns null.
 std::optional<FrameMeasurement> measure_frame(const RendererFactory& make, frame::FrameSettings settings, int timed_frames,
-                                              rasterizer::Context& ctx);
+                                              rasterizer::Context& ctx, bool time_passes = false);
 
 }  // namespace luxel::cli

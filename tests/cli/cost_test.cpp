@@ -134,5 +134,86 @@ TEST(CostCommand, PrintsTheAmbientCubeCountsAndTheCpu) {
   EXPECT_GT(rows, 0);
 }
 
+/// The '|'-separated rows of `out` with `columns` columns, trimmed, header rows (first column
+/// "model") left out.
+std::vector<std::vector<std::string>> rows_of(const std::string& out, size_t columns) {
+  std::vector<std::vector<std::string>> rows;
+  std::istringstream lines(out);
+  std::string line;
+  while (std::getline(lines, line)) {
+    std::vector<std::string> cols;
+    std::istringstream fields(line);
+    std::string f;
+    while (std::getline(fields, f, '|')) cols.push_back(trim(f));
+    if (cols.size() == columns && cols[0] != "model") rows.push_back(cols);
+  }
+  return rows;
+}
+
+// `luxel cost --scene`: per model, the pixels and slots of each combo the frame ran. The post
+// passes' pixels follow from the image size alone (the engine's full-screen pass shades each pixel
+// once; the downsample, a quarter on each side; the blur, that twice), the geometry's from nothing
+// the model changes (the same pixels in the same order on every model), the slots of a combo the
+// catalog lists from the catalog's own count, and the totals from the rows.
+TEST(CostCommand, SceneFrameCostsPerModelFollowFromTheImageAndTheCatalog) {
+  constexpr int kWidth = 96, kHeight = 64;
+  const Process run = run_luxel("cost --scene builtin:courtyard --bake quick --width 96 --height 64 --msaa 4 --repeats 1 "
+                                "--threads 2 2>/dev/null");
+  ASSERT_EQ(run.exit_code, 0) << run.out;
+  EXPECT_EQ(run.out.rfind("cpu: ", 0), 0u) << "the first line names the CPU";
+  const auto combos = rows_of(run.out, 7), passes = rows_of(run.out, 4), totals = rows_of(run.out, 6);
+  std::map<std::string, std::vector<uint64_t>> pixels_in_order;
+  std::map<std::string, uint64_t> pixels_of, slot_pixels_of;
+  std::map<std::string, double> share_of;
+  int from_catalog = 0;
+  for (const auto& c : combos) {
+    const std::string& model = c[0];
+    const uint64_t pixels = std::stoull(c[3]), slots = std::stoull(c[4]), slot_pixels = std::stoull(c[5]);
+    EXPECT_EQ(slot_pixels, pixels * slots) << c[1] << " " << c[2];
+    pixels_in_order[model].push_back(pixels);
+    pixels_of[model] += pixels, slot_pixels_of[model] += slot_pixels;
+    share_of[model] += std::stod(c[6]);
+    const uint64_t screen = kWidth * kHeight, quarter = (kWidth / 4) * (kHeight / 4);
+    if (c[1] == "Engine_Post") EXPECT_EQ(pixels, screen) << model;
+    if (c[1] == "Downsample_nohdr") EXPECT_EQ(pixels, quarter) << model;
+    if (c[1] == "BlurFilter") EXPECT_EQ(pixels, 2 * quarter) << model;
+    for (const ShaderVariant& v : shader_catalog()) {
+      const ShaderModel m = parse_pixel_model(model);
+      if (v.family != c[1] || v.variant != c[2] || std::find(v.models.begin(), v.models.end(), m) == v.models.end()) continue;
+      EXPECT_EQ(slots, uint64_t(v.measure(m).total_slots())) << model << " " << c[1] << " " << c[2];
+      ++from_catalog;
+    }
+  }
+  EXPECT_GT(from_catalog, 3) << "some of the frame's combos are the catalog's";
+  ASSERT_EQ(pixels_in_order.size(), 3u) << "ps_2_0, ps_2_b and ps_3_0 by default";
+  EXPECT_EQ(pixels_in_order["ps_2_0"], pixels_in_order["ps_3_0"]);
+  EXPECT_EQ(pixels_in_order["ps_2_b"], pixels_in_order["ps_3_0"]);
+  ASSERT_EQ(totals.size(), 3u);
+  for (const auto& t : totals) {
+    const std::string& model = t[0];
+    EXPECT_EQ(std::stoull(t[1]), pixels_of[model]) << model;
+    EXPECT_EQ(std::stoull(t[2]), slot_pixels_of[model]) << model;
+    EXPECT_NEAR(std::stod(t[3]), double(slot_pixels_of[model]) / double(pixels_of[model]), 0.006) << model;
+    EXPECT_NEAR(std::stod(t[4]), double(slot_pixels_of[model]) / (kWidth * kHeight), 0.006) << model;
+    EXPECT_GT(std::stod(t[5]), 0.0) << model;
+    EXPECT_NEAR(share_of[model], 100.0, 0.05 * double(pixels_in_order[model].size())) << model;
+  }
+  std::set<std::string> opaque;
+  for (const auto& p : passes) {
+    EXPECT_GE(std::stod(p[3]), 0.0) << p[0] << " " << p[1];
+    if (p[1] == "opaque") opaque.insert(p[0]);
+  }
+  EXPECT_EQ(opaque.size(), 3u) << "every model's opaque pass is timed";
+}
+
+TEST(CostCommand, SceneFrameCostsOfOneModel) {
+  const Process run = run_luxel("cost --scene builtin:courtyard --bake quick --width 64 --height 32 --msaa 1 --repeats 1 "
+                                "--model ps_2_b 2>/dev/null");
+  ASSERT_EQ(run.exit_code, 0) << run.out;
+  const auto totals = rows_of(run.out, 6);
+  ASSERT_EQ(totals.size(), 1u) << run.out;
+  EXPECT_EQ(totals[0][0], "ps_2_b");
+}
+
 }  // namespace
 }  // namespace luxel::shading::source
