@@ -17,7 +17,9 @@
 #include "luxel/shading/source/water.hpp"
 
 #include <algorithm>
+#include <bit>
 #include <chrono>
+#include <cmath>
 #include <random>
 #include <span>
 
@@ -76,6 +78,40 @@ LaneTimes time_lanes(const Shade& shade, int k, int pixels, int repeats) {
   return {median(simd_ns), median(scalar_ns)};
 }
 
+/// `shade` on the SIMD lane and, pixel by pixel, on the scalar lane over the same inputs (the
+/// timing's, each SIMD lane's values fed to the scalar pixel it stands for), compared.
+template <class Shade>
+LaneAgreement compare_lanes(const Shade& shade, int k, int pixels) {
+  pixels = std::max(pixels, simd::kLanes) / simd::kLanes * simd::kLanes;
+  const TimingInputs in(k, pixels);
+  const auto to_steps = [](float v) { return int(std::lround(std::clamp(double(v), 0.0, 1.0) * 255.0)); };
+  LaneAgreement r;
+  for (int p = 0; p < pixels; p += simd::kLanes) {
+    const float* base = in.v.data() + static_cast<size_t>(p) * k;
+    auto get = [&](int i) { return simd::Float::load_unaligned(base + static_cast<size_t>(i) * simd::kLanes); };
+    const float4<simd::Float> c = shade.template operator()<simd::Float>(get);
+    alignas(64) float lanes[4][simd::kLanes];
+    c.x.store_aligned(lanes[0]), c.y.store_aligned(lanes[1]), c.z.store_aligned(lanes[2]), c.w.store_aligned(lanes[3]);
+    for (int j = 0; j < simd::kLanes; ++j) {
+      auto get_scalar = [&](int i) { return base[static_cast<size_t>(i) * simd::kLanes + static_cast<size_t>(j)]; };
+      const float4<float> s = shade.template operator()<float>(get_scalar);
+      const float scalar[4] = {s.x, s.y, s.z, s.w};
+      bool differs = false;
+      for (int ch = 0; ch < 4; ++ch) {
+        const float a = lanes[ch][j], b = scalar[ch];
+        if (std::bit_cast<uint32_t>(a) == std::bit_cast<uint32_t>(b) || (std::isnan(a) && std::isnan(b))) continue;
+        differs = true;
+        const double d = std::isnan(a) || std::isnan(b) ? HUGE_VAL : std::fabs(double(a) - double(b));
+        r.max_abs = std::max(r.max_abs, d);
+        r.max_steps = std::max(r.max_steps, std::abs(to_steps(a) - to_steps(b)));
+      }
+      r.differing += differs;
+      ++r.pixels;
+    }
+  }
+  return r;
+}
+
 /// The models of `candidates` (the pixel-shader models unless told otherwise) that the combo's
 /// rules allow it on (its valid(model), where the family has one).
 template <class Combo>
@@ -94,7 +130,8 @@ template <class Combo, class Shade, class Measure>
 ShaderVariant variant(const char* family, const char* option, const Combo& combo, int inputs, Shade shade,
                       Measure measure, std::span<const ShaderModel> candidates = kPixelModels) {
   return {family, option, combo.name(), models_of(combo, candidates), measure,
-          [shade, inputs](int pixels, int repeats) { return time_lanes(shade, inputs, pixels, repeats); }};
+          [shade, inputs](int pixels, int repeats) { return time_lanes(shade, inputs, pixels, repeats); },
+          [shade, inputs](int pixels) { return compare_lanes(shade, inputs, pixels); }};
 }
 
 void add_lightmapped(std::vector<ShaderVariant>& out) {

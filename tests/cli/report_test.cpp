@@ -11,6 +11,7 @@
 #include "cli/run_luxel.hpp"
 
 #include "luxel/scenes/image_io.hpp"
+#include "luxel/shading/source/catalog.hpp"
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
@@ -147,6 +148,36 @@ TEST(ReportCommandProbes, AMissingFolderSkipsTheProbeRowsWithANote) {
   EXPECT_NE(run.out.find("is not a folder; the probe rows are skipped"), std::string::npos) << run.out;
   EXPECT_EQ(nlohmann::json::parse(test::file_text(out / "speed_error.json"))["sections"][0]["rows"].size(), 9u);
   fs::remove_all(out);
+}
+
+// The lanes section: a row per catalog variant; the SIMD lane gives the scalar lane's bits for
+// every pixel, but where the combine stage samples a texture (the ps_2_0 normalization cube), which
+// the scalar lane filters in double: there within texture_test.cpp's bound of 1e-6 and one 8-bit
+// step.
+TEST(ReportLanes, SimdGivesTheScalarLanesBitsButWhereItSamplesATexture) {
+  const std::filesystem::path out = std::filesystem::temp_directory_path() / ("luxel-report-lanes-" + std::to_string(getpid()));
+  std::filesystem::remove_all(out);
+  const Process run = run_luxel("report speed-error --sections lanes --repeats 1 --out " + out.string() + " 2>/dev/null");
+  ASSERT_EQ(run.exit_code, 0) << run.out;
+  const nlohmann::json s = nlohmann::json::parse(test::file_text((out / "speed_error.json").string()))["sections"][0];
+  EXPECT_EQ(s["name"], "lanes");
+  ASSERT_EQ(s["rows"].size(), shading::source::shader_catalog().size());
+  int texture_reading = 0;
+  for (const nlohmann::json& row : s["rows"]) {
+    const std::string name = row["variant"].get<std::string>() + " " + row["label"].get<std::string>();
+    if (row["label"].get<std::string>().find("normcube") != std::string::npos) {
+      ++texture_reading;
+      EXPECT_LE(row["error"]["max_abs"].get<double>(), 1e-6) << name;
+      EXPECT_LE(row["error"]["max_steps"].get<double>(), 1.0) << name;
+    } else {
+      EXPECT_EQ(row["error"]["max_abs"].get<double>(), 0.0) << name;
+      EXPECT_EQ(row["error"]["differing_share"].get<double>(), 0.0) << name;
+    }
+    EXPECT_GT(row["cost"]["slots"].get<double>(), 0.0) << name;
+  }
+  EXPECT_GT(texture_reading, 0);
+  EXPECT_TRUE(std::filesystem::is_regular_file(out / "lanes.png"));
+  std::filesystem::remove_all(out);
 }
 
 }  // namespace

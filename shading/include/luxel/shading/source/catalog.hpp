@@ -10,11 +10,13 @@
 // values and interpolants drawn at random in ranges without NaN or denormal slow paths; texture
 // sampling is excluded, so that the numbers are the shader's arithmetic on each lane. A number is
 // the median over `repeats` runs of `pixels` pixels each, the two lanes taking turns (for a vertex
-// shader, read pixel as vertex: its inputs are vertex attributes).
+// shader, read pixel as vertex: its inputs are vertex attributes). compare_lanes feeds both lanes
+// the same inputs and compares what they return.
 
 #include "luxel/shading/cost.hpp"
 #include "luxel/shading/shader_model.hpp"
 
+#include <cstdint>
 #include <functional>
 #include <string>
 #include <string_view>
@@ -28,6 +30,16 @@ struct LaneTimes {
   double scalar_ns = 0.0;
 };
 
+/// How far a variant's SIMD lane is from its scalar lane on the same inputs (the scalar lane is
+/// the reference: one pixel at a time, in float). Both lanes run the same IEEE operations in the
+/// same order, so every field is 0 unless a lane's implementation of an operation differs.
+struct LaneAgreement {
+  uint64_t pixels = 0;           ///< pixels compared
+  uint64_t differing = 0;        ///< pixels whose result differs in any channel's bits
+  double max_abs = 0.0;          ///< the largest difference of a channel (infinite: one lane NaN)
+  int max_steps = 0;             ///< the same after each result is clamped to [0, 1] and rounded to 8 bits
+};
+
 /// One static combo of one family.
 struct ShaderVariant {
   std::string family;               ///< "LightmappedGeneric", "VertexLitGeneric", ...
@@ -36,6 +48,8 @@ struct ShaderVariant {
   std::vector<ShaderModel> models;  ///< the shader models the SDK's rules allow it on
   std::function<Cost(ShaderModel)> measure;
   std::function<LaneTimes(int pixels, int repeats)> time;
+  /// The combine stage on both lanes over `pixels` pixels of the timing's inputs, compared.
+  std::function<LaneAgreement(int pixels)> compare_lanes;
 };
 
 /// Every variant of every family, families in a fixed order, combos in their table's order.
