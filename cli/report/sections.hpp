@@ -12,6 +12,7 @@ ReportSection shader_models_section();
 ReportSection ambient_sampling_section();
 ReportSection tone_mapping_section();
 ReportSection color_correction_section();
+ReportSection exposure_section();
 ReportSection lanes_section();
 
 }  // namespace luxel::cli

@@ -180,6 +180,39 @@ rasterizer::Image image_of(int width, int height, const std::vector<uint8_t>& re
   return image;
 }
 
+// The exposure section on its own (90 frames per row): a row per counting method and latency; the
+// two methods count the same samples, so they give the same targets; a later read-back lags
+// more, so the mean error grows with the latency; once every bucket has been counted (the second
+// half) the engine's target is near the exact one.
+TEST(ReportExposure, RowsPerCountingAndLatencyWithTheSameTargetsForBothCountings) {
+  const fs::path out = fs::temp_directory_path() / ("luxel_report_exposure_test_" + std::to_string(getpid()));
+  const Process run = run_luxel("report speed-error --sections exposure --scene builtin:courtyard --bake quick --width 32 "
+                                "--height 18 --repeats 1 --out " + out.string() + " 2>/dev/null");
+  ASSERT_EQ(run.exit_code, 0) << run.out;
+  const nlohmann::json rows = nlohmann::json::parse(test::file_text(out / "speed_error.json"))["sections"][0]["rows"];
+  ASSERT_EQ(rows.size(), 8u);
+  for (size_t i = 0; i < 4; ++i) {
+    const nlohmann::json& direct = rows[i];
+    const nlohmann::json& stencil = rows[i + 4];
+    EXPECT_EQ(direct["variant"], "direct query");
+    EXPECT_EQ(stencil["variant"], "stencil + query");
+    EXPECT_EQ(direct["cost"]["query_latency"], int(i + 1));
+    EXPECT_EQ(stencil["cost"]["query_latency"], int(i + 1));
+    EXPECT_EQ(direct["error"], stencil["error"]) << "latency " << i + 1;
+    const double max = direct["error"]["max_stops"], mean = direct["error"]["mean_stops"],
+                 late = direct["error"]["mean_stops_second_half"];
+    EXPECT_TRUE(std::isfinite(max)) << i;
+    EXPECT_GE(max, mean) << i;
+    EXPECT_LT(late, mean) << "latency " << i + 1 << ": the filled histogram is nearer the exact one";
+    EXPECT_LT(late, 0.1) << "latency " << i + 1;
+    if (i > 0) {
+      EXPECT_GE(mean, rows[i - 1]["error"]["mean_stops"].get<double>()) << "latency " << i + 1;
+    }
+  }
+  EXPECT_GT(rows[3]["error"]["mean_stops"].get<double>(), rows[0]["error"]["mean_stops"].get<double>());
+  fs::remove_all(out);
+}
+
 TEST(BoxFilterDown, RoundsEachBlocksMeanHalfUpAsTheResolve) {
   // Two 2x2 blocks side by side: sums 1 (mean 0.25 -> 0), 2 (0.5 -> 1, half up) and, below, 6
   // (1.5 -> 2) and 1020 (255).
