@@ -13,6 +13,7 @@ ReportSection ambient_sampling_section();
 ReportSection tone_mapping_section();
 ReportSection color_correction_section();
 ReportSection exposure_section();
+ReportSection cubemaps_section();
 ReportSection lanes_section();
 
 }  // namespace luxel::cli

@@ -213,6 +213,33 @@ TEST(ReportExposure, RowsPerCountingAndLatencyWithTheSameTargetsForBothCountings
   fs::remove_all(out);
 }
 
+// The cubemaps section: brackets 1 to 4 stops apart and one exposure alone against float captures.
+// Fewer captures, more error; within the bounds frame's cubemaps test sets for 2 and 4 stops (a
+// merge without its division or of one exposure fails them, tests/frame/cubemaps_test.cpp), and
+// the one exposure far outside them.
+TEST(ReportCubemaps, MergedBracketsAgainstFloatCaptures) {
+  const fs::path out = fs::temp_directory_path() / ("luxel_report_cubemaps_test_" + std::to_string(getpid()));
+  const Process run = run_luxel("report speed-error --sections cubemaps --scene builtin:courtyard --bake quick --width 32 "
+                                "--height 18 --repeats 1 --out " + out.string() + " 2>/dev/null");
+  ASSERT_EQ(run.exit_code, 0) << run.out;
+  const nlohmann::json rows = nlohmann::json::parse(test::file_text(out / "speed_error.json"))["sections"][0]["rows"];
+  ASSERT_EQ(rows.size(), 5u);
+  const char* const variants[] = {"1 stops apart", "2 stops apart", "3 stops apart", "4 stops apart", "one exposure"};
+  for (size_t i = 0; i < rows.size(); ++i) {
+    EXPECT_EQ(rows[i]["variant"], variants[i]);
+    if (i == 0) continue;
+    EXPECT_LT(rows[i]["cost"]["captures_per_face"].get<int>(), rows[i - 1]["cost"]["captures_per_face"].get<int>()) << i;
+    EXPECT_GT(rows[i]["error"]["p99_stops"].get<double>(), rows[i - 1]["error"]["p99_stops"].get<double>()) << i;
+  }
+  EXPECT_LE(rows[1]["error"]["max_stops"].get<double>(), 0.03);
+  EXPECT_LE(rows[1]["error"]["p99_stops"].get<double>(), 0.02);
+  EXPECT_LE(rows[3]["error"]["max_stops"].get<double>(), 0.05);
+  EXPECT_LE(rows[3]["error"]["p99_stops"].get<double>(), 0.035);
+  EXPECT_GT(rows[4]["error"]["max_stops"].get<double>(), 1.0) << "one exposure cannot hold the sky and the shade";
+  EXPECT_EQ(rows[4]["cost"]["captures_per_face"], 1);
+  fs::remove_all(out);
+}
+
 TEST(BoxFilterDown, RoundsEachBlocksMeanHalfUpAsTheResolve) {
   // Two 2x2 blocks side by side: sums 1 (mean 0.25 -> 0), 2 (0.5 -> 1, half up) and, below, 6
   // (1.5 -> 2) and 1020 (255).
