@@ -59,8 +59,12 @@ namespace {
 template <class Params>
 std::vector<rasterizer::Texture> set_lookups(std::span<const WeightedLut> luts, Params& params) {
   const std::vector<float> weights = checked_weights(luts);
-  for (const WeightedLut& l : luts)
+  for (const WeightedLut& l : luts) {
     if (l.lut == nullptr) throw std::invalid_argument("color correction: a weighted LUT without its LUT");
+    if (l.lut->size != luts[0].lut->size)
+      throw std::invalid_argument("color correction: LUTs of " + std::to_string(luts[0].lut->size) + " and " +
+                                  std::to_string(l.lut->size) + " points per axis blended in one pass");
+  }
   std::vector<rasterizer::Texture> volumes;
   volumes.reserve(luts.size());
   for (size_t k = 0; k < luts.size(); ++k) {
@@ -69,6 +73,7 @@ std::vector<rasterizer::Texture> set_lookups(std::span<const WeightedLut> luts, 
     params.lut_weights[int(k)] = weights[k];
   }
   params.default_weight = default_weight(weights);
+  if (!luts.empty()) params.lut_size = luts[0].lut->size;
   return volumes;
 }
 

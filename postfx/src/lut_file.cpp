@@ -175,8 +175,8 @@ void write_cube(const Lut& lut, const std::string& path, const std::string& titl
   std::string quoted = title;
   std::replace(quoted.begin(), quoted.end(), '"', '\'');  // the title is the only quoted field
   out << "TITLE \"" << quoted << "\"\n";
-  out << "# luxel: the engine's 32^3 color-correction LUT (8-bit entries / 255), red fastest\n";
-  out << "LUT_3D_SIZE " << kLutSize << "\nDOMAIN_MIN 0 0 0\nDOMAIN_MAX 1 1 1\n";
+  out << "# luxel: the engine's " << lut.size << "^3 color-correction LUT (8-bit entries / 255), red fastest\n";
+  out << "LUT_3D_SIZE " << lut.size << "\nDOMAIN_MIN 0 0 0\nDOMAIN_MAX 1 1 1\n";
   char line[64];
   for (const Lut::Color24& e : lut.entries) {
     std::snprintf(line, sizeof line, "%.6f %.6f %.6f\n", e[0] / 255.0, e[1] / 255.0, e[2] / 255.0);

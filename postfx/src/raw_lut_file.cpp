@@ -29,11 +29,11 @@ Lut read_raw_lut(const std::string& path) {
 }
 
 ColorTransform raw_lut_transform(const Lut& lut, const std::string& name) {
-  const OCIO::Lut3DTransformRcPtr lattice = OCIO::Lut3DTransform::Create(kLutSize);
+  const OCIO::Lut3DTransformRcPtr lattice = OCIO::Lut3DTransform::Create(unsigned(lut.size));
   lattice->setInterpolation(OCIO::INTERP_LINEAR);
-  for (int b = 0; b < kLutSize; ++b)
-    for (int g = 0; g < kLutSize; ++g)
-      for (int r = 0; r < kLutSize; ++r) {
+  for (int b = 0; b < lut.size; ++b)
+    for (int g = 0; g < lut.size; ++g)
+      for (int r = 0; r < lut.size; ++r) {
         const Lut::Color24& e = lut.at(r, g, b);
         lattice->setValue(r, g, b, e[0] / 255.0f, e[1] / 255.0f, e[2] / 255.0f);
       }
@@ -48,6 +48,7 @@ ColorTransform raw_lut_transform(const Lut& lut, const std::string& name) {
 
 void write_raw_lut(const Lut& lut, const std::string& path) {
   static_assert(sizeof(Lut::Color24) == 3, "entries are the file's bytes");
+  if (lut.size != kLutSize) throw std::invalid_argument(path + ": a .raw holds the engine's 32^3 LUT, not " + std::to_string(lut.size) + "^3");
   std::ofstream out(path, std::ios::binary);
   if (!out.write(reinterpret_cast<const char*>(lut.entries.data()), std::streamsize(kRawLutBytes)) || !out.flush()) {
     throw std::runtime_error(path + ": cannot write it");

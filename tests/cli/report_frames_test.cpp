@@ -140,11 +140,19 @@ TEST_F(ReportFrames, InShaderToneMapIsTheFloatTargetsWithinAStep) {
 
 TEST_F(ReportFrames, EngineLutsStayNearTheExactGrades) {
   // postfx/color_correction.hpp: the built-in presets through the engine's lattice are within 2
-  // steps of the exact grade over every 8-bit color.
+  // steps of the exact grade over every 8-bit color; 16^3 and 64^3 lattices follow, the volume's
+  // bytes as their cost.
   const nlohmann::json rows = section("a", "color_correction")["rows"];
-  ASSERT_EQ(rows.size(), 4u);
-  for (const nlohmann::json& row : rows) {
-    EXPECT_LE(row["error"]["max_steps"].get<int>(), 2) << row["label"];
+  ASSERT_EQ(rows.size(), 12u);
+  for (size_t i = 0; i < rows.size(); ++i) {
+    const nlohmann::json& row = rows[i];
+    const int size = i < 4 ? 16 : i < 8 ? 32 : 64;
+    EXPECT_EQ(row["cost"]["lut_kib"].get<double>(), size * size * size * 4 / 1024.0) << i;
+    EXPECT_EQ(row["variant"].get<std::string>().rfind(std::to_string(size) + "^3 8-bit LUT", 0), 0u) << i;
+    if (size == 32) {
+      EXPECT_LE(row["error"]["max_steps"].get<int>(), 2) << row["label"];
+    }
+    EXPECT_LE(row["error"]["max_steps"].get<int>(), 6) << row["label"] << " " << size;
     EXPECT_GT(row["cost"]["slots_per_pixel"].get<double>(), 0.0) << row["label"];
   }
 }

@@ -118,6 +118,34 @@ struct ScalarReference {
   }
 };
 
+// Lattices of other sizes (luxel's, for the report): entries round(255 i / (N - 1)) are within
+// (N - 2) / (2 (N - 1)) < 1/2 of a step of the color for N = 16 (exact: 255/15 = 17) and 64, so
+// the identity holds exactly as for 32 when the shader maps colors onto N texels (uvw = c (N-1)/N +
+// 0.5/N); with the engine's 32-texel mapping on these volumes it does not.
+TEST(ColorCorrection, IdentityLutsOfOtherSizesAreTheIdentity) {
+  const rasterizer::Image frame = all_colors(3);
+  rasterizer::Context ctx(2);
+  for (int size : {16, 64}) {
+    const Lut identity = Lut::identity(size);
+    ASSERT_EQ(identity.entries.size(), size_t(size) * size * size);
+    const WeightedLut luts[] = {{&identity, 1.0f}};
+    EXPECT_EQ(max_step(frame, color_correct(ctx, frame, luts)), 0) << size;
+    const ColorTransform none{"identity", "identity", [](std::span<glm::vec3>) {}};
+    EXPECT_EQ(sample_lut(none, size), identity) << size;
+  }
+}
+
+TEST(ColorCorrection, LutSizesAreChecked) {
+  const ColorTransform none{"identity", "identity", [](std::span<glm::vec3>) {}};
+  EXPECT_THROW(Lut::of_size(1), std::invalid_argument);
+  EXPECT_THROW(Lut::of_size(kMaxLutSize + 1), std::invalid_argument);
+  EXPECT_THROW(sample_lut(none, 0), std::invalid_argument);
+  const Lut small = Lut::identity(16), engine = Lut::identity();
+  const WeightedLut mixed[] = {{&small, 0.5f}, {&engine, 0.5f}};
+  rasterizer::Context ctx(1);
+  EXPECT_THROW(color_correct(ctx, random_frame(8, 8, 2), mixed), std::invalid_argument);
+}
+
 TEST(ColorCorrection, PassGivesTheBytesOfTheScalarShaderAtEachPixel) {
   const scenes::test::TempDir dir;
   test::write_cube_file(test::analytic_lattice(17), dir.file("analytic.cube"));

@@ -74,6 +74,11 @@ TEST(RawLutFile, WritesTheSameBytes) {
   EXPECT_THROW(write_raw_lut(Lut::identity(), dir.file("no/such/folder/x.raw")), std::runtime_error);
 }
 
+TEST(RawLutFile, OnlyTheEnginesSizeIsWritten) {
+  const scenes::test::TempDir dir;
+  EXPECT_THROW(write_raw_lut(Lut::identity(16), dir.file("small.raw")), std::invalid_argument);
+}
+
 TEST(RawLutFile, FilesOfAnotherSizeGiveOneLineNamingThem) {
   const TempDir dir;
   std::ofstream(dir.file("short.raw"), std::ios::binary) << std::string(100, 'x');

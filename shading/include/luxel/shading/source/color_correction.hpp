@@ -33,7 +33,8 @@
 
 namespace luxel::shading::source {
 
-/// The edge of the engine's LUT volume (§9.1: RGBX5551 keys, 5 bits per channel).
+/// The edge of the engine's LUT volume (§9.1: RGBX5551 keys, 5 bits per channel). Other edges
+/// are luxel's, to measure what the engine's choice costs (`luxel report`, color_correction).
 inline constexpr int kColorCorrectionLutSize = 32;
 /// Most lookups one pass blends (§9.2).
 inline constexpr int kMaxColorCorrectionLuts = 4;
@@ -79,13 +80,15 @@ struct ColorCorrectionParams {
       Sampler3D{3, nullptr, color_correction_lut_sampler()}, Sampler3D{4, nullptr, color_correction_lut_sampler()}};
   glm::vec4 lut_weights{0.0f};  ///< c0: w0..w3
   float default_weight = 1.0f;  ///< c1.x: the frame's own weight
+  int lut_size = kColorCorrectionLutSize;  ///< the volumes' edge: the literals of the uvw's mad
 };
 
-/// The volume coordinate of a color (§9.2): 0 and 1 land on the first and last texel centers.
+/// The volume coordinate of a color (§9.2, for the engine's size 32: uvw = c * 31/32 + 0.5/32):
+/// 0 and 1 land on the first and last texel centers of a volume `size` texels on a side.
 template <Lane L>
-inline float3<L> color_correction_uvw(const float3<L>& color) {
-  constexpr float kSize = kColorCorrectionLutSize;
-  return color * ((kSize - 1.0f) / kSize) + 0.5f / kSize;
+inline float3<L> color_correction_uvw(const float3<L>& color, int size = kColorCorrectionLutSize) {
+  const float n = float(size);
+  return color * ((n - 1.0f) / n) + 0.5f / n;
 }
 
 /// The blend of the frame's color with the lookups already fetched (lookups[k] for k < C.luts):
@@ -105,7 +108,7 @@ inline float3<L> color_correction_combine(const float3<L>& frame,
 template <ColorCorrectionCombo C, Lane L>
 inline float4<L> color_correction(const float2<L>& uv, const ColorCorrectionParams& p) {
   const float4<L> frame = tex2D(p.frame, uv);
-  const float3<L> uvw = color_correction_uvw(frame.rgb());
+  const float3<L> uvw = color_correction_uvw(frame.rgb(), p.lut_size);
   std::array<float3<L>, kMaxColorCorrectionLuts> lookups;
   for (int k = 0; k < C.luts; ++k) lookups[k] = tex3D(p.luts[k], uvw).rgb();
   return float4<L>(color_correction_combine<C>(frame.rgb(), lookups, p.lut_weights, p.default_weight), frame.w);

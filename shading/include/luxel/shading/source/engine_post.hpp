@@ -55,6 +55,7 @@ struct EnginePostParams {
   glm::vec4 lut_weights{0.0f};  ///< c0: w0..w3
   float default_weight = 1.0f;  ///< c1.x: the bloomed frame's own weight
   float bloom_factor = 1.0f;    ///< c1.y
+  int lut_size = kColorCorrectionLutSize;  ///< the volumes' edge (ColorCorrectionParams::lut_size)
 };
 
 /// The bloom added to the frame: what the lookups read.
@@ -69,7 +70,7 @@ inline float4<L> engine_post(const float2<L>& frame_uv, const float2<L>& bloom_u
   static_assert(C.valid());
   const float4<L> frame = tex2D(p.frame, frame_uv);
   const float3<L> bloomed = engine_post_bloomed(frame.rgb(), tex2D(p.bloom, bloom_uv).rgb(), p);
-  const float3<L> uvw = color_correction_uvw(bloomed);
+  const float3<L> uvw = color_correction_uvw(bloomed, p.lut_size);
   std::array<float3<L>, kMaxColorCorrectionLuts> lookups;
   for (int k = 0; k < C.luts; ++k) lookups[k] = tex3D(p.luts[k], uvw).rgb();
   return float4<L>(color_correction_combine<C.correction()>(bloomed, lookups, p.lut_weights, p.default_weight), frame.w);
