@@ -248,6 +248,29 @@ TEST(ReportCubemaps, MergedBracketsAgainstFloatCaptures) {
   fs::remove_all(out);
 }
 
+// The ambient_popping section: the courtyard's moving models along 240 frames. The nearest sample
+// steps as a model crosses cells, the trilinear blend moves smoothly, and the time averaging damps
+// both: each of those halves (at least) the largest jump of the reading without it.
+TEST(ReportAmbientPopping, AveragingAndTrilinearDampTheNearestSamplesSteps) {
+  const fs::path out = fs::temp_directory_path() / ("luxel_report_popping_test_" + std::to_string(getpid()));
+  const Process run = run_luxel("report speed-error --sections ambient_popping --scene builtin:courtyard --bake quick --width 32 "
+                                "--height 18 --repeats 1 --out " + out.string() + " 2>/dev/null");
+  ASSERT_EQ(run.exit_code, 0) << run.out;
+  const nlohmann::json rows = nlohmann::json::parse(test::file_text(out / "speed_error.json"))["sections"][0]["rows"];
+  ASSERT_EQ(rows.size(), 4u);
+  auto jump = [&](size_t i) { return rows[i]["error"]["max_jump"].get<double>(); };
+  EXPECT_EQ(rows[0]["cost"]["volume_samples"], 1);
+  EXPECT_EQ(rows[2]["cost"]["volume_samples"], 8);
+  EXPECT_EQ(rows[0]["cost"]["time_constant_s"], 0.0);
+  EXPECT_GT(rows[1]["cost"]["time_constant_s"].get<double>(), 0.0);
+  EXPECT_GT(jump(0), 0.1) << "the nearest sample steps between cells";
+  EXPECT_LT(2 * jump(1), jump(0)) << "averaging damps the nearest sample's steps";
+  EXPECT_LT(2 * jump(2), jump(0)) << "the trilinear blend has no steps";
+  EXPECT_LE(jump(3), jump(2));
+  for (size_t i = 0; i < rows.size(); ++i) EXPECT_LE(rows[i]["error"]["mean_jump"].get<double>(), jump(i)) << i;
+  fs::remove_all(out);
+}
+
 TEST(BoxFilterDown, RoundsEachBlocksMeanHalfUpAsTheResolve) {
   // Two 2x2 blocks side by side: sums 1 (mean 0.25 -> 0), 2 (0.5 -> 1, half up) and, below, 6
   // (1.5 -> 2) and 1020 (255).
