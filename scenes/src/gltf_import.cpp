@@ -6,6 +6,7 @@
 #include "gltf_materials.hpp"
 #include "gltf_scene_extras.hpp"
 #include "gltf_values.hpp"
+#include "one_line.hpp"
 #include "luxel/scenes/gltf.hpp"
 #include "luxel/scenes/image_io.hpp"
 #include "luxel/scenes/memory_limit.hpp"
@@ -26,6 +27,8 @@
 #include <optional>
 
 namespace luxel::scenes {
+
+GltfError::GltfError(const std::string& what) : std::runtime_error(one_line(what)) {}
 
 namespace {
 

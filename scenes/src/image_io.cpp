@@ -1,5 +1,7 @@
 #include "luxel/scenes/image_io.hpp"
 
+#include "one_line.hpp"
+
 #include "luxel/scenes/memory_limit.hpp"
 
 #include <OpenImageIO/filesystem.h>
@@ -53,14 +55,9 @@ class QuietStderr {
 };
 
 /// OpenImageIO's messages can span lines; ours are one line.
-std::string one_line(std::string s) {
-  std::replace(s.begin(), s.end(), '\n', ' ');
-  while (!s.empty() && s.back() == ' ') s.pop_back();
-  return s.empty() ? "unknown OpenImageIO error" : s;
-}
-
 [[noreturn]] void fail(const std::string& name, const std::string& what) {
-  throw std::runtime_error(name + ": " + one_line(what));
+  const std::string line = one_line(what);
+  throw std::runtime_error(name + ": " + (line.empty() ? "unknown OpenImageIO error" : line));
 }
 
 bool is_float(OIIO::TypeDesc t) {

@@ -152,6 +152,12 @@ TEST(GltfRobustness, UrisMayNotLeaveTheFolder) {
   d["buffers"][0]["uri"] = "absent.bin";
   write_text(path, d.dump());
   expect_gltf_error(path, "buffer file 'absent.bin' is missing", [&] { load_gltf(path); });
+  // A URI quoted in the error keeps the error one line (found by fuzz_gltf: a line break in a
+  // data URI's base64).
+  d["buffers"][0]["uri"] = "data:application/octet-st\nAAAA\r\tAAA";
+  write_text(path, d.dump());
+  expect_gltf_error(path, "buffer URI 'data:application/octet-st AAAA  AAA' is not a relative file reference",
+                    [&] { load_gltf(path); });
 }
 
 /// CRC-32 (ISO 3309, as PNG uses), bit by bit.

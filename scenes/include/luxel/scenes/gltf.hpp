@@ -130,9 +130,10 @@
 
 namespace luxel::scenes {
 
-/// A glTF file that cannot be read: what() is one line naming the file and the problem.
+/// A glTF file that cannot be read: what() is one line naming the file and the problem (what it
+/// quotes from the file, a name or a URI, with its control characters as spaces).
 struct GltfError : std::runtime_error {
-  using std::runtime_error::runtime_error;
+  explicit GltfError(const std::string& what);
 };
 
 /// Limits checked before anything is allocated for the data they count.
