@@ -22,7 +22,7 @@ namespace luxel::cli {
 
 namespace {
 
-constexpr int kFrames = 90;
+constexpr int kFrames = 60;
 constexpr float kFps = 30.0f;
 constexpr int kLatencies[] = {1, 2, 3, 4};
 
@@ -99,7 +99,7 @@ SectionResult run_exposure(const ReportSettings& s) {
 
 ReportSection exposure_section() {
   return {"exposure",
-          "auto exposure's occlusion histogram against the exact histogram over the first 3 s of --scene's sequence, per "
+          "auto exposure's occlusion histogram against the exact histogram over the first 2 s of --scene's sequence, per "
           "counting method and query latency",
           run_exposure, true};
 }

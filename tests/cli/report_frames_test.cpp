@@ -188,7 +188,7 @@ rasterizer::Image image_of(int width, int height, const std::vector<uint8_t>& re
   return image;
 }
 
-// The exposure section on its own (90 frames per row): a row per counting method and latency; the
+// The exposure section on its own (60 frames per row): a row per counting method and latency; the
 // two methods count the same samples, so they give the same targets; a later read-back lags
 // more, so the mean error grows with the latency; once every bucket has been counted (the second
 // half) the engine's target is near the exact one.
