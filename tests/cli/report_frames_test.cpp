@@ -188,16 +188,25 @@ rasterizer::Image image_of(int width, int height, const std::vector<uint8_t>& re
   return image;
 }
 
+/// The rows of one section run on its own on a tiny courtyard (the sections that draw many frames
+/// or captures, kept out of the fixture's run, which every test of it repeats).
+nlohmann::json one_section_rows(const std::string& section) {
+  const fs::path out = fs::temp_directory_path() / ("luxel_report_" + section + "_test_" + std::to_string(getpid()));
+  const Process run = run_luxel("report speed-error --sections " + section + " --scene builtin:courtyard --bake quick --width 32 "
+                                "--height 18 --repeats 1 --out " + out.string() + " 2>/dev/null");
+  EXPECT_EQ(run.exit_code, 0) << run.out;
+  const std::string json = test::file_text(out / "speed_error.json");
+  fs::remove_all(out);
+  if (json.empty()) return nlohmann::json::array();
+  return nlohmann::json::parse(json)["sections"][0]["rows"];
+}
+
 // The exposure section on its own (60 frames per row): a row per counting method and latency; the
 // two methods count the same samples, so they give the same targets; a later read-back lags
 // more, so the mean error grows with the latency; once every bucket has been counted (the second
 // half) the engine's target is near the exact one.
 TEST(ReportExposure, RowsPerCountingAndLatencyWithTheSameTargetsForBothCountings) {
-  const fs::path out = fs::temp_directory_path() / ("luxel_report_exposure_test_" + std::to_string(getpid()));
-  const Process run = run_luxel("report speed-error --sections exposure --scene builtin:courtyard --bake quick --width 32 "
-                                "--height 18 --repeats 1 --out " + out.string() + " 2>/dev/null");
-  ASSERT_EQ(run.exit_code, 0) << run.out;
-  const nlohmann::json rows = nlohmann::json::parse(test::file_text(out / "speed_error.json"))["sections"][0]["rows"];
+  const nlohmann::json rows = one_section_rows("exposure");
   ASSERT_EQ(rows.size(), 8u);
   for (size_t i = 0; i < 4; ++i) {
     const nlohmann::json& direct = rows[i];
@@ -218,7 +227,6 @@ TEST(ReportExposure, RowsPerCountingAndLatencyWithTheSameTargetsForBothCountings
     }
   }
   EXPECT_GT(rows[3]["error"]["mean_stops"].get<double>(), rows[0]["error"]["mean_stops"].get<double>());
-  fs::remove_all(out);
 }
 
 // The cubemaps section: brackets 1 to 4 stops apart and one exposure alone against float captures.
@@ -226,11 +234,7 @@ TEST(ReportExposure, RowsPerCountingAndLatencyWithTheSameTargetsForBothCountings
 // merge without its division or of one exposure fails them, tests/frame/cubemaps_test.cpp), and
 // the one exposure far outside them.
 TEST(ReportCubemaps, MergedBracketsAgainstFloatCaptures) {
-  const fs::path out = fs::temp_directory_path() / ("luxel_report_cubemaps_test_" + std::to_string(getpid()));
-  const Process run = run_luxel("report speed-error --sections cubemaps --scene builtin:courtyard --bake quick --width 32 "
-                                "--height 18 --repeats 1 --out " + out.string() + " 2>/dev/null");
-  ASSERT_EQ(run.exit_code, 0) << run.out;
-  const nlohmann::json rows = nlohmann::json::parse(test::file_text(out / "speed_error.json"))["sections"][0]["rows"];
+  const nlohmann::json rows = one_section_rows("cubemaps");
   ASSERT_EQ(rows.size(), 5u);
   const char* const variants[] = {"1 stops apart", "2 stops apart", "3 stops apart", "4 stops apart", "one exposure"};
   for (size_t i = 0; i < rows.size(); ++i) {
@@ -245,18 +249,13 @@ TEST(ReportCubemaps, MergedBracketsAgainstFloatCaptures) {
   EXPECT_LE(rows[3]["error"]["p99_stops"].get<double>(), 0.035);
   EXPECT_GT(rows[4]["error"]["max_stops"].get<double>(), 1.0) << "one exposure cannot hold the sky and the shade";
   EXPECT_EQ(rows[4]["cost"]["captures_per_face"], 1);
-  fs::remove_all(out);
 }
 
 // The ambient_popping section: the courtyard's moving models along 240 frames. The nearest sample
 // steps as a model crosses cells, the trilinear blend moves smoothly, and the time averaging damps
 // both: each of those halves (at least) the largest jump of the reading without it.
 TEST(ReportAmbientPopping, AveragingAndTrilinearDampTheNearestSamplesSteps) {
-  const fs::path out = fs::temp_directory_path() / ("luxel_report_popping_test_" + std::to_string(getpid()));
-  const Process run = run_luxel("report speed-error --sections ambient_popping --scene builtin:courtyard --bake quick --width 32 "
-                                "--height 18 --repeats 1 --out " + out.string() + " 2>/dev/null");
-  ASSERT_EQ(run.exit_code, 0) << run.out;
-  const nlohmann::json rows = nlohmann::json::parse(test::file_text(out / "speed_error.json"))["sections"][0]["rows"];
+  const nlohmann::json rows = one_section_rows("ambient_popping");
   ASSERT_EQ(rows.size(), 4u);
   auto jump = [&](size_t i) { return rows[i]["error"]["max_jump"].get<double>(); };
   EXPECT_EQ(rows[0]["cost"]["volume_samples"], 1);
@@ -268,7 +267,6 @@ TEST(ReportAmbientPopping, AveragingAndTrilinearDampTheNearestSamplesSteps) {
   EXPECT_LT(2 * jump(2), jump(0)) << "the trilinear blend has no steps";
   EXPECT_LE(jump(3), jump(2));
   for (size_t i = 0; i < rows.size(); ++i) EXPECT_LE(rows[i]["error"]["mean_jump"].get<double>(), jump(i)) << i;
-  fs::remove_all(out);
 }
 
 TEST(BoxFilterDown, RoundsEachBlocksMeanHalfUpAsTheResolve) {
