@@ -530,7 +530,7 @@ class FrameBuilder {
     wanted.exponent_texture = phong && m.phong_exponent_texture.bound();
     wanted.rim = phong && m.rim;
     wanted.half_lambert = m.half_lambert || phong;
-    wanted.pixel_attenuation = true;
+    wanted.pixel_attenuation = !st_.settings.vertex_attenuation;
     wanted.fog = fog_;
     wanted.normalization_cube = model_ == shading::ShaderModel::ps_2_0;
     const std::optional<VertexLitCombo> combo = fitting_vertexlit_combo(wanted, model_);

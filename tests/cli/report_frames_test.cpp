@@ -269,6 +269,22 @@ TEST(ReportAmbientPopping, AveragingAndTrilinearDampTheNearestSamplesSteps) {
   for (size_t i = 0; i < rows.size(); ++i) EXPECT_LE(rows[i]["error"]["mean_jump"].get<double>(), jump(i)) << i;
 }
 
+// The vertex_lighting section: per-vertex attenuation changes some model pixels, a little, and
+// costs fewer slots than per pixel on the same model; each per-pixel row is its own reference.
+TEST(ReportVertexLighting, PerVertexAttenuationAgainstPerPixel) {
+  const nlohmann::json rows = one_section_rows("vertex_lighting");
+  ASSERT_EQ(rows.size(), 4u);
+  for (size_t i = 0; i < rows.size(); i += 2) {
+    const nlohmann::json &pixel = rows[i], &vertex = rows[i + 1];
+    EXPECT_EQ(pixel["variant"], "per pixel");
+    EXPECT_EQ(vertex["variant"], "per vertex");
+    EXPECT_EQ(pixel["error"]["max_steps"], 0);
+    EXPECT_GT(vertex["error"]["differing_share"].get<double>(), 0.0) << "the models' pixels change";
+    EXPECT_LT(vertex["error"]["differing_share"].get<double>(), 0.2) << "only the models' pixels";
+    EXPECT_LT(vertex["cost"]["slots_per_pixel"].get<double>(), pixel["cost"]["slots_per_pixel"].get<double>());
+  }
+}
+
 TEST(BoxFilterDown, RoundsEachBlocksMeanHalfUpAsTheResolve) {
   // Two 2x2 blocks side by side: sums 1 (mean 0.25 -> 0), 2 (0.5 -> 1, half up) and, below, 6
   // (1.5 -> 2) and 1020 (255).

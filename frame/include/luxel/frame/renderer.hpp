@@ -155,6 +155,9 @@ struct FrameSettings {
   /// The pixel-shader model the Source shaders are drawn as: ps_2_0, ps_2_b or ps_3_0.
   shading::ShaderModel model = shading::ShaderModel::ps_3_0;
   AmbientSampling ambient = AmbientSampling::nearest;
+  /// Attenuate the models' two local lights per vertex on every shader model, as the SDK's
+  /// ps_2_0 combos do, instead of per pixel where the combo fits (`luxel report`, vertex_lighting).
+  bool vertex_attenuation = false;
   /// A fixed tone-map scale (LINEAR_LIGHT_SCALE); unset: the scene's Exposure decides (above).
   std::optional<float> exposure = std::nullopt;
   /// How auto exposure counts its histogram: target algorithm, counting method, query latency,
