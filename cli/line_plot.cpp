@@ -162,7 +162,7 @@ rasterizer::Image draw_line_plot(const LinePlot& plot) {
       if (s.style == PlotStyle::markers) marker(cx, cy, color);
       else if (have) line(last_x, last_y, cx, cy, color);
       else line(cx, cy, cx, cy, color);
-      if (!s.labels.empty()) labels.push_back({cx, cy, cy + 4, s.labels[i], {color[0], color[1], color[2], 1.0f}});
+      if (!s.labels.empty() && !s.labels[i].empty()) labels.push_back({cx, cy, cy + 4, s.labels[i], {color[0], color[1], color[2], 1.0f}});
       drawn.emplace_back(cx, cy);
       have = true, last_x = cx, last_y = cy;
     }

@@ -22,7 +22,7 @@ struct PlotSeries {
   std::array<uint8_t, 3> rgb{255, 255, 255};
   std::vector<std::pair<double, double>> points;  ///< non-finite points are left out
   PlotStyle style = PlotStyle::lines;
-  std::vector<std::string> labels;  ///< empty, or one per point, written beside its marker
+  std::vector<std::string> labels;  ///< empty, or one per point, written beside its marker (none for "")
 };
 
 struct LinePlot {

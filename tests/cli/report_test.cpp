@@ -164,8 +164,11 @@ TEST(ReportLanes, SimdGivesTheScalarLanesBitsButWhereItSamplesATexture) {
   ASSERT_EQ(s["rows"].size(), shading::source::shader_catalog().size());
   int texture_reading = 0;
   for (const nlohmann::json& row : s["rows"]) {
-    const std::string name = row["variant"].get<std::string>() + " " + row["label"].get<std::string>();
-    if (row["label"].get<std::string>().find("normcube") != std::string::npos) {
+    const std::string name = row["scene"].get<std::string>();  // "family combo"
+    EXPECT_EQ(name.rfind(row["variant"].get<std::string>() + " ", 0), 0u) << name;
+    const bool named = !row["label"].get<std::string>().empty();
+    EXPECT_EQ(named, row["error"]["differing_share"].get<double>() > 0.0) << name << ": the plot names the rows that differ";
+    if (name.find("normcube") != std::string::npos) {
       ++texture_reading;
       EXPECT_LE(row["error"]["max_abs"].get<double>(), 1e-6) << name;
       EXPECT_LE(row["error"]["max_steps"].get<double>(), 1.0) << name;
