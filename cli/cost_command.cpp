@@ -111,8 +111,7 @@ void print_frame_costs(const std::vector<FrameCost>& costs, const CostOptions& o
   std::printf("\n%-6s | %-20s | %-54s | %10s | %5s | %14s | %6s\n", "model", "shader", "combo", "pixels", "slots",
               "slots x pixels", "share");
   for (const FrameCost& c : costs) {
-    uint64_t total = 0;
-    for (const frame::ShaderUse& u : c.m.uses) total += u.pixels * uint64_t(u.slots);
+    const uint64_t total = c.m.shading_totals().slot_pixels;
     for (const frame::ShaderUse& u : c.m.uses) {
       const uint64_t sp = u.pixels * uint64_t(u.slots);
       std::printf("%-6s | %-20s | %-54s | %10llu | %5d | %14llu | %5.1f%%\n", c.model.c_str(), u.family.c_str(), u.combo.c_str(),
@@ -127,12 +126,10 @@ void print_frame_costs(const std::vector<FrameCost>& costs, const CostOptions& o
   std::printf("\n%-6s | %13s | %14s | %11s | %17s | %12s\n", "model", "pixels shaded", "slots x pixels", "slots/pixel",
               "slots x px/screen", "ms per frame");
   for (const FrameCost& c : costs) {
-    uint64_t pixels = 0, slot_pixels = 0;
-    for (const frame::ShaderUse& u : c.m.uses) pixels += u.pixels, slot_pixels += u.pixels * uint64_t(u.slots);
-    const std::optional<double> per_pixel = c.m.slots_per_pixel();
-    std::printf("%-6s | %13llu | %14llu | %11.2f | %17.2f | %12.3f\n", c.model.c_str(), static_cast<unsigned long long>(pixels),
-                static_cast<unsigned long long>(slot_pixels), per_pixel.value_or(0.0),
-                double(slot_pixels) / (double(s.width) * double(s.height)), c.m.median_ms());
+    const FrameMeasurement::ShadingTotals t = c.m.shading_totals();
+    std::printf("%-6s | %13llu | %14llu | %11.2f | %17.2f | %12.3f\n", c.model.c_str(), static_cast<unsigned long long>(t.pixels),
+                static_cast<unsigned long long>(t.slot_pixels), c.m.slots_per_pixel().value_or(0.0),
+                double(t.slot_pixels) / (double(s.width) * double(s.height)), c.m.median_ms());
   }
 }
 

@@ -2,10 +2,7 @@
 
 #include <algorithm>
 #include <chrono>
-#include <iostream>
 #include <map>
-#include <sstream>
-#include <stdexcept>
 
 namespace luxel::cli {
 
@@ -14,37 +11,18 @@ double median_of_sorted(const std::vector<double>& sorted) {
   return n % 2 ? sorted[n / 2] : (sorted[n / 2 - 1] + sorted[n / 2]) / 2;
 }
 
-std::optional<std::vector<shading::ShaderModel>> parse_models(const std::string& command, const std::string& option,
-                                                              const std::string& list, size_t at_least) {
-  std::vector<shading::ShaderModel> models;
-  std::istringstream names(list);
-  std::string name;
-  try {
-    while (std::getline(names, name, ',')) {
-      const shading::ShaderModel m = shading::parse_pixel_model(name);
-      if (std::find(models.begin(), models.end(), m) != models.end())
-        throw std::invalid_argument(name + " is named twice");
-      models.push_back(m);
-    }
-    if (models.size() < at_least)
-      throw std::invalid_argument(at_least == 2 ? "name at least two models, comma-separated" : "name a model");
-  } catch (const std::invalid_argument& e) {
-    std::cerr << "luxel " << command << ": " << option << " " << list << ": " << e.what() << "\n";
-    return std::nullopt;
-  }
-  return models;
-}
-
 double FrameMeasurement::median_ms() const { return median_of_sorted(ms); }
 
+FrameMeasurement::ShadingTotals FrameMeasurement::shading_totals() const {
+  ShadingTotals t;
+  for (const frame::ShaderUse& u : uses) t.pixels += u.pixels, t.slot_pixels += u.pixels * uint64_t(u.slots);
+  return t;
+}
+
 std::optional<double> FrameMeasurement::slots_per_pixel() const {
-  double pixels = 0, slots = 0;
-  for (const frame::ShaderUse& u : uses) {
-    pixels += double(u.pixels);
-    slots += double(u.pixels) * u.slots;
-  }
-  if (pixels == 0) return std::nullopt;
-  return slots / pixels;
+  const ShadingTotals t = shading_totals();
+  if (t.pixels == 0) return std::nullopt;
+  return double(t.slot_pixels) / double(t.pixels);
 }
 
 std::optional<FrameMeasurement> measure_frame(const RendererFactory& make, frame::FrameSettings settings, int timed_frames,

@@ -7,12 +7,11 @@
 #include "luxel/frame/renderer.hpp"
 #include "luxel/rasterizer/context.hpp"
 #include "luxel/rasterizer/image.hpp"
-#include "luxel/shading/shader_model.hpp"
 
+#include <cstdint>
 #include <functional>
 #include <memory>
 #include <optional>
-#include <string>
 #include <vector>
 
 namespace luxel::cli {
@@ -25,17 +24,17 @@ struct FrameMeasurement {
 
   /// median_of_sorted(ms).
   double median_ms() const;
-  /// sum(pixels x slots) / sum(pixels) over `uses`, or nullopt when the frame counted no shading.
+  /// sum(pixels) and sum(pixels x slots) over `uses`.
+  struct ShadingTotals {
+    uint64_t pixels = 0, slot_pixels = 0;
+  };
+  ShadingTotals shading_totals() const;
+  /// slot_pixels / pixels of shading_totals(), or nullopt when the frame counted no shading.
   std::optional<double> slots_per_pixel() const;
 };
 
 /// The median of sorted values (the mean of the middle two for an even count; at least one value).
 double median_of_sorted(const std::vector<double>& sorted);
-
-/// The pixel-shader models named in `list` ("ps_2_0,ps_3_0"), in order, at least `at_least` of
-/// them; nullopt after one line on stderr naming `command` and `option` (exit 2).
-std::optional<std::vector<shading::ShaderModel>> parse_models(const std::string& command, const std::string& option,
-                                                              const std::string& list, size_t at_least);
 
 /// Makes a renderer with the settings given, or returns null after saying why (the caller's way).
 using RendererFactory = std::function<std::unique_ptr<frame::Renderer>(const frame::FrameSettings&)>;

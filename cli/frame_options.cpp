@@ -11,13 +11,36 @@
 #include <cstdlib>
 #include <filesystem>
 #include <iostream>
+#include <algorithm>
 #include <map>
+#include <sstream>
 #include <stdexcept>
 #include <utility>
 
 #include <unistd.h>
 
 namespace luxel::cli {
+
+std::optional<std::vector<shading::ShaderModel>> parse_models(const std::string& command, const std::string& option,
+                                                              const std::string& list, size_t at_least) {
+  std::vector<shading::ShaderModel> models;
+  std::istringstream names(list);
+  std::string name;
+  try {
+    while (std::getline(names, name, ',')) {
+      const shading::ShaderModel m = shading::parse_pixel_model(name);
+      if (std::find(models.begin(), models.end(), m) != models.end())
+        throw std::invalid_argument(name + " is named twice");
+      models.push_back(m);
+    }
+    if (models.size() < at_least)
+      throw std::invalid_argument(at_least == 2 ? "name at least two models, comma-separated" : "name a model");
+  } catch (const std::invalid_argument& e) {
+    std::cerr << "luxel " << command << ": " << option << " " << list << ": " << e.what() << "\n";
+    return std::nullopt;
+  }
+  return models;
+}
 
 void FrameOptions::add_to(CLI::App& cmd) {
   std::string names;

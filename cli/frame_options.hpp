@@ -9,6 +9,7 @@
 #include "luxel/frame/renderer.hpp"
 #include "luxel/rasterizer/context.hpp"
 #include "luxel/scenes/scene.hpp"
+#include "luxel/shading/shader_model.hpp"
 #include "memory_limit_option.hpp"
 
 #include <CLI/CLI.hpp>
@@ -19,6 +20,12 @@
 #include <vector>
 
 namespace luxel::cli {
+
+/// The pixel-shader models named in `list` ("ps_2_0,ps_3_0", the --models or --model of a
+/// command), in order, at least `at_least` of them; nullopt after one line on stderr naming
+/// `command` and `option` (exit 2).
+std::optional<std::vector<shading::ShaderModel>> parse_models(const std::string& command, const std::string& option,
+                                                              const std::string& list, size_t at_least);
 
 struct FrameOptions {
   std::string scene = "builtin:demo";

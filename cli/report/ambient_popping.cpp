@@ -87,7 +87,7 @@ SectionResult run_ambient_popping(const ReportSettings& s) {
     }
     out.rows.push_back({scene.name, std::to_string(kFrames) + " frames at " + std::to_string(int(kFps)) + " fps", v.name,
                         std::string(v.sampling == AmbientSampling::nearest ? "nearest" : "trilinear") +
-                            (v.tau > 0 ? ", tau " : ", no averaging") + (v.tau > 0 ? std::to_string(v.tau).substr(0, 4) : ""),
+                            (v.tau > 0 ? ", tau " + number(v.tau, "%.2f") : ", no averaging"),
                         "none: the jump between consecutive frames is the artefact (no reference)",
                         {double(v.samples_read), double(v.tau), max_jump, jump_sum / double(kFrames - 1)}});
   }

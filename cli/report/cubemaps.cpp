@@ -94,7 +94,7 @@ SectionResult run_cubemaps(const ReportSettings& s) {
                             std::to_string(kFaceSize),
                         variant, stops > 0 ? std::to_string(exposures.size()) + " x " + std::to_string(int(stops)) : "1",
                         "the same faces rendered to a float target at tone-map scale 1 (frame::capture_face_float), over "
-                        "the channels above the merge's dark floor (" + std::to_string(any ? std::log2(e.hi / e.lo) : 0.0).substr(0, 4) +
+                        "the channels above the merge's dark floor (" + number(any ? std::log2(e.hi / e.lo) : 0.0, "%.1f") +
                             " stops of range)",
                         {double(exposures.size()), median_of_sorted(ms), any ? e.errors.back() : 0.0,
                          any ? e.errors[e.errors.size() * 99 / 100] : 0.0, any ? sum / double(e.errors.size()) : 0.0}});

@@ -56,12 +56,6 @@ struct Variant {
   double simd_ns = 0.0, scalar_ns = 0.0;
 };
 
-std::string number(double v, const char* format) {
-  char text[64];
-  std::snprintf(text, sizeof text, format, v);
-  return text;
-}
-
 /// The three variants with their counted ps_3_0 costs and their times. The times do not depend on
 /// the constants' values, so one made-up set serves every environment.
 std::vector<Variant> variants(int repeats) {

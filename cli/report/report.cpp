@@ -14,6 +14,12 @@
 
 namespace luxel::cli {
 
+std::string number(double v, const char* format) {
+  char text[64];
+  std::snprintf(text, sizeof text, format, v);
+  return text;
+}
+
 namespace {
 
 /// Series colors in order of first appearance: distinct on the plot's dark ground.
@@ -24,11 +30,7 @@ std::string lanes_line() {
   return std::string(rasterizer::simd::kIsaName) + ", " + std::to_string(rasterizer::simd::kLanes) + " floats per SIMD lane";
 }
 
-std::string format_value(const ReportColumn& c, double v) {
-  char text[64];
-  std::snprintf(text, sizeof text, c.format.c_str(), v * c.text_scale);
-  return text;
-}
+std::string format_value(const ReportColumn& c, double v) { return number(v * c.text_scale, c.format.c_str()); }
 
 const char* kind_key(ColumnKind k) {
   switch (k) {

@@ -79,6 +79,9 @@ struct ReportSection {
   bool renders_frames = false;  ///< needs ReportSettings::scene
 };
 
+/// `v` through printf format `format` ("%.2f"): a number in a row's text or a note.
+std::string number(double v, const char* format);
+
 /// Every section, in report order.
 const std::vector<ReportSection>& report_sections();
 

@@ -5,7 +5,6 @@
 #include <cmath>
 #include <stdexcept>
 #include <string>
-#include <utility>
 
 namespace luxel::postfx {
 
@@ -25,21 +24,23 @@ Lut Lut::of_size(int size) {
   return lut;
 }
 
-Lut Lut::identity(int size) {
-  Lut lut = of_size(size);
+namespace {
+
+/// The color of every entry of a `size`^3 lattice, in entry order (checked by Lut::of_size first,
+/// so that an absurd size is refused before it is allocated).
+std::vector<glm::vec3> lattice_colors(int size) {
+  (void)Lut::of_size(size);
+  std::vector<glm::vec3> colors(static_cast<size_t>(size) * size * size);
   for (int b = 0; b < size; ++b)
     for (int g = 0; g < size; ++g)
       for (int r = 0; r < size; ++r)
-        lut.at(r, g, b) = {to_unorm8(lattice_color(r, size)), to_unorm8(lattice_color(g, size)),
-                           to_unorm8(lattice_color(b, size))};
-  return lut;
+        colors[static_cast<size_t>((b * size + g) * size + r)] =
+            glm::vec3(lattice_color(r, size), lattice_color(g, size), lattice_color(b, size));
+  return colors;
 }
 
-namespace {
-
-/// `colors` (one per entry of a `size`^3 lattice) transformed and rounded into a LUT.
-Lut transformed(std::vector<glm::vec3> colors, const ColorTransform& transform, int size) {
-  transform.apply(colors);
+/// Each color rounded into the LUT's entry of the same index.
+Lut rounded(const std::vector<glm::vec3>& colors, int size) {
   Lut lut = Lut::of_size(size);
   for (size_t i = 0; i < colors.size(); ++i)
     lut.entries[i] = {to_unorm8(colors[i].x), to_unorm8(colors[i].y), to_unorm8(colors[i].z)};
@@ -48,22 +49,20 @@ Lut transformed(std::vector<glm::vec3> colors, const ColorTransform& transform, 
 
 }  // namespace
 
+Lut Lut::identity(int size) { return rounded(lattice_colors(size), size); }
+
 Lut sample_lut(const ColorTransform& transform, int size) {
-  (void)Lut::of_size(size);  // the size checked before the colors are made
-  std::vector<glm::vec3> colors(static_cast<size_t>(size) * size * size);
-  for (int b = 0; b < size; ++b)
-    for (int g = 0; g < size; ++g)
-      for (int r = 0; r < size; ++r)
-        colors[static_cast<size_t>((b * size + g) * size + r)] =
-            glm::vec3(lattice_color(r, size), lattice_color(g, size), lattice_color(b, size));
-  return transformed(std::move(colors), transform, size);
+  std::vector<glm::vec3> colors = lattice_colors(size);
+  transform.apply(colors);
+  return rounded(colors, size);
 }
 
 Lut compose(const Lut& lut, const ColorTransform& then) {
   std::vector<glm::vec3> colors(lut.entries.size());
   for (size_t i = 0; i < colors.size(); ++i)
     colors[i] = glm::vec3(lut.entries[i][0], lut.entries[i][1], lut.entries[i][2]) / 255.0f;
-  return transformed(std::move(colors), then, lut.size);
+  then.apply(colors);
+  return rounded(colors, lut.size);
 }
 
 rasterizer::Texture lut_volume(const Lut& lut) {
