@@ -243,6 +243,8 @@ class Renderer {
   /// stencil targets in whole tiles at the frame's samples (9 bytes a sample) and four 8-bit
   /// images the size of the frame (the resolved image, the water's two views, a post pass).
   Renderer(const scenes::Scene& scene, const FrameSettings& settings, std::shared_ptr<const SceneTextures> textures = nullptr);
+  /// A temporary scene would be gone before the first frame reads it.
+  Renderer(scenes::Scene&& scene, const FrameSettings& settings, std::shared_ptr<const SceneTextures> textures = nullptr) = delete;
   ~Renderer();
   Renderer(Renderer&&) noexcept;
   Renderer& operator=(Renderer&&) noexcept;
