@@ -737,10 +737,9 @@ void Renderer::render(Context& ctx) {
   clear_color(ctx, st.color, st.clear);
   clear_depth(ctx, st.depth, 1.0f);  // as the peer: stencil neither cleared nor used
   run_passes(ctx, Framebuffer{&st.color, &st.depth}, st.passes, &clock);
-  clock.run("resolve", 0, [&] { resolve_into(ctx, st.color, st.image); });
   // The target's alpha holds what the shaders wrote there (base alpha, blend results, the water's
   // fog factor), which a screen never shows: the image is what is shown, opaque.
-  for (size_t i = 3; i < st.image.rgba.size(); i += 4) st.image.rgba[i] = 255;
+  clock.run("resolve", 0, [&] { resolve_into(ctx, st.color, st.image, rasterizer::ResolveAlpha::opaque); });
   st.stats = ctx.stats();  // the 3D frame's draws, not the passes on the finished image
   st.shader_uses.clear();
   if (st.settings.count_shading) {  // the 3D draws have run (the resolve flushed them)

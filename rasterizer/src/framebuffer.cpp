@@ -121,7 +121,8 @@ class LoadImageCommand final : public detail::Command {
 /// Box filter of one tile's samples into the image (a plain copy for one sample).
 class ResolveCommand final : public detail::Command {
  public:
-  ResolveCommand(const ColorTarget& target, Image& image) : target_(target), image_(image) {}
+  ResolveCommand(const ColorTarget& target, Image& image, ResolveAlpha alpha)
+      : target_(target), image_(image), opaque_(alpha == ResolveAlpha::opaque ? int32_t(0xff000000u) : 0) {}
   void execute(int tile, detail::TileCounters&) override {
     using simd::Int;
     const SurfaceLayout& L = target_.layout();
@@ -130,7 +131,7 @@ class ResolveCommand final : public detail::Command {
     const int x0 = (tile % L.tiles_x) * kTileSize, y0 = (tile / L.tiles_x) * kTileSize;
     const int width = std::min(kTileSize, L.width - x0), height = std::min(kTileSize, L.height - y0);
     const uint32_t* texels = target_.tile(tile);
-    const Int low_bytes(0x00ff00ff), half(samples / 2 * 0x00010001);
+    const Int low_bytes(0x00ff00ff), half(samples / 2 * 0x00010001), opaque(opaque_);
     constexpr int kStampsPerRow = kTileSize / simd::kStampWidth;
     for (int sy = 0; sy < height; sy += simd::kStampHeight) {
       for (int sx = 0; sx < width; sx += simd::kStampWidth) {
@@ -145,7 +146,7 @@ class ResolveCommand final : public detail::Command {
         rb = xsimd::bitwise_cast<Int>(xsimd::bitwise_cast<simd::UInt>(rb + half) >> shift) & low_bytes;
         ga = xsimd::bitwise_cast<Int>(xsimd::bitwise_cast<simd::UInt>(ga + half) >> shift) & low_bytes;
         alignas(64) uint32_t out[simd::kLanes];  // row-major: the stamp's two rows of pixels
-        simd::to_row_major(rb | (ga << 8)).store_aligned(reinterpret_cast<int32_t*>(out));
+        simd::to_row_major(rb | (ga << 8) | opaque).store_aligned(reinterpret_cast<int32_t*>(out));
         constexpr int kRowBytes = 4 * simd::kStampWidth;
         if (sx + simd::kStampWidth <= width && sy + simd::kStampHeight <= height) {
           std::memcpy(image_.pixel(x0 + sx, y0 + sy), out, kRowBytes);
@@ -162,6 +163,7 @@ class ResolveCommand final : public detail::Command {
  private:
   const ColorTarget& target_;
   Image& image_;
+  int32_t opaque_;  ///< or-ed into every pixel: alpha 255, or nothing
 };
 
 }  // namespace
@@ -200,17 +202,17 @@ void load_image(Context& ctx, const Image& image, ColorTarget& target) {
   queue.push(std::make_unique<LoadImageCommand>(image, target));
 }
 
-void resolve_into(Context& ctx, const ColorTarget& target, Image& image) {
+void resolve_into(Context& ctx, const ColorTarget& target, Image& image, ResolveAlpha alpha) {
   if (image.width != target.width() || image.height != target.height()) image = Image(target.width(), target.height());
   detail::CommandQueue& queue = queue_for(ctx, target.layout());
   ctx.refer(target);  // runs another context's pending frame on it first
-  queue.push(std::make_unique<ResolveCommand>(target, image));
+  queue.push(std::make_unique<ResolveCommand>(target, image, alpha));
   ctx.flush();
 }
 
-Image resolve(Context& ctx, const ColorTarget& target) {
+Image resolve(Context& ctx, const ColorTarget& target, ResolveAlpha alpha) {
   Image image(target.width(), target.height());
-  resolve_into(ctx, target, image);
+  resolve_into(ctx, target, image, alpha);
   return image;
 }
 

@@ -181,21 +181,25 @@ TEST(Resolve, RoundedMeanOfTheSamples) {
     for (int y = 0; y < H; ++y)
       for (int x = 0; x < W; ++x)
         for (int s = 0; s < S; ++s) target.set_sample(x, y, s, rng());
-    const Image img = resolve(ctx, target);
-    ASSERT_EQ(img.width, W);
-    ASSERT_EQ(img.height, H);
-    int bad = 0;
-    for (int y = 0; y < H; ++y)
-      for (int x = 0; x < W; ++x)
-        for (int c = 0; c < 4; ++c) {
-          int sum = 0;
-          for (int s = 0; s < S; ++s) sum += channel(target.sample(x, y, s), c);
-          const int expect = int(std::floor(double(sum) / S + 0.5));  // halves round up
-          if (img.pixel(x, y)[c] != expect && bad++ < 5)
-            ADD_FAILURE() << S << " samples, pixel " << x << ", " << y << " channel " << c << ": "
-                          << int(img.pixel(x, y)[c]) << " vs " << expect;
-        }
-    EXPECT_EQ(bad, 0);
+    // ResolveAlpha::opaque: the same color, alpha 255 whatever the samples hold.
+    for (const ResolveAlpha alpha : {ResolveAlpha::samples, ResolveAlpha::opaque}) {
+      const Image img = resolve(ctx, target, alpha);
+      ASSERT_EQ(img.width, W);
+      ASSERT_EQ(img.height, H);
+      int bad = 0;
+      for (int y = 0; y < H; ++y)
+        for (int x = 0; x < W; ++x)
+          for (int c = 0; c < 4; ++c) {
+            int sum = 0;
+            for (int s = 0; s < S; ++s) sum += channel(target.sample(x, y, s), c);
+            int expect = int(std::floor(double(sum) / S + 0.5));  // halves round up
+            if (c == 3 && alpha == ResolveAlpha::opaque) expect = 255;
+            if (img.pixel(x, y)[c] != expect && bad++ < 5)
+              ADD_FAILURE() << S << " samples, pixel " << x << ", " << y << " channel " << c << ": "
+                            << int(img.pixel(x, y)[c]) << " vs " << expect;
+          }
+      EXPECT_EQ(bad, 0) << (alpha == ResolveAlpha::opaque ? "opaque" : "samples");
+    }
   }
 }
 

@@ -154,10 +154,16 @@ void clear_depth(Context& ctx, DepthStencilTarget& target, float depth);
 /// Throws std::invalid_argument when the sizes differ.
 void load_image(Context& ctx, const Image& image, ColorTarget& target);
 
+/// What a resolve writes to the image's alpha.
+enum class ResolveAlpha {
+  samples,  ///< the mean of the samples' alpha, as for the color channels
+  opaque,   ///< 255: an image to be shown, whose target's alpha held the shaders' own values
+};
+
 /// Box-filter resolve: each channel of each pixel is the rounded mean of its samples' 8-bit
 /// values (a plain copy out of the tiled layout for one sample). Flushes the context.
-Image resolve(Context& ctx, const ColorTarget& target);
+Image resolve(Context& ctx, const ColorTarget& target, ResolveAlpha alpha = ResolveAlpha::samples);
 /// The same into an existing image (reallocated only when its size differs).
-void resolve_into(Context& ctx, const ColorTarget& target, Image& image);
+void resolve_into(Context& ctx, const ColorTarget& target, Image& image, ResolveAlpha alpha = ResolveAlpha::samples);
 
 }  // namespace luxel::rasterizer
