@@ -10,10 +10,54 @@ namespace luxel::bake::detail {
 namespace {
 
 constexpr uint32_t kStreamCubes = 2;
+constexpr uint32_t kStreamPointCubes = 3;
 constexpr uint64_t kMaxCubeSamples = uint64_t(1) << 22;
 const glm::vec3 kAxes[6] = {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}};
 
 }  // namespace
+
+/// The cube at `p` from n x n stratified rays over the sphere (ambient_cubes.hpp's rule), random
+/// numbers keyed by (stream, index); `back` counts the rays that hit back faces.
+scenes::AmbientCube gather_cube(const Context& c, const LightmapAtlas& atlas, glm::vec3 p, uint32_t stream, uint64_t index,
+                                int n, uint64_t& rays, uint32_t& back) {
+  glm::vec3 sum[6] = {};
+  double weight[6] = {};
+  for (int j = 0; j < n * n; ++j) {
+    const RandomKey key{c.settings.seed, stream, index, uint32_t(j), 0};
+    const glm::vec2 xi = stratified(key, j, n);
+    const float z = 1.0f - 2.0f * xi.x, r = std::sqrt(std::max(0.0f, 1.0f - z * z)), phi = 6.2831853f * xi.y;
+    const glm::vec3 dir(r * std::cos(phi), r * std::sin(phi), z);
+    ++rays;
+    const std::optional<Hit> hit = c.rays.intersect(p, dir, 0.0f, std::numeric_limits<float>::infinity());
+    glm::vec3 radiance(0.0f);
+    if (!hit) {
+      radiance = c.in.sky(dir);
+    } else if (!hit->front) {
+      ++back;
+    } else {
+      const size_t m = size_t(hit->mesh);
+      radiance = c.in.emissive[m];
+      if (c.in.roles[m] == MeshRole::lightmapped) {
+        const int64_t t = texel_of_hit(c, *hit);
+        if (t >= 0 && !atlas.maps[0].empty()) radiance += c.in.albedo[m] * atlas.maps[0][size_t(t)];
+      } else if (c.in.roles[m] == MeshRole::diffuse) {
+        glm::vec3 hp, ng;
+        hit_geometry(c.scene, *hit, hp, ng);
+        radiance += c.in.albedo[m] * direct_flat(c, hp, ng, ng, rays);
+      }
+    }
+    for (int f = 0; f < 6; ++f) {
+      const float w = std::max(0.0f, glm::dot(dir, kAxes[f]));
+      sum[f] += radiance * w;
+      weight[f] += w;
+    }
+  }
+  scenes::AmbientCube cube;
+  for (int f = 0; f < 6; ++f) cube[size_t(f)] = weight[f] > 0 ? sum[f] * float(1.0 / weight[f]) : glm::vec3(0.0f);
+  if (c.settings.cubes_all_light)
+    for (int f = 0; f < 6; ++f) cube[size_t(f)] += direct_flat(c, p, kAxes[f], glm::vec3(0.0f), rays);
+  return cube;
+}
 
 AmbientCubes bake_ambient_cubes(const Context& c, const LightmapAtlas& atlas, BakeStats& stats,
                                 std::vector<std::string>& warnings) {
@@ -52,43 +96,8 @@ AmbientCubes bake_ambient_cubes(const Context& c, const LightmapAtlas& atlas, Ba
         if (std::abs(p[a] - vol.min[a]) < 1e-3f && vol.max[a] > vol.min[a]) p[a] += 1.0f;
         else if (std::abs(p[a] - vol.max[a]) < 1e-3f && vol.max[a] > vol.min[a]) p[a] -= 1.0f;
       }
-      glm::vec3 sum[6] = {};
-      double weight[6] = {};
       uint32_t back = 0;
-      for (int j = 0; j < n * n; ++j) {
-        const RandomKey key{c.settings.seed, kStreamCubes, s, uint32_t(j), 0};
-        const glm::vec2 xi = stratified(key, j, n);
-        const float z = 1.0f - 2.0f * xi.x, r = std::sqrt(std::max(0.0f, 1.0f - z * z)), phi = 6.2831853f * xi.y;
-        const glm::vec3 dir(r * std::cos(phi), r * std::sin(phi), z);
-        ++rays;
-        const std::optional<Hit> hit = c.rays.intersect(p, dir, 0.0f, std::numeric_limits<float>::infinity());
-        glm::vec3 radiance(0.0f);
-        if (!hit) {
-          radiance = c.in.sky(dir);
-        } else if (!hit->front) {
-          ++back;
-        } else {
-          const size_t m = size_t(hit->mesh);
-          radiance = c.in.emissive[m];
-          if (c.in.roles[m] == MeshRole::lightmapped) {
-            const int64_t t = texel_of_hit(c, *hit);
-            if (t >= 0 && !atlas.maps[0].empty()) radiance += c.in.albedo[m] * atlas.maps[0][size_t(t)];
-          } else if (c.in.roles[m] == MeshRole::diffuse) {
-            glm::vec3 hp, ng;
-            hit_geometry(c.scene, *hit, hp, ng);
-            radiance += c.in.albedo[m] * direct_flat(c, hp, ng, ng, rays);
-          }
-        }
-        for (int f = 0; f < 6; ++f) {
-          const float w = std::max(0.0f, glm::dot(dir, kAxes[f]));
-          sum[f] += radiance * w;
-          weight[f] += w;
-        }
-      }
-      scenes::AmbientCube& cube = vol.cubes[s];
-      for (int f = 0; f < 6; ++f) cube[size_t(f)] = weight[f] > 0 ? sum[f] * float(1.0 / weight[f]) : glm::vec3(0.0f);
-      if (c.settings.cubes_all_light)
-        for (int f = 0; f < 6; ++f) cube[size_t(f)] += direct_flat(c, p, kAxes[f], glm::vec3(0.0f), rays);
+      vol.cubes[s] = gather_cube(c, atlas, p, kStreamCubes, s, n, rays, back);
       backfaces[s] = back;
       out.valid[s] = back * 4 <= uint32_t(n * n) ? 1 : 0;  // more than 25 % back faces: inside
       counters.done.fetch_add(1, std::memory_order_relaxed);
@@ -125,6 +134,28 @@ AmbientCubes bake_ambient_cubes(const Context& c, const LightmapAtlas& atlas, Ba
       queue.push_back(t);
     }
   }
+  return out;
+}
+
+PointCubes point_cubes(const Context& c, const LightmapAtlas& atlas, std::span<const glm::vec3> points) {
+  PointCubes out;
+  out.cubes.resize(points.size());
+  out.valid.resize(points.size());
+  const int n = strata_side(c.settings.cube_samples);
+  Counters counters;
+  parallel_chunks(points.size(), 1, c.threads, "ambient cubes at points", c.progress, counters,
+                  [&](uint64_t, uint64_t begin, uint64_t end) {
+                    uint64_t rays = 0;
+                    for (uint64_t i = begin; i < end; ++i) {
+                      uint32_t back = 0;
+                      // Every point the same directions (common random numbers): nearby points
+                      // differ by their light, not by their noise.
+                      out.cubes[i] = gather_cube(c, atlas, points[i], kStreamPointCubes, 0, n, rays, back);
+                      out.valid[i] = back * 4 <= uint32_t(n * n) ? 1 : 0;
+                      counters.done.fetch_add(1, std::memory_order_relaxed);
+                    }
+                    counters.rays.fetch_add(rays, std::memory_order_relaxed);
+                  });
   return out;
 }
 

@@ -146,6 +146,49 @@ BakeResult bake(const scenes::Scene& original, const BakeSettings& settings, con
   return result;
 }
 
+PointCubes ambient_cubes_at(const scenes::Scene& scene, const BakeSettings& settings, std::span<const glm::vec3> points,
+                            std::span<const int> unseen_meshes) {
+  try {
+    scenes::validate(scene);
+  } catch (const std::exception& e) {
+    throw BakeError(e.what());
+  }
+  check_settings(scene, settings);
+  const Inputs in = prepare_inputs(scene, settings);
+  // The lightmaps as attach() left them: the flat map read back from its texture, each
+  // lightmapped mesh's uv1 addressing it (no luxels needed: a hit only looks its texel up).
+  LightmapAtlas atlas;
+  LuxelGrid grid;
+  MeshUvs uvs(scene.meshes.size(), nullptr);
+  const bool lightmapped = std::find(in.roles.begin(), in.roles.end(), MeshRole::lightmapped) != in.roles.end();
+  const bool has_flat = scene.lightmaps && scene.lightmaps->flat >= 0 && size_t(scene.lightmaps->flat) < scene.textures.size() &&
+                        !scene.textures[size_t(scene.lightmaps->flat)].faces.empty();
+  if (lightmapped && !has_flat) throw BakeError(scene.name + ": not baked: ambient cubes at points read its flat lightmap");
+  if (has_flat) {
+    const scenes::PixelImage& flat = scene.textures[size_t(scene.lightmaps->flat)].faces[0];
+    atlas.width = grid.width = flat.width;
+    atlas.height = grid.height = flat.height;
+    const size_t texels = size_t(flat.width) * size_t(flat.height);
+    atlas.maps[0].resize(texels);
+    if (flat.rgba32f.size() < 4 * texels)  // attach() and load_bake() give float maps
+      throw BakeError(scene.name + ": its flat lightmap is not a float map of its size");
+    for (size_t t = 0; t < texels; ++t)
+      atlas.maps[0][t] = {flat.rgba32f[4 * t], flat.rgba32f[4 * t + 1], flat.rgba32f[4 * t + 2]};
+    for (size_t i = 0; i < scene.meshes.size(); ++i)
+      if (in.roles[i] == MeshRole::lightmapped && scene.meshes[i].uv1.size() == scene.meshes[i].positions.size())
+        uvs[i] = &scene.meshes[i].uv1;
+  }
+  std::vector<char> visible(scene.meshes.size()), occluding(scene.meshes.size());
+  for (size_t i = 0; i < scene.meshes.size(); ++i) visible[i] = in.visible(i), occluding[i] = in.occluding(i);
+  for (const int m : unseen_meshes)
+    if (m >= 0 && size_t(m) < scene.meshes.size()) visible[size_t(m)] = occluding[size_t(m)] = 0;
+  const RayScene rays(scene, visible, occluding);
+  const int threads = std::clamp(settings.threads > 0 ? settings.threads : int(std::thread::hardware_concurrency()), 1, 256);
+  const ProgressFn no_progress;
+  const Context ctx{scene, in, rays, grid, uvs, settings, threads, no_progress};
+  return point_cubes(ctx, atlas, points);
+}
+
 void attach(scenes::Scene& scene, const BakeResult& result) {
   for (size_t i = 0; i < result.charted_meshes.size() && i < scene.meshes.size(); ++i)
     if (result.charted_meshes[i]) scene.meshes[i] = *result.charted_meshes[i];

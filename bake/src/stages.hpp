@@ -5,6 +5,7 @@
 
 #include "luxel/bake/bake.hpp"
 
+#include <span>
 #include <string>
 #include <vector>
 
@@ -21,5 +22,8 @@ void dilate(std::vector<std::vector<glm::vec3>*> maps, std::vector<LuxelCoverage
 /// The ambient cubes of the scene's irradiance volume, with the final lightmaps.
 AmbientCubes bake_ambient_cubes(const Context& c, const LightmapAtlas& atlas, BakeStats& stats,
                                 std::vector<std::string>& warnings);
+
+/// Cubes at `points` by the same rule, with their own random stream.
+PointCubes point_cubes(const Context& c, const LightmapAtlas& atlas, std::span<const glm::vec3> points);
 
 }  // namespace luxel::bake::detail

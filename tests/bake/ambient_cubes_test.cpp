@@ -110,5 +110,65 @@ TEST(BakeAmbientCubes, SamplesInsideSolidGeometryTakeTheNearestValidCube) {
   EXPECT_GT(r.cubes->volume.cubes[0][5].r, 0.0f);  // looking down at the glowing floor
 }
 
+// ambient_cubes_at, from independent math: 1 inch above the middle of a 256-inch white floor lit
+// straight down by a directional light of 0.75 (flat map 0.75, exact in half), black sky, no
+// bounce (nothing above to bounce from). Below the point the floor fills the hemisphere but for a
+// rim within 0.7 degrees of the horizon: face -Z sees 0.75, +Z sees the black sky, and each side face
+// half of its weight on the floor, 0.375.
+TEST(BakeAmbientCubesAt, AboveALitFloorFromTheAttachedLightmaps) {
+  scenes::Scene s = floor_with_volume(glm::vec3(1.0f), {2, 2, 1}, {-64, -64, 32}, {64, 64, 32});
+  scenes::Light l;
+  l.type = scenes::LightType::directional;
+  l.direction = {0, 0, -1};
+  l.color = glm::vec3(0.75f);
+  s.lights = {l};
+  BakeSettings settings = fast(64);
+  const BakeResult r = bake(s, settings);
+  scenes::Scene baked = s;
+  attach(baked, r);
+  settings.cube_samples = 4096;
+  const std::vector<glm::vec3> points = {{0, 0, 1}, {10, -20, 1}};
+  const PointCubes at = ambient_cubes_at(baked, settings, points);
+  ASSERT_EQ(at.cubes.size(), 2u);
+  EXPECT_EQ(at.valid, (std::vector<char>{1, 1}));
+  const float expected[6] = {0.375f, 0.375f, 0.375f, 0.375f, 0.0f, 0.75f};
+  for (const scenes::AmbientCube& cube : at.cubes)
+    for (int f = 0; f < 6; ++f)
+      for (int c = 0; c < 3; ++c) EXPECT_NEAR(cube[size_t(f)][c], expected[f], 0.01f) << "face " << f;
+
+  // The same threads or not, the same cubes; the unbaked scene is refused.
+  settings.threads = 1;
+  EXPECT_EQ(ambient_cubes_at(baked, settings, points).cubes, at.cubes);
+  EXPECT_THROW(ambient_cubes_at(s, settings, points), BakeError);
+}
+
+// At a grid point, the cube at that point agrees with the volume's (their rays differ: within the
+// Monte Carlo noise of 1024 rays); a point under the floor sees its back face and is not valid.
+TEST(BakeAmbientCubesAt, AgreesWithTheVolumeAtItsSamples) {
+  scenes::Scene s = floor_with_volume(glm::vec3(0.5f), {2, 1, 1}, {-64, 0, 48}, {64, 0, 48});
+  scenes::Light l;
+  l.type = scenes::LightType::point;
+  l.position = {30, 10, 100};
+  l.color = glm::vec3(10000.0f);
+  s.lights = {l};
+  s.background = glm::vec3(0.2f, 0.3f, 0.4f);
+  BakeSettings settings = fast(256);
+  settings.cube_samples = 1024;
+  const BakeResult r = bake(s, settings);
+  scenes::Scene baked = s;
+  attach(baked, r);
+  // The grid's points, moved 1 inch inward on x (the volume's faces), and one below the floor.
+  const std::vector<glm::vec3> points = {{-63, 0, 48}, {63, 0, 48}, {0, 0, -10}};
+  const PointCubes at = ambient_cubes_at(baked, settings, points);
+  EXPECT_EQ(at.valid, (std::vector<char>{1, 1, 0}));
+  for (size_t i = 0; i < 2; ++i) {
+    const scenes::AmbientCube& volume = r.cubes->volume.cubes[i];
+    float brightest = 0;
+    for (const glm::vec3& f : volume) brightest = std::max({brightest, f.r, f.g, f.b});
+    for (int f = 0; f < 6; ++f)
+      for (int c = 0; c < 3; ++c) EXPECT_NEAR(at.cubes[i][size_t(f)][c], volume[size_t(f)][c], 0.03f * brightest) << i << f << c;
+  }
+}
+
 }  // namespace
 }  // namespace luxel::bake::test

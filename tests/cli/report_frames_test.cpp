@@ -253,10 +253,11 @@ TEST(ReportCubemaps, MergedBracketsAgainstFloatCaptures) {
 
 // The ambient_popping section: the courtyard's moving models along 240 frames. The nearest sample
 // steps as a model crosses cells, the trilinear blend moves smoothly, and the time averaging damps
-// both: each of those halves (at least) the largest jump of the reading without it.
+// both: each of those halves (at least) the largest jump of the reading without it. Each is also
+// judged against the exact cube at the model (the fifth row).
 TEST(ReportAmbientPopping, AveragingAndTrilinearDampTheNearestSamplesSteps) {
   const nlohmann::json rows = one_section_rows("ambient_popping");
-  ASSERT_EQ(rows.size(), 4u);
+  ASSERT_EQ(rows.size(), 5u);
   auto jump = [&](size_t i) { return rows[i]["error"]["max_jump"].get<double>(); };
   EXPECT_EQ(rows[0]["cost"]["volume_samples"], 1);
   EXPECT_EQ(rows[2]["cost"]["volume_samples"], 8);
@@ -267,6 +268,19 @@ TEST(ReportAmbientPopping, AveragingAndTrilinearDampTheNearestSamplesSteps) {
   EXPECT_LT(2 * jump(2), jump(0)) << "the trilinear blend has no steps";
   EXPECT_LE(jump(3), jump(2));
   for (size_t i = 0; i < rows.size(); ++i) EXPECT_LE(rows[i]["error"]["mean_jump"].get<double>(), jump(i)) << i;
+  // Against the exact cube at the model (bake::ambient_cubes_at): the reference row is itself, the
+  // lookups stray from it, the trilinear blend less on average than the nearest sample; the light's
+  // own changes along the path are smaller than the nearest sample's steps.
+  auto error = [&](size_t i, const char* which) { return rows[i]["error"][which].get<double>(); };
+  EXPECT_EQ(rows[4]["variant"], "exact (the reference)");
+  EXPECT_EQ(error(4, "max_error"), 0.0);
+  for (size_t i = 0; i < 4; ++i) {
+    EXPECT_GT(error(i, "mean_error"), 0.0) << i;
+    EXPECT_LE(error(i, "mean_error"), error(i, "max_error")) << i;
+    EXPECT_LT(error(i, "max_error"), 2.0) << i;
+  }
+  EXPECT_LT(error(2, "mean_error"), error(0, "mean_error")) << "the trilinear blend is nearer the exact cube";
+  EXPECT_LT(jump(4), jump(0)) << "the nearest sample pops beyond the light's own changes";
 }
 
 // The vertex_lighting section: per-vertex attenuation changes some model pixels, a little, and

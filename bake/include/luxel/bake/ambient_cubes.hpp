@@ -35,4 +35,11 @@ struct AmbientCubes {
   std::vector<char> valid;          ///< per sample: computed (1) or copied from a neighbour (0)
 };
 
+/// Cubes at arbitrary points (bake.hpp's ambient_cubes_at), each computed as a grid sample is,
+/// without the fill from neighbours.
+struct PointCubes {
+  std::vector<scenes::AmbientCube> cubes;
+  std::vector<char> valid;  ///< 0: more than 25 % of the point's rays hit back faces (inside something)
+};
+
 }  // namespace luxel::bake

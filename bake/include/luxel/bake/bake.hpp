@@ -33,6 +33,7 @@
 #include <cstdint>
 #include <functional>
 #include <optional>
+#include <span>
 #include <stdexcept>
 #include <string>
 #include <string_view>
@@ -87,6 +88,20 @@ BakeResult bake(const scenes::Scene& scene, const BakeSettings& settings, const 
 /// such mesh is charted (one atlas for all; luxel size from the settings, else the scene);
 /// otherwise no mesh (atlas_size 0, all nullopt). Throws BakeError as bake() does.
 GeneratedCharts plan_charts(const scenes::Scene& scene, const BakeSettings& settings);
+
+/// The ambient cube at each of `points` in a baked scene (one that attach() has given its
+/// lightmaps and charts), computed as an irradiance-volume sample is (ambient_cubes.hpp: the
+/// scene's sky, emitters and lights, the flat lightmap where a ray hits a lightmapped surface)
+/// from settings.cube_samples rays a point, the same directions at every point (a random stream
+/// of their own: points along a path differ by their light, not by their noise); no sample inside
+/// geometry is replaced. What the volume's nearest and trilinear lookups approximate at a model's
+/// position: with many rays, the exact ambient light there. `unseen_meshes` are passed through
+/// by the rays: the model whose light is wanted (its centroid lies inside its own surfaces, which
+/// are not its ambient light). Deterministic for any thread count. Throws BakeError as bake()
+/// does for a scene or settings it refuses, and for a scene with lightmapped meshes but no flat
+/// lightmap (not baked).
+PointCubes ambient_cubes_at(const scenes::Scene& baked, const BakeSettings& settings, std::span<const glm::vec3> points,
+                            std::span<const int> unseen_meshes = {});
 
 /// Attaches a bake to its scene: the four maps as linear rgba32f textures and Lightmaps, the
 /// cubes into the irradiance volume, charted meshes in place of the scene's.
