@@ -3,10 +3,10 @@
 // functor built through the shading adapter (shading/source/adapter.hpp), its vertex stage
 // (source_vertex.hpp) told which attributes to write.
 //
-// Each family compiles the combos the frame can choose (its "combo space", in its own source
-// file, so the families compile in parallel): every combination of the material switches the
-// frame reads, for the fog types a scene can ask, that the SDK's rules allow on some pixel
-// model. A combo outside it is a frame bug (std::logic_error), never a silent substitute.
+// Each family compiles the combos the frame can choose (its "combo space", combo_spaces.hpp) in
+// its own source file, so the families compile in parallel; their slots are counted apart
+// (combo_slots.hpp). A combo outside the space is a frame bug (std::logic_error), never a
+// silent substitute.
 
 #include "source_vertex.hpp"
 
@@ -72,30 +72,6 @@ SourceDraw water_draw(const shading::source::WaterCombo& combo, shading::ShaderM
                       const shading::source::WaterVertexConstants& constants, const glm::vec3& eye);
 
 namespace detail {
-
-/// Calls fn.template operator()<C>() for the C of kSpace equal to `combo`; false when none is.
-template <auto kSpace, class Combo, class Fn>
-bool with_combo(const Combo& combo, Fn&& fn) {
-  return [&]<size_t... I>(std::index_sequence<I...>) {
-    return ((kSpace[I] == combo ? (fn.template operator()<kSpace[I]>(), true) : false) || ...);
-  }(std::make_index_sequence<kSpace.size()>());
-}
-
-/// A combo space being built at compile time: room for Cap, `count` used.
-template <class Combo, size_t Cap>
-struct ComboList {
-  std::array<Combo, Cap> items{};
-  size_t count = 0;
-  constexpr void add(const Combo& c) { items[count++] = c; }
-};
-
-/// The used part of a ComboList, as an array of exactly that size.
-template <auto kList>
-constexpr auto compact() {
-  std::array<typename decltype(kList.items)::value_type, kList.count> out{};
-  for (size_t i = 0; i < kList.count; ++i) out[i] = kList.items[i];
-  return out;
-}
 
 /// Pixel functor `PS`, its rgb replaced by one byte of their float bits when `byte` >= 0 (alpha
 /// kept: the alpha test still sees the shader's). One functor type for both uses, so that a

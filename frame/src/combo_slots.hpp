@@ -1,0 +1,27 @@
+#pragma once
+// Private: the counted DX9 slots of the frame's combos (combo_spaces.hpp), and which VertexLit
+// combos fit a model. Counting runs the shader once on the Counted lane; that code lives in its
+// own translation unit, compiled without optimization (frame/CMakeLists.txt): it runs once per
+// combo and model (the answers are kept), and compiled with the draws it doubled their build
+// time.
+
+#include "luxel/shading/shader_model.hpp"
+#include "luxel/shading/source/lightmapped_generic.hpp"
+#include "luxel/shading/source/unlit_generic.hpp"
+#include "luxel/shading/source/vertexlit_generic.hpp"
+#include "luxel/shading/source/water.hpp"
+
+namespace luxel::frame::detail {
+
+/// Counted slots per pixel of a combo of the frame's space on `model` (std::logic_error outside it).
+int lightmapped_slots(const shading::source::LightmappedCombo& combo, shading::ShaderModel model);
+int vertexlit_slots(const shading::source::VertexLitCombo& combo, shading::ShaderModel model);
+int unlit_slots(const shading::source::UnlitCombo& combo, shading::ShaderModel model);
+int water_slots(const shading::source::WaterCombo& combo, shading::ShaderModel model);
+int sky_slots(shading::ShaderModel model);
+
+/// Whether a VertexLit combo of the frame's space exists on `model`: allowed by the SDK's rules and
+/// within the model's limits (vertexlit_compiles); false outside the space.
+bool vertexlit_fits(const shading::source::VertexLitCombo& combo, shading::ShaderModel model);
+
+}  // namespace luxel::frame::detail
