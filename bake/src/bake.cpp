@@ -32,6 +32,30 @@ void check_settings(const scenes::Scene& scene, const BakeSettings& s) {
       fail("the default volume spacing must be positive");
 }
 
+/// validate() and check_settings(), their refusals as BakeError.
+void check_inputs(const scenes::Scene& scene, const BakeSettings& settings) {
+  try {
+    scenes::validate(scene);
+  } catch (const std::exception& e) {
+    throw BakeError(e.what());
+  }
+  check_settings(scene, settings);
+}
+
+/// The worker threads `settings` asks for (0: one per core).
+int thread_count(const BakeSettings& settings) {
+  return std::clamp(settings.threads > 0 ? settings.threads : int(std::thread::hardware_concurrency()), 1, 256);
+}
+
+/// The rays' scene: every mesh the inputs see and let occlude, but `unseen`.
+RayScene ray_scene(const scenes::Scene& scene, const Inputs& in, std::span<const int> unseen = {}) {
+  std::vector<char> visible(scene.meshes.size()), occluding(scene.meshes.size());
+  for (size_t i = 0; i < scene.meshes.size(); ++i) visible[i] = in.visible(i), occluding[i] = in.occluding(i);
+  for (const int m : unseen)
+    if (m >= 0 && size_t(m) < scene.meshes.size()) visible[size_t(m)] = occluding[size_t(m)] = 0;
+  return RayScene(scene, visible, occluding);
+}
+
 /// An upper bound of the bytes the bake holds per atlas texel: the four maps, the working flat
 /// map, coverage, the luxel index, the claim, and (at most one per texel) a luxel with its three
 /// per-bounce records.
@@ -60,12 +84,7 @@ GeneratedCharts plan_charts(const scenes::Scene& scene, const BakeSettings& sett
 
 BakeResult bake(const scenes::Scene& original, const BakeSettings& settings, const ProgressFn& progress) {
   const auto start = std::chrono::steady_clock::now();
-  try {
-    scenes::validate(original);
-  } catch (const std::exception& e) {
-    throw BakeError(e.what());
-  }
-  check_settings(original, settings);
+  check_inputs(original, settings);
   BakeResult result;
   std::vector<std::string>& warnings = result.warnings;
   const float luxel_size = settings.luxel_size > 0 ? settings.luxel_size : original.lightmap_luxel_size;
@@ -131,11 +150,8 @@ BakeResult bake(const scenes::Scene& original, const BakeSettings& settings, con
     const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     if (progress) progress({"luxels", grid.luxels.size(), grid.luxels.size(), 0, s, true});
   }
-  std::vector<char> visible(scene.meshes.size()), occluding(scene.meshes.size());
-  for (size_t i = 0; i < scene.meshes.size(); ++i) visible[i] = in.visible(i), occluding[i] = in.occluding(i);
-  const RayScene rays(scene, visible, occluding);
-  const int threads = std::clamp(settings.threads > 0 ? settings.threads : int(std::thread::hardware_concurrency()), 1, 256);
-  const Context ctx{scene, in, rays, grid, uvs, settings, threads, progress};
+  const RayScene rays = ray_scene(scene, in);
+  const Context ctx{scene, in, rays, grid, uvs, settings, thread_count(settings), progress};
 
   if (!grid.luxels.empty()) result.lightmaps = bake_lightmaps(ctx, result.stats, warnings);
   result.stats.width = result.lightmaps.width, result.stats.height = result.lightmaps.height;
@@ -148,12 +164,7 @@ BakeResult bake(const scenes::Scene& original, const BakeSettings& settings, con
 
 PointCubes ambient_cubes_at(const scenes::Scene& scene, const BakeSettings& settings, std::span<const glm::vec3> points,
                             std::span<const int> unseen_meshes) {
-  try {
-    scenes::validate(scene);
-  } catch (const std::exception& e) {
-    throw BakeError(e.what());
-  }
-  check_settings(scene, settings);
+  check_inputs(scene, settings);
   const Inputs in = prepare_inputs(scene, settings);
   // The lightmaps as attach() left them: the flat map read back from its texture, each
   // lightmapped mesh's uv1 addressing it (no luxels needed: a hit only looks its texel up).
@@ -178,14 +189,9 @@ PointCubes ambient_cubes_at(const scenes::Scene& scene, const BakeSettings& sett
       if (in.roles[i] == MeshRole::lightmapped && scene.meshes[i].uv1.size() == scene.meshes[i].positions.size())
         uvs[i] = &scene.meshes[i].uv1;
   }
-  std::vector<char> visible(scene.meshes.size()), occluding(scene.meshes.size());
-  for (size_t i = 0; i < scene.meshes.size(); ++i) visible[i] = in.visible(i), occluding[i] = in.occluding(i);
-  for (const int m : unseen_meshes)
-    if (m >= 0 && size_t(m) < scene.meshes.size()) visible[size_t(m)] = occluding[size_t(m)] = 0;
-  const RayScene rays(scene, visible, occluding);
-  const int threads = std::clamp(settings.threads > 0 ? settings.threads : int(std::thread::hardware_concurrency()), 1, 256);
+  const RayScene rays = ray_scene(scene, in, unseen_meshes);
   const ProgressFn no_progress;
-  const Context ctx{scene, in, rays, grid, uvs, settings, threads, no_progress};
+  const Context ctx{scene, in, rays, grid, uvs, settings, thread_count(settings), no_progress};
   return point_cubes(ctx, atlas, points);
 }
 

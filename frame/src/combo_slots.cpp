@@ -67,12 +67,10 @@ int water_slots(const WaterCombo& combo, shading::ShaderModel model) {
 }
 
 int sky_slots(shading::ShaderModel model) {
-  static std::array<std::atomic<int>, kModels> answers{};
-  std::atomic<int>& answer = answers[size_t(model)];
-  if (const int a = answer.load(std::memory_order_relaxed)) return a - 1;
-  const int value = measure_sky<SkyPixelShader::kCombo>(model).total_slots();
-  answer.store(value + 1, std::memory_order_relaxed);
-  return value;
+  static constexpr std::array kSkySpace{SkyPixelShader::kCombo};  // the frame's one Sky_HDR combo
+  return kept<kSkySpace>("Sky_HDR", SkyPixelShader::kCombo, model, []<SkyCombo C>(shading::ShaderModel m) {
+    return measure_sky<C>(m).total_slots();
+  });
 }
 
 }  // namespace luxel::frame::detail

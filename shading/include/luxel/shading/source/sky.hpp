@@ -52,6 +52,7 @@ struct SkyCombo {
 
   constexpr bool valid() const { return true; }
   std::string name() const { return texture == SkyTexture::hdr16 ? "hdr16" : "rgbs"; }
+  constexpr bool operator==(const SkyCombo&) const = default;
 };
 
 inline constexpr SkyCombo kSkyCombos[] = {{SkyTexture::hdr16}, {SkyTexture::rgbs_compressed}};
