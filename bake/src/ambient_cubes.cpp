@@ -29,23 +29,9 @@ scenes::AmbientCube gather_cube(const Context& c, const LightmapAtlas& atlas, gl
     const glm::vec3 dir(r * std::cos(phi), r * std::sin(phi), z);
     ++rays;
     const std::optional<Hit> hit = c.rays.intersect(p, dir, 0.0f, std::numeric_limits<float>::infinity());
-    glm::vec3 radiance(0.0f);
-    if (!hit) {
-      radiance = c.in.sky(dir);
-    } else if (!hit->front) {
-      ++back;
-    } else {
-      const size_t m = size_t(hit->mesh);
-      radiance = c.in.emissive[m];
-      if (c.in.roles[m] == MeshRole::lightmapped) {
-        const int64_t t = texel_of_hit(c, *hit);
-        if (t >= 0 && !atlas.maps[0].empty()) radiance += c.in.albedo[m] * atlas.maps[0][size_t(t)];
-      } else if (c.in.roles[m] == MeshRole::diffuse) {
-        glm::vec3 hp, ng;
-        hit_geometry(c.scene, *hit, hp, ng);
-        radiance += c.in.albedo[m] * direct_flat(c, hp, ng, ng, rays);
-      }
-    }
+    bool back_face = false;
+    const glm::vec3 radiance = final_radiance(c, atlas.maps[0], hit, dir, rays, back_face);
+    back += back_face ? 1 : 0;
     for (int f = 0; f < 6; ++f) {
       const float w = std::max(0.0f, glm::dot(dir, kAxes[f]));
       sum[f] += radiance * w;

@@ -162,37 +162,59 @@ BakeResult bake(const scenes::Scene& original, const BakeSettings& settings, con
   return result;
 }
 
+namespace {
+
+/// What the queries on a baked scene read: the flat map read back from its texture (attach() and
+/// load_bake() give float maps), each lightmapped mesh's uv1 addressing it (no luxels: a hit only
+/// looks its texel up). `what` names the query in the refusal of an unbaked scene.
+struct BakedFlat {
+  LightmapAtlas atlas;
+  LuxelGrid grid;
+  MeshUvs uvs;
+};
+
+BakedFlat baked_flat(const scenes::Scene& scene, const Inputs& in, const std::string& what) {
+  BakedFlat out;
+  out.uvs.assign(scene.meshes.size(), nullptr);
+  const bool lightmapped = std::find(in.roles.begin(), in.roles.end(), MeshRole::lightmapped) != in.roles.end();
+  const bool has_flat = scene.lightmaps && scene.lightmaps->flat >= 0 && size_t(scene.lightmaps->flat) < scene.textures.size() &&
+                        !scene.textures[size_t(scene.lightmaps->flat)].faces.empty();
+  if (lightmapped && !has_flat) throw BakeError(scene.name + ": not baked: " + what + " read its flat lightmap");
+  if (!has_flat) return out;
+  const scenes::PixelImage& flat = scene.textures[size_t(scene.lightmaps->flat)].faces[0];
+  out.atlas.width = out.grid.width = flat.width;
+  out.atlas.height = out.grid.height = flat.height;
+  const size_t texels = size_t(flat.width) * size_t(flat.height);
+  if (flat.rgba32f.size() < 4 * texels) throw BakeError(scene.name + ": its flat lightmap is not a float map of its size");
+  out.atlas.maps[0].resize(texels);
+  for (size_t t = 0; t < texels; ++t) out.atlas.maps[0][t] = {flat.rgba32f[4 * t], flat.rgba32f[4 * t + 1], flat.rgba32f[4 * t + 2]};
+  for (size_t i = 0; i < scene.meshes.size(); ++i)
+    if (in.roles[i] == MeshRole::lightmapped && scene.meshes[i].uv1.size() == scene.meshes[i].positions.size())
+      out.uvs[i] = &scene.meshes[i].uv1;
+  return out;
+}
+
+}  // namespace
+
 PointCubes ambient_cubes_at(const scenes::Scene& scene, const BakeSettings& settings, std::span<const glm::vec3> points,
                             std::span<const int> unseen_meshes) {
   check_inputs(scene, settings);
   const Inputs in = prepare_inputs(scene, settings);
-  // The lightmaps as attach() left them: the flat map read back from its texture, each
-  // lightmapped mesh's uv1 addressing it (no luxels needed: a hit only looks its texel up).
-  LightmapAtlas atlas;
-  LuxelGrid grid;
-  MeshUvs uvs(scene.meshes.size(), nullptr);
-  const bool lightmapped = std::find(in.roles.begin(), in.roles.end(), MeshRole::lightmapped) != in.roles.end();
-  const bool has_flat = scene.lightmaps && scene.lightmaps->flat >= 0 && size_t(scene.lightmaps->flat) < scene.textures.size() &&
-                        !scene.textures[size_t(scene.lightmaps->flat)].faces.empty();
-  if (lightmapped && !has_flat) throw BakeError(scene.name + ": not baked: ambient cubes at points read its flat lightmap");
-  if (has_flat) {
-    const scenes::PixelImage& flat = scene.textures[size_t(scene.lightmaps->flat)].faces[0];
-    atlas.width = grid.width = flat.width;
-    atlas.height = grid.height = flat.height;
-    const size_t texels = size_t(flat.width) * size_t(flat.height);
-    atlas.maps[0].resize(texels);
-    if (flat.rgba32f.size() < 4 * texels)  // attach() and load_bake() give float maps
-      throw BakeError(scene.name + ": its flat lightmap is not a float map of its size");
-    for (size_t t = 0; t < texels; ++t)
-      atlas.maps[0][t] = {flat.rgba32f[4 * t], flat.rgba32f[4 * t + 1], flat.rgba32f[4 * t + 2]};
-    for (size_t i = 0; i < scene.meshes.size(); ++i)
-      if (in.roles[i] == MeshRole::lightmapped && scene.meshes[i].uv1.size() == scene.meshes[i].positions.size())
-        uvs[i] = &scene.meshes[i].uv1;
-  }
+  const BakedFlat baked = baked_flat(scene, in, "ambient cubes at points");
   const RayScene rays = ray_scene(scene, in, unseen_meshes);
   const ProgressFn no_progress;
-  const Context ctx{scene, in, rays, grid, uvs, settings, thread_count(settings), no_progress};
-  return point_cubes(ctx, atlas, points);
+  const Context ctx{scene, in, rays, baked.grid, baked.uvs, settings, thread_count(settings), no_progress};
+  return point_cubes(ctx, baked.atlas, points);
+}
+
+std::vector<glm::vec3> irradiance_at(const scenes::Scene& scene, const BakeSettings& settings, std::span<const SurfacePoint> points) {
+  check_inputs(scene, settings);
+  const Inputs in = prepare_inputs(scene, settings);
+  const BakedFlat baked = baked_flat(scene, in, "irradiance at points");
+  const RayScene rays = ray_scene(scene, in);
+  const ProgressFn no_progress;
+  const Context ctx{scene, in, rays, baked.grid, baked.uvs, settings, thread_count(settings), no_progress};
+  return point_irradiance(ctx, baked.atlas, points);
 }
 
 void attach(scenes::Scene& scene, const BakeResult& result) {

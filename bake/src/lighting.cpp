@@ -79,6 +79,27 @@ int64_t texel_of_hit(const Context& c, const Hit& h) {
   return int64_t(y) * c.grid.width + x;
 }
 
+glm::vec3 final_radiance(const Context& c, const std::vector<glm::vec3>& flat, const std::optional<Hit>& hit, glm::vec3 dir,
+                         uint64_t& rays, bool& back) {
+  back = false;
+  if (!hit) return c.in.sky(dir);
+  if (!hit->front) {
+    back = true;
+    return glm::vec3(0.0f);
+  }
+  const size_t m = size_t(hit->mesh);
+  glm::vec3 radiance = c.in.emissive[m];
+  if (c.in.roles[m] == MeshRole::lightmapped) {
+    const int64_t t = texel_of_hit(c, *hit);
+    if (t >= 0 && !flat.empty()) radiance += c.in.albedo[m] * flat[size_t(t)];
+  } else if (c.in.roles[m] == MeshRole::diffuse) {
+    glm::vec3 hp, ng;
+    hit_geometry(c.scene, *hit, hp, ng);
+    radiance += c.in.albedo[m] * direct_flat(c, hp, ng, ng, rays);
+  }
+  return radiance;
+}
+
 int strata_side(int samples) { return std::max(1, int(std::lround(std::sqrt(double(std::max(samples, 1)))))); }
 
 }  // namespace luxel::bake::detail

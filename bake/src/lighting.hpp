@@ -42,6 +42,14 @@ void hit_geometry(const scenes::Scene& scene, const Hit& h, glm::vec3& point, gl
 /// The atlas texel a hit on a lightmapped mesh lands in (nearest), or -1.
 int64_t texel_of_hit(const Context& c, const Hit& h);
 
+/// The radiance a ray in direction `dir` brings back once the lightmaps are final (the rule of
+/// ambient_cubes.hpp, which irradiance_at shares): the sky on a miss; on the front of a surface
+/// its emissive plus albedo x the final flat map `flat` (lightmapped, nearest texel; nothing
+/// when `flat` is empty) or albedo x the lights' direct light there (other diffuse surfaces);
+/// black on a back face, which sets `back`. Counts the shadow rays it traces.
+glm::vec3 final_radiance(const Context& c, const std::vector<glm::vec3>& flat, const std::optional<Hit>& hit, glm::vec3 dir,
+                         uint64_t& rays, bool& back);
+
 /// Stratum j of n x n over [0, 1)^2, jittered by key.
 inline glm::vec2 stratified(const RandomKey& key, int j, int n) {
   const float r1 = random01(key, 0), r2 = random01(key, 1);

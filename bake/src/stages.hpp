@@ -26,4 +26,7 @@ AmbientCubes bake_ambient_cubes(const Context& c, const LightmapAtlas& atlas, Ba
 /// Cubes at `points` by the same rule, with their own random stream.
 PointCubes point_cubes(const Context& c, const LightmapAtlas& atlas, std::span<const glm::vec3> points);
 
+/// irradiance_at's rule at `points`, with the final flat map of `atlas` (bake.hpp).
+std::vector<glm::vec3> point_irradiance(const Context& c, const LightmapAtlas& atlas, std::span<const SurfacePoint> points);
+
 }  // namespace luxel::bake::detail

@@ -103,6 +103,27 @@ GeneratedCharts plan_charts(const scenes::Scene& scene, const BakeSettings& sett
 PointCubes ambient_cubes_at(const scenes::Scene& baked, const BakeSettings& settings, std::span<const glm::vec3> points,
                             std::span<const int> unseen_meshes = {});
 
+/// A point on a surface, and the normal the light arriving there is wanted for.
+struct SurfacePoint {
+  glm::vec3 position{0.0f};
+  glm::vec3 geometric_normal{0.0f, 0.0f, 1.0f};  ///< unit, the front side: light counts from above it only
+  glm::vec3 normal{0.0f, 0.0f, 1.0f};            ///< unit: the shading normal (a bump map's, in world space)
+};
+
+/// The light arriving at each of `points` for its shading normal, in the lightmaps' unit: what a
+/// luxel there would hold if its flat map were about that normal,
+///   (1/pi) integral over the hemisphere above geometric_normal of L(w) max(0, normal . w) dw
+/// plus each light as a delta (color x falloff x max(0, normal . L), when the light is above the
+/// geometric surface and no occluder lies between). L(w) is what a ray brings back once the bake
+/// is final, the ambient cubes' rule (ambient_cubes.hpp: sky, emitters, the flat lightmap where
+/// it hits a lightmapped surface, the direct light on other diffuse surfaces). settings.samples
+/// rays a point, n x n strata uniform over the hemisphere (a random stream of their own; point i's
+/// numbers are keyed by i and settings.seed), self-normalized with the weight's exact integral
+/// (1 + normal . geometric_normal) / 2, so that a uniform sky is exact for any normal. What
+/// radiosity normal mapping and the flat lightmap approximate for a bumped normal, computed per
+/// point. Deterministic for any thread count. Throws BakeError as ambient_cubes_at does.
+std::vector<glm::vec3> irradiance_at(const scenes::Scene& baked, const BakeSettings& settings, std::span<const SurfacePoint> points);
+
 /// Attaches a bake to its scene: the four maps as linear rgba32f textures and Lightmaps, the
 /// cubes into the irradiance volume, charted meshes in place of the scene's.
 void attach(scenes::Scene& scene, const BakeResult& result);
