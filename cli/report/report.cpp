@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <cstdio>
 #include <fstream>
 #include <stdexcept>
@@ -59,13 +60,15 @@ std::string ref_key(const std::vector<std::string>& refs, const std::string& ref
   return "R" + std::to_string(std::find(refs.begin(), refs.end(), reference) - refs.begin() + 1);
 }
 
-/// The plot as series, one per variant in order of first appearance.
+/// The plot as series, one per variant in order of first appearance; a row without a finite x or
+/// y (a cost that does not apply to it) has no point, and a variant without one no series.
 LinePlot plot_of(const SectionResult& r) {
   LinePlot plot;
   plot.width = 1000, plot.height = 600;  // room for a label per point
   plot.title = r.plot.title, plot.x_label = r.plot.x_label, plot.y_label = r.plot.y_label, plot.log_y = r.plot.log_y;
   const size_t x = column_index(r, r.plot.x_key), y = column_index(r, r.plot.y_key);
   for (const ReportRow& row : r.rows) {
+    if (!std::isfinite(row.values[x]) || !std::isfinite(row.values[y] * r.plot.y_scale)) continue;
     auto it = std::find_if(plot.series.begin(), plot.series.end(), [&](const PlotSeries& s) { return s.name == row.variant; });
     if (it == plot.series.end()) {
       PlotSeries s;

@@ -1,9 +1,10 @@
 #pragma once
 // `luxel report speed-error`: for each approximation luxel makes, its cost and its error against a
 // reference luxel computes itself (in double, or a frame drawn without the approximation). The
-// report is made of sections (lighting bases, MSAA, shader models, ambient sampling, tone mapping,
-// color correction, auto exposure, HDR cube maps, SIMD against scalar lanes; later world lighting...); a section is one small file that measures
-// its rows and says how its plot is drawn, and this file writes every section the same way:
+// report is made of sections (lighting bases, MSAA, shader models, per-vertex lighting, world
+// lighting, ambient sampling and popping, tone mapping, color correction, auto exposure, HDR cube
+// maps, SIMD against scalar lanes); a section is one small file that measures its rows and says
+// how its plot is drawn, and this file writes every section the same way:
 //
 //   DIR/speed_error.txt   the tables, one per section, with the notes and references under them
 //   DIR/speed_error.json  the same rows (cost, timing and error apart) and each plot's points

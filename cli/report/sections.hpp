@@ -10,6 +10,7 @@ ReportSection lighting_bases_section();
 ReportSection msaa_section();
 ReportSection shader_models_section();
 ReportSection vertex_lighting_section();
+ReportSection world_lighting_section();
 ReportSection ambient_sampling_section();
 ReportSection ambient_popping_section();
 ReportSection tone_mapping_section();

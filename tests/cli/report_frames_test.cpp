@@ -283,6 +283,39 @@ TEST(ReportAmbientPopping, AveragingAndTrilinearDampTheNearestSamplesSteps) {
   EXPECT_LT(jump(4), jump(0)) << "the nearest sample pops beyond the light's own changes";
 }
 
+// The world_lighting section on the quick-baked courtyard: per group of surfaces (walls, floors),
+// the flat lightmap, RNM as the engine combines it, RNM with maps rescaled to average the flat
+// one, and the reference again with another seed. The reference's own noise is far below every
+// approximation's error. On the walls (lit from the side by the torches) RNM follows the bumped
+// normal: its mean error is under half the flat map's (with the bitangent's sign flipped in the
+// reference's frame, RNM's error rises above the flat map's and this fails). RNM costs three maps
+// and more slots.
+TEST(ReportWorldLighting, RnmFollowsTheBumpOnTheWallsAndTheReferenceNoiseIsFarBelow) {
+  const nlohmann::json rows = one_section_rows("world_lighting");
+  ASSERT_EQ(rows.size(), 8u);
+  const char* const variants[] = {"flat lightmap", "RNM (the engine's)", "RNM, maps averaging the flat one", "reference, another seed"};
+  for (size_t i = 0; i < rows.size(); ++i) {
+    EXPECT_EQ(rows[i]["variant"], variants[i % 4]) << i;
+    EXPECT_EQ(rows[i]["scene"], std::string("builtin:courtyard ") + (i < 4 ? "walls" : "floors")) << i;
+  }
+  auto mean = [&](size_t i) { return rows[i]["error"]["mean_error"].get<double>(); };
+  for (size_t g = 0; g < rows.size(); g += 4) {
+    EXPECT_EQ(rows[g]["cost"]["lightmaps_per_pixel"], 1);
+    EXPECT_EQ(rows[g + 1]["cost"]["lightmaps_per_pixel"], 3);
+    EXPECT_EQ(rows[g]["cost"]["bytes_per_luxel"], 4);
+    EXPECT_EQ(rows[g + 1]["cost"]["bytes_per_luxel"], 16);
+    EXPECT_LT(rows[g]["cost"]["slots"].get<double>(), rows[g + 1]["cost"]["slots"].get<double>());
+    EXPECT_TRUE(rows[g + 3]["cost"]["slots"].is_null()) << "the reference is no shader";
+    EXPECT_LT(mean(g + 3), 0.02) << g;
+    for (size_t v = 0; v < 3; ++v) {
+      EXPECT_LT(10 * mean(g + 3), mean(g + v)) << g << " " << v;
+      EXPECT_LE(mean(g + v), rows[g + v]["error"]["p95_error"].get<double>()) << g << " " << v;
+      EXPECT_LE(std::abs(rows[g + v]["error"]["bias"].get<double>()), mean(g + v)) << g << " " << v;
+    }
+  }
+  EXPECT_LT(2 * mean(1), mean(0)) << "on the walls RNM follows the bumped normal";
+}
+
 // The vertex_lighting section: per-vertex attenuation changes some model pixels, a little, and
 // costs fewer slots than per pixel on the same model; each per-pixel row is its own reference.
 TEST(ReportVertexLighting, PerVertexAttenuationAgainstPerPixel) {
