@@ -21,7 +21,9 @@ struct Baked {
   std::string folder, index, hash;
 };
 
-/// builtin:demo baked cheaply into the scratch folder, once per process.
+/// builtin:demo baked cheaply into the scratch folder, once per process, at a coarse luxel size:
+/// the index spells out the atlas's coverage a character a texel, and a small atlas keeps every
+/// input (and so every run) small.
 const Baked& baked() {
   static const Baked b = [] {
     Baked b;
@@ -30,6 +32,7 @@ const Baked& baked() {
     b.settings.samples = 16;
     b.settings.cube_samples = 16;
     b.settings.threads = 1;
+    b.settings.luxel_size = 256.0f;
     b.folder = scratch_path("bake");
     bake::save_bake(bake::bake(b.scene, b.settings), b.scene, b.settings, b.folder);
     b.index = (std::filesystem::path(b.folder) / "bake.json").string();
