@@ -6,9 +6,12 @@
 // the second series adds the engine's gamma-space averaging to the error). Cost: samples per pixel
 // and ms per frame (timed); error: frame_error.hpp's columns.
 //
-// The references shade every sub-pixel, MSAA once per pixel: what MSAA leaves alone (shading
-// aliasing, textures read at the pixel's mip rather than the sub-pixel's) stays in every row's
-// error, the floor the rows fall towards as the samples rise.
+// The references read their textures at the mips of the frame they stand for (a LOD bias of
+// log2 of the factor, FrameSettings::texture_lod_bias): drawn without it, every textured pixel of
+// the reference is sharper than any MSAA frame can be, and that difference, not the edges, made
+// most of every row's error. The references still shade every sub-pixel, MSAA once per pixel:
+// what MSAA leaves alone (shading aliasing, the variation of a texture within a pixel at its mip)
+// stays in every row's error, the floor the rows fall towards as the samples rise.
 
 #include "report/box_filter.hpp"
 #include "report/frame_error.hpp"
@@ -18,6 +21,7 @@
 #include "luxel/rasterizer/limits.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <string>
 #include <utility>
 #include <vector>
@@ -38,6 +42,7 @@ int reference_factor(const frame::FrameSettings& s) {
 rasterizer::Image supersampled_frame(const ReportScene& scene, int factor) {
   frame::FrameSettings big = scene.settings;
   big.width *= factor, big.height *= factor, big.samples = 1;
+  big.texture_lod_bias = std::log2(float(factor));
   const std::unique_ptr<frame::Renderer> renderer = scene.renderer(big);
   renderer->render(*scene.ctx);
   return renderer->image();
@@ -63,7 +68,8 @@ SectionResult run_msaa(const ReportSettings& s) {
   s.progress("msaa: the " + k + "x" + k + " supersampled references");
   const rasterizer::Image big = supersampled_frame(scene, factor);
   const std::string drawn = scene.name + " drawn at " + std::to_string(big.width) + "x" + std::to_string(big.height) +
-                            " with 1 sample per pixel, each " + k + "x" + k + " block ";
+                            " with 1 sample per pixel and its textures at the mips of the " + scene.resolution() +
+                            " frame (LOD bias log2 " + k + "), each " + k + "x" + k + " block ";
   const Reference references[] = {
       {"MSAA vs sRGB-space box", box_filter_down(big, factor, BoxSpace::stored),
        drawn + "averaged in its stored 8-bit (sRGB-encoded) values, rounded half up, as the MSAA resolve averages a "

@@ -375,7 +375,7 @@ class FrameBuilder {
       pass.geometry = Geometry::indexed(std::span<const uint16_t>(kQuad), 4);
       SkyParams p;
       const GpuTexture& face = st_.sky_faces[static_cast<size_t>(f)];
-      p.base = Sampler2D{0, &face.texture, face.sampler};
+      p.base = Sampler2D{0, &face.texture, biased(face.sampler)};
       const bool hdr = cube.faces.at(0).is_hdr();
       p.input_scale = glm::vec4(hdr ? sky_input_scale(SkyFormat::rgba16f) : glm::vec3(1.0f), 1.0f);
       p.tonemap = tonemap_;
@@ -456,7 +456,13 @@ class FrameBuilder {
 
   Sampler2D sampler2d(int slot, const scenes::TextureRef& ref) const {
     const GpuTexture& t = ref.bound() ? st_.textures[static_cast<size_t>(ref.texture)] : st_.white;
-    return Sampler2D{slot, &t.texture, t.sampler};
+    return Sampler2D{slot, &t.texture, biased(t.sampler)};
+  }
+
+  /// A material's, the sky's or a reflection's sampler with FrameSettings::texture_lod_bias.
+  rasterizer::Sampler biased(rasterizer::Sampler s) const {
+    s.lod_bias += st_.settings.texture_lod_bias;
+    return s;
   }
 
   /// The cube a material reflects (renderer.hpp), or null for none.
@@ -502,7 +508,7 @@ class FrameBuilder {
     LightmappedGenericParams p;
     p.base = sampler2d(0, m.base);
     p.lightmap = Sampler2D{1, &st_.lightmaps->texture, st_.lightmaps->sampler};
-    if (env) p.envmap = SamplerCube{2, &env->texture, env->sampler};
+    if (env) p.envmap = SamplerCube{2, &env->texture, biased(env->sampler)};
     p.bump = sampler2d(4, m.bump);
     p.envmap_mask = sampler2d(5, m.envmap_mask_texture);
     p.tint_lightmap_scale = glm::vec4(glm::vec3(m.color) * lightmap_scale_factor(LightmapFormat::hdr_float16), m.color.a);
@@ -570,7 +576,7 @@ class FrameBuilder {
     combo.fog = fog_;
     UnlitGenericParams p;
     p.base = sampler2d(0, m.base);
-    if (env) p.envmap = SamplerCube{1, &env->texture, env->sampler};
+    if (env) p.envmap = SamplerCube{1, &env->texture, biased(env->sampler)};
     p.envmap_mask = sampler2d(4, m.envmap_mask_texture);
     p.envmap_tint = glm::vec4(m.envmap_tint, 0.0f);
     p.modulation = m.color;

@@ -47,7 +47,9 @@ TEST(Workloads, FramesAreDrawAndResolveOnly) {
     settings.time_passes = true;
     const scenes::Scene scene = scenes::make_builtin_scene(name, {settings.width, settings.height});
     Renderer renderer(scene, settings);
-    rasterizer::Context ctx(rasterizer::ContextOptions{.threads = 1});
+    rasterizer::ContextOptions one_thread;
+    one_thread.threads = 1;
+    rasterizer::Context ctx(one_thread);
     for (int frame = 0; frame < 2; ++frame) renderer.render(ctx);
     std::vector<std::string> passes;
     for (const PassTime& p : renderer.pass_times()) passes.push_back(p.pass);

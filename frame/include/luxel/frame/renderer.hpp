@@ -158,6 +158,10 @@ struct FrameSettings {
   /// Attenuate the models' two local lights per vertex on every shader model, as the SDK's
   /// ps_2_0 combos do, instead of per pixel where the combo fits (`luxel report`, vertex_lighting).
   bool vertex_attenuation = false;
+  /// Added to the mip LOD of every texture a material, the sky, a reflection or a water normal reads
+  /// (D3DSAMP_MIPMAPLODBIAS): log2(k) draws a frame k times larger with the textures at the mips
+  /// of the frame k times smaller (`luxel report`'s MSAA references).
+  float texture_lod_bias = 0.0f;
   /// A fixed tone-map scale (LINEAR_LIGHT_SCALE); unset: the scene's Exposure decides (above).
   std::optional<float> exposure = std::nullopt;
   /// How auto exposure counts its histogram: target algorithm, counting method, query latency,
