@@ -53,7 +53,8 @@ std::string replace_all(std::string text, const std::string& from, const std::st
 
 void read_bake_input(std::span<const uint8_t> input) {
   const Baked& b = baked();
-  const std::string index = replace_all(std::string(input.begin(), input.end()), "@HASH@", b.hash);
+  const std::string index = replace_all(replace_all(std::string(input.begin(), input.end()), "@HASH@", b.hash), "@VERSION@",
+                                        std::to_string(bake::kBakeFormatVersion));
   write_file(b.index, reinterpret_cast<const uint8_t*>(index.data()), index.size());
   std::optional<bake::BakeResult> result;
   try {
@@ -78,7 +79,8 @@ void write_bake_seed(const std::string& dir) {
   const Baked& b = baked();
   std::stringstream index;
   index << std::ifstream(b.index).rdbuf();
-  std::ofstream(std::filesystem::path(dir) / "bake.json") << replace_all(index.str(), b.hash, "@HASH@");
+  const std::string version = "\"version\": " + std::to_string(bake::kBakeFormatVersion);
+  std::ofstream(std::filesystem::path(dir) / "bake.json") << replace_all(replace_all(index.str(), b.hash, "@HASH@"), version, "\"version\": @VERSION@");
 }
 
 }  // namespace luxel::fuzz

@@ -39,7 +39,8 @@ inline constexpr const char* kLutExtensions[] = {"cube", "3dl", "csp", "spi1d", 
                                                  "clf", "ctf", "cc", "ccc", "cdl", "raw"};
 
 /// A bake index (bake.json) beside the maps of a cheap bake of builtin:demo made once per process,
-/// the token @HASH@ standing for the scene's input hash (a fuzzer could not guess it). A bake that
+/// the token @HASH@ standing for the scene's input hash (a fuzzer could not guess it) and
+/// @VERSION@ for the bake format's version (kept inputs stay readable when it changes). A bake that
 /// loads must attach to the scene and leave it valid (scenes::validate).
 void read_bake_input(std::span<const uint8_t> input);
 

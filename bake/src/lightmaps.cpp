@@ -33,6 +33,10 @@ std::vector<Rgb4> gather(const Context& c, int bounce, const std::vector<glm::ve
       const glm::vec3 origin = l.position + l.geometric_normal * c.in.epsilon;
       glm::vec3 sum[4] = {};
       double weight[4] = {};
+      // The sky in the basis maps, by vrad's rule (lightmaps.hpp): its sums over the rays each
+      // basis direction sees, their counts, and the count of the rays n sees.
+      glm::vec3 sky_sum[3] = {};
+      int sky_rays[3] = {}, seen = 0;
       for (int j = 0; j < n * n; ++j) {
         const RandomKey key{c.settings.seed, kStreamGather, l.texel, uint32_t(j), uint32_t(bounce)};
         const glm::vec2 xi = stratified(key, j, n);
@@ -42,13 +46,22 @@ std::vector<Rgb4> gather(const Context& c, int bounce, const std::vector<glm::ve
         float w[4] = {z, 0, 0, 0};
         for (int k = 0; k < 3; ++k) w[k + 1] = std::max(0.0f, glm::dot(basis[size_t(k)], local));
         for (int k = 0; k < 4; ++k) weight[k] += w[k];
+        if (bounce == 0 && z > 0.0f) {
+          ++seen;
+          for (int k = 0; k < 3; ++k) sky_rays[k] += w[k + 1] > 0.0f ? 1 : 0;
+        }
         // Directions below the geometric surface see its back: black, no ray needed.
         if (glm::dot(dir, l.geometric_normal) <= 0.0f) continue;
         ++rays;
         const std::optional<Hit> hit = c.rays.intersect(origin, dir, 0.0f, std::numeric_limits<float>::infinity());
         glm::vec3 radiance(0.0f);
         if (!hit) {
-          if (bounce == 0) radiance = c.in.sky(dir);
+          if (bounce == 0) {
+            const glm::vec3 sky = c.in.sky(dir);
+            sum[0] += sky * w[0];
+            for (int k = 0; k < 3; ++k) sky_sum[k] += sky * w[k + 1];
+          }
+          continue;
         } else if (hit->front) {
           const size_t m = size_t(hit->mesh);
           if (bounce == 0) {
@@ -69,6 +82,10 @@ std::vector<Rgb4> gather(const Context& c, int bounce, const std::vector<glm::ve
         const double scale = k == 0 ? 1.0 : kBasisSkyFactor;
         if (weight[k] > 0) o.v[size_t(k)] = sum[k] * float(scale / weight[k]);
       }
+      // weight[0] sums n . w over every ray, and every ray lies in n's hemisphere.
+      for (int k = 0; k < 3; ++k)
+        if (sky_rays[k] > 0 && weight[0] > 0)
+          o.v[size_t(k) + 1] += sky_sum[k] * float(double(seen) / (double(sky_rays[k]) * weight[0]));
       counters.done.fetch_add(1, std::memory_order_relaxed);
     }
     counters.rays.fetch_add(rays, std::memory_order_relaxed);

@@ -6,7 +6,6 @@
 
 #include "luxel/bake/rnm_basis.hpp"
 
-#include <glm/gtc/packing.hpp>
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -14,8 +13,6 @@
 
 namespace luxel::bake::test {
 namespace {
-
-float half(float x) { return glm::unpackHalf1x16(glm::packHalf1x16(x)); }
 
 /// One 64 x 64 inch quad at z = 0 facing +Z, tangent +X, 16 x 16 luxels in a one-cell atlas.
 scenes::Scene lone_quad(glm::vec3 albedo, glm::vec4 tangent = {1, 0, 0, 1}) {
@@ -38,21 +35,26 @@ BakeSettings fast(int samples = 64) {
   return b;
 }
 
-TEST(BakeLightmaps, WhiteFurnaceGivesTheSkyInTheFlatMapAndTheTiltedPlaneFactorInTheBasisMaps) {
+TEST(BakeLightmaps, WhiteFurnaceGivesTheSkyInTheFlatMapAndVradsSkyFactorInTheBasisMaps) {
   scenes::Scene s = lone_quad(glm::vec3(1.0f));
   const glm::vec3 sky(0.75f, 0.5f, 1.25f);
   s.background = sky;
-  const BakeResult r = bake(s, fast());
+  const BakeResult r = bake(s, fast(1024));
   ASSERT_EQ(r.lightmaps.width, 18);
   const auto luxels = covered(r.lightmaps);
   ASSERT_EQ(luxels.size(), 256u);
+  // vrad's sky in a basis map (lightmaps.hpp): the mean of the basis cosine over the lune both
+  // hemispheres see (its integral pi (1 + cos b) / 2 over its area 2 (pi - b)) over the mean of the
+  // normal's cosine over its hemisphere (1/2); cos b = 1/sqrt 3. Worked out here, not read from
+  // the library: 1.1333, where the clipped integral would give 0.7887.
+  const double b = std::acos(1.0 / std::sqrt(3.0));
+  const double vrad_factor = (3.14159265358979 * (1.0 + std::cos(b)) / 2.0) / (2.0 * (3.14159265358979 - b)) / 0.5;
   for (size_t i : luxels) {
     for (int c = 0; c < 3; ++c) {
       EXPECT_NEAR(r.lightmaps.maps[0][i][c], sky[c], 1e-4 * sky[c]) << "flat, texel " << i;
-      // The tilted-plane sky factor (1 + cos beta) / 2, cos beta = 1/sqrt 3: worked out here, not
-      // read from the library.
-      const float want = half(float((1.0 + 1.0 / std::sqrt(3.0)) / 2.0 * sky[c]));
-      for (int k = 1; k < 4; ++k) EXPECT_NEAR(r.lightmaps.maps[size_t(k)][i][c], want, 1e-4 * want) << "basis " << k - 1;
+      const float want = float(vrad_factor * sky[c]);
+      // A ratio of counts over the lune's edge, per luxel: within 2.5 % at 1024 rays.
+      for (int k = 1; k < 4; ++k) EXPECT_NEAR(r.lightmaps.maps[size_t(k)][i][c], want, 0.025 * want) << "basis " << k - 1;
     }
   }
   // A planar quad sees only the sky: one bounce that adds nothing ends the bake.

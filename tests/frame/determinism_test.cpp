@@ -102,9 +102,9 @@ uint64_t fnv1a(const std::vector<uint8_t>& bytes) {
 TEST(FrameDeterminism, CourtyardGoldenHashes) {
   if (rasterizer::simd::kLanes != 8) GTEST_SKIP() << "golden hashes are for 8-lane builds";
   const struct { shading::ShaderModel model; uint64_t hash, without_post; } golden[] = {
-      {shading::ShaderModel::ps_2_0, 0x25611126a57b4918ull, 0x909db5798700843aull},
-      {shading::ShaderModel::ps_2_b, 0x20a5e3c9e84ca012ull, 0xb22f0b1ca30f3a44ull},
-      {shading::ShaderModel::ps_3_0, 0x20a5e3c9e84ca012ull, 0xb22f0b1ca30f3a44ull},
+      {shading::ShaderModel::ps_2_0, 0x62243deeca789a07ull, 0xf89c1c491f9832abull},
+      {shading::ShaderModel::ps_2_b, 0x04b57afedb920228ull, 0xdde937decb6c8a8eull},
+      {shading::ShaderModel::ps_3_0, 0x04b57afedb920228ull, 0xdde937decb6c8a8eull},
   };
   // ps_2_b and ps_3_0 run the same combos on the courtyard (no combo there needs more than
   // ps_2_b offers), hence the same bytes.

@@ -25,8 +25,17 @@
 // Sky, emissive surfaces and bounced light are gathered with `samples` rays per luxel and bounce
 // over the hemisphere (uniform directions, n x n strata jittered by random.hpp), and weighted
 // with self-normalized weights (the estimate sum L w / sum w times the weight's exact integral):
-// the same rule vrad uses for ambient cubes. A uniform sky is then exact (white furnace), and
-// anything else converges as 1/sqrt(samples).
+// the same rule vrad uses for ambient cubes. A uniform sky is then exact in the flat map (white
+// furnace), and anything else converges as 1/sqrt(samples).
+// The sky's light in the basis maps follows vrad instead (GatherSampleAmbientSkySSE in
+// utils/vrad/lightmap.cpp "scales out the missing parts of the hemisphere of this bump basis
+// vector"): basis map i gets (sum over rays with n . w > 0 and b_i . w > 0 of L max(0, b_i . w)
+// / their count) / (sum over rays with n . w > 0 of n . w / their count), the mean of b_i's
+// cosine over the directions both see, over the mean of n's over n's hemisphere. A uniform sky L
+// then gives each basis map pi (1 + cos b) / (2 (pi - b)) L = 1.1333 L (b = 54.74 degrees, the
+// lune both hemispheres share has area 2 (pi - b)), not the clipped integral's 0.7887 L: under
+// an open sky, a bumped surface with a flat normal is 13 % brighter than its flat map, as in the
+// engine. Bounced light and emitters keep the exact rule, as vrad's patch transfers do.
 //   bounce 0: the lights (delta), plus rays that miss everything (sky texture, else the scene's
 //             background) and rays that hit the front of an emissive surface (its `emissive`);
 //   bounce k: rays that hit the front of a lightmapped surface see albedo x that surface's flat

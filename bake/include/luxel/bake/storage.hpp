@@ -28,7 +28,7 @@
 
 namespace luxel::bake {
 
-inline constexpr int kBakeFormatVersion = 1;
+inline constexpr int kBakeFormatVersion = 2;
 
 /// The hash of what a bake of `scene` with `settings` reads.
 uint64_t bake_input_hash(const scenes::Scene& scene, const BakeSettings& settings);
