@@ -22,8 +22,10 @@ inline const std::array<glm::vec3, 3>& rnm_basis() {
 }
 
 /// (1/pi) times the integral, over the hemisphere above the surface normal, of max(0, b . w) for a
-/// basis direction b: the irradiance / pi a basis lightmap holds under a uniform sky of radiance 1.
-/// It is the tilted-plane sky factor (1 + cos beta) / 2 with cos beta = b.z = 1/sqrt(3).
+/// basis direction b: the irradiance / pi a basis direction receives from a uniform radiance of 1
+/// over that hemisphere, what the basis maps' self-normalized gather of bounced and emitted light
+/// is scaled by (the sky follows vrad's own rule, lightmaps.hpp). It is the tilted-plane factor
+/// (1 + cos beta) / 2 with cos beta = b.z = 1/sqrt(3).
 inline constexpr double kBasisSkyFactor = 0.78867513459481288;  // (1 + 1/sqrt(3)) / 2
 
 }  // namespace luxel::bake
