@@ -186,7 +186,7 @@ struct WaterPasses::Plane {
 
 WaterPasses::WaterPasses(const scenes::Scene& scene, const FrameSettings& settings, const ViewMatrices& camera,
                          const ViewSpec& camera_view, const BuildView& build)
-    : scene_(&scene), settings_(settings), plane_of_mesh_(scene.meshes.size(), -1) {
+    : settings_(settings), plane_of_mesh_(scene.meshes.size(), -1) {
   const glm::vec3 eye = camera_view.eye;
   for (size_t i = 0; i < scene.meshes.size(); ++i) {
     const scenes::Mesh& mesh = scene.meshes[i];

@@ -80,7 +80,6 @@ class WaterPasses {
 
  private:
   struct Plane;
-  const scenes::Scene* scene_;
   FrameSettings settings_;
   std::vector<std::unique_ptr<Plane>> planes_;
   std::vector<int> plane_of_mesh_;  ///< per mesh: index into planes_, or -1
