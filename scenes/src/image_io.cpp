@@ -11,6 +11,7 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <cstddef>
 #include <cstdio>
 #include <mutex>
 #include <stdexcept>
@@ -82,19 +83,36 @@ std::vector<T> expand_to_rgba(const std::vector<T>& raw, size_t pixels, int n, T
 
 /// The first `n` channels of every row, read in bands into `raw`, which grows with what was
 /// decoded: a small file whose header claims a large image fails on its first band instead of
-/// having the whole image allocated (and zeroed) first. A band is at most 64 rows and about
-/// 256 KB of kept channels, so that the buffer OpenImageIO converts a band in stays small too
-/// (a 16384-wide 16-bit file would otherwise take 8 MB for its first band). False on a read error.
+/// having the whole image allocated (and zeroed) first. A band is about 256 KB of kept channels
+/// (at least a row). The rows are read in the file's own format (TypeDesc::UNKNOWN) and, where
+/// that is not `type`, converted here with OpenImageIO's own conversion (convert_pixel_values):
+/// its converting read allocates a buffer of 16 MB or more on every call, whatever the rows
+/// asked, which made a narrow, tall image read a band at a time cost seconds. Files with a
+/// format per channel (some EXRs) take the converting read. False on a read error.
 template <class T>
 bool read_rows(OIIO::ImageInput& in, int n, OIIO::TypeDesc type, std::vector<T>& raw) {
   const OIIO::ImageSpec& spec = in.spec();
   const size_t row = static_cast<size_t>(spec.width) * static_cast<size_t>(n);
-  const int band_rows = static_cast<int>(std::clamp<size_t>((size_t{256} << 10) / (row * sizeof(T)), 1, 64));
+  const bool uniform = spec.channelformats.empty();
+  const bool convert = uniform && spec.format != type;
+  const size_t stored_row = convert ? row * spec.format.size() : 0;
+  const int band_rows = static_cast<int>(std::clamp<size_t>((size_t{256} << 10) / std::max(row * sizeof(T), stored_row), 1,
+                                                            static_cast<size_t>(spec.height)));
+  std::vector<std::byte> stored;
   for (int y = spec.y; y < spec.y + spec.height; y += band_rows) {
     const int end = std::min(y + band_rows, spec.y + spec.height);
-    const size_t at = raw.size();
-    raw.resize(at + row * static_cast<size_t>(end - y));
-    if (!in.read_scanlines(0, 0, y, end, 0, 0, n, type, raw.data() + at)) return false;
+    const size_t at = raw.size(), values = row * static_cast<size_t>(end - y);
+    raw.resize(at + values);
+    if (!convert) {
+      if (!in.read_scanlines(0, 0, y, end, 0, 0, n, uniform ? OIIO::TypeDesc::UNKNOWN : type, raw.data() + at)) return false;
+      continue;
+    }
+    stored.resize(stored_row * static_cast<size_t>(end - y));
+    if (!in.read_scanlines(0, 0, y, end, 0, 0, n, OIIO::TypeDesc::UNKNOWN, stored.data())) return false;
+    if (!OIIO::convert_pixel_values(spec.format, stored.data(), type, raw.data() + at, static_cast<int>(values))) {
+      in.errorfmt("cannot convert pixels stored as {}", spec.format);
+      return false;
+    }
   }
   return true;
 }

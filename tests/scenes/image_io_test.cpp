@@ -1,7 +1,8 @@
 // write_image / read_image (scenes/image_io.hpp, through OpenImageIO): exact round trips of RGBA8
 // images through PNG, TIFF and OpenEXR and of float images through OpenEXR, PNG bytes in memory,
-// the channel rules for files with fewer channels (written here by hand, not by the code under
-// test), oversized images refused before allocation, and failures that name the file.
+// the channel rules for files with fewer channels and 16-bit samples brought to 8 bits (written
+// here by hand, not by the code under test), oversized images refused before allocation, and
+// failures that name the file.
 
 #include "luxel/scenes/image_io.hpp"
 #include "temp_dir.hpp"
@@ -16,6 +17,7 @@
 #include <random>
 #include <stdexcept>
 #include <string>
+#include <vector>
 #include <unistd.h>
 
 namespace luxel::scenes::test {
@@ -207,6 +209,32 @@ TEST(ImageIo, ReadingFewerChannelsFillsThemIn) {
     EXPECT_EQ(q[1], 100 + i);
     EXPECT_EQ(q[2], 200 + i);
     EXPECT_EQ(q[3], 255);
+  }
+}
+
+// 16-bit files are read in their own format and converted to 8 bits by luxel (image_io.cpp,
+// read_rows): a binary PPM with maxval 65535 (big-endian samples, written here), tall and narrow
+// (a band of many rows), each sample 257 k + d with d < 128 reads back as k (k/255 of full scale).
+TEST(ImageIo, SixteenBitSamplesBecomeTheNearestEightBitValue) {
+  TempDir dir;
+  const int w = 2, h = 600;
+  std::string rgb16;
+  std::vector<uint8_t> want;
+  for (int i = 0; i < w * h * 3; ++i) {
+    const int k = (i * 7) % 256, d = (i * 13) % 128;
+    const int v = 257 * k + (k == 255 ? 0 : d);
+    rgb16 += char(uint8_t(v >> 8)), rgb16 += char(uint8_t(v & 0xff));
+    want.push_back(uint8_t(k));
+  }
+  const std::string ppm = dir.file("rgb16.ppm");
+  std::ofstream(ppm, std::ios::binary) << "P6\n" << w << " " << h << "\n65535\n" << rgb16;
+  const PixelImage c = read_image(ppm);
+  ASSERT_EQ(c.width, w);
+  ASSERT_EQ(c.height, h);
+  ASSERT_FALSE(c.is_hdr());
+  for (int i = 0; i < w * h; ++i) {
+    for (int ch = 0; ch < 3; ++ch) ASSERT_EQ(c.rgba8[size_t(4 * i + ch)], want[size_t(3 * i + ch)]) << "pixel " << i << " channel " << ch;
+    ASSERT_EQ(c.rgba8[size_t(4 * i + 3)], 255);
   }
 }
 
