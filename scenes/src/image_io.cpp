@@ -15,6 +15,7 @@
 #include <cstdio>
 #include <mutex>
 #include <stdexcept>
+#include <utility>
 
 namespace luxel::scenes {
 
@@ -66,17 +67,24 @@ bool is_float(OIIO::TypeDesc t) {
          t.basetype == OIIO::TypeDesc::DOUBLE;
 }
 
-/// 4 channels from n: grey replicated, alpha `one` where the file has none.
+/// 4 channels from n (1 to 4): grey replicated, alpha `one` where the file has none. RGBA rows are
+/// returned as they are; the others are expanded by one loop per layout, no choice per pixel.
 template <class T>
-std::vector<T> expand_to_rgba(const std::vector<T>& raw, size_t pixels, int n, T one) {
+std::vector<T> expand_to_rgba(std::vector<T> raw, size_t pixels, int n, T one) {
+  if (n == 4) return raw;
   std::vector<T> out(pixels * 4);
-  for (size_t i = 0; i < pixels; ++i) {
-    const T* p = &raw[i * n];
-    T* q = &out[i * 4];
-    q[0] = p[0];
-    q[1] = n >= 3 ? p[1] : p[0];
-    q[2] = n >= 3 ? p[2] : p[0];
-    q[3] = n >= 4 ? p[3] : (n == 2 ? p[1] : one);
+  T* q = out.data();
+  const T* p = raw.data();
+  switch (n) {
+    case 1:
+      for (size_t i = 0; i < pixels; ++i, q += 4) q[0] = q[1] = q[2] = p[i], q[3] = one;
+      break;
+    case 2:
+      for (size_t i = 0; i < pixels; ++i, q += 4, p += 2) q[0] = q[1] = q[2] = p[0], q[3] = p[1];
+      break;
+    default:
+      for (size_t i = 0; i < pixels; ++i, q += 4, p += 3) q[0] = p[0], q[1] = p[1], q[2] = p[2], q[3] = one;
+      break;
   }
   return out;
 }
@@ -138,11 +146,11 @@ PixelImage read_opened(OIIO::ImageInput& in, const std::string& name, uint64_t m
   if (hdr) {
     std::vector<float> raw;
     if (!read_rows(in, n, OIIO::TypeDesc::FLOAT, raw)) fail(name, in.geterror());
-    image.rgba32f = expand_to_rgba(raw, pixels, n, 1.0f);
+    image.rgba32f = expand_to_rgba(std::move(raw), pixels, n, 1.0f);
   } else {
     std::vector<uint8_t> raw;
     if (!read_rows(in, n, OIIO::TypeDesc::UINT8, raw)) fail(name, in.geterror());
-    image.rgba8 = expand_to_rgba(raw, pixels, n, uint8_t{255});
+    image.rgba8 = expand_to_rgba(std::move(raw), pixels, n, uint8_t{255});
   }
   return image;
 }
