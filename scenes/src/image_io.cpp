@@ -94,8 +94,9 @@ std::vector<T> expand_to_rgba(std::vector<T> raw, size_t pixels, int n, T one) {
 /// having the whole image allocated (and zeroed) first. A band is about 256 KB of kept channels
 /// (at least a row). The rows are read in the file's own format (TypeDesc::UNKNOWN) and, where
 /// that is not `type`, converted here with OpenImageIO's own conversion (convert_pixel_values):
-/// its converting read allocates a buffer of 16 MB or more on every call, whatever the rows
-/// asked, which made a narrow, tall image read a band at a time cost seconds. Files with a
+/// its converting read allocates, on every call, a buffer for as many rows as fit in tens of
+/// megabytes (64 MB in its current source), whatever the rows asked, which made a narrow, tall
+/// image read a band at a time cost seconds under AddressSanitizer. Files with a
 /// format per channel (some EXRs) take the converting read. False on a read error.
 template <class T>
 bool read_rows(OIIO::ImageInput& in, int n, OIIO::TypeDesc type, std::vector<T>& raw) {
