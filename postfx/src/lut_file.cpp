@@ -51,7 +51,8 @@ std::string condensed(std::string what, const std::string& absolute, const std::
 }
 
 /// A .cube's declared sizes, from its keyword lines before the first line of numbers: refused
-/// here when out of range, before OpenColorIO reserves memory for them.
+/// here when out of range, before OpenColorIO reserves memory for them. Keywords in any case, as
+/// OpenColorIO's reader takes them (`LuT_3D_SIZE 20880` made it reserve 25 GB).
 void check_cube_header(const std::string& path) {
   std::ifstream in(path);
   std::string line;
@@ -61,7 +62,9 @@ void check_cube_header(const std::string& path) {
     if (!(words >> keyword)) continue;
     const char first = keyword[0];
     if (std::isdigit(static_cast<unsigned char>(first)) || first == '-' || first == '+' || first == '.') return;
-    const bool is3d = keyword == "LUT_3D_SIZE", is1d = keyword == "LUT_1D_SIZE";
+    std::string upper = keyword;
+    for (char& c : upper) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+    const bool is3d = upper == "LUT_3D_SIZE", is1d = upper == "LUT_1D_SIZE";
     if (!is3d && !is1d) continue;
     long size = 0;
     if (!(words >> size)) return;  // OpenColorIO's reader names a malformed size

@@ -186,6 +186,7 @@ TEST(LutFile, BadFilesGiveOneLineNamingTheFile) {
   write(dir.file("size0.cube"), "LUT_3D_SIZE 0\n");
   write(dir.file("size1.cube"), "LUT_3D_SIZE 1\n0 0 0\n");
   write(dir.file("size300.cube"), "LUT_3D_SIZE 300\n0 0 0\n");
+  write(dir.file("size-lower-case.cube"), "LuT_3D_SIZE 20880/");  // found by fuzz_lut
   write(dir.file("size1d.cube"), "LUT_1D_SIZE 100000000\n0 0 0\n");
   write(dir.file("nan.cube"), "LUT_3D_SIZE 2\n" + corners + "nan 1 1\n");
   write(dir.file("inf.cube"), "LUT_3D_SIZE 2\n" + corners + "1 inf 1\n");
@@ -203,6 +204,7 @@ TEST(LutFile, BadFilesGiveOneLineNamingTheFile) {
   expect_one_line(dir.file("size0.cube"), "LUT_3D_SIZE 0: a LUT needs at least 2 points");
   expect_one_line(dir.file("size1.cube"), "LUT_3D_SIZE 1: a LUT needs at least 2 points");
   expect_one_line(dir.file("size300.cube"), "LUT_3D_SIZE 300 is above 129");
+  expect_one_line(dir.file("size-lower-case.cube"), "LuT_3D_SIZE 20880 is above 129");
   expect_one_line(dir.file("size1d.cube"), "LUT_1D_SIZE 100000000 is above 1048576");
   expect_one_line(dir.file("nan.cube"), "a NaN or infinite value in its 3D LUT");
   expect_one_line(dir.file("inf.cube"), "a NaN or infinite value in its 3D LUT");
