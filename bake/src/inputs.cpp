@@ -44,9 +44,7 @@ Inputs prepare_inputs(const Scene& scene, const BakeSettings& settings) {
   in.roles.assign(n, MeshRole::diffuse);
   in.albedo.assign(n, glm::vec3(0.0f));
   in.emissive.assign(n, glm::vec3(0.0f));
-  std::vector<char> in_model(n, 0);
-  for (const Model& m : scene.models)
-    for (int i : m.meshes) in_model[size_t(i)] = 1;
+  const std::vector<char> in_model = scenes::meshes_in_models(scene);
   std::vector<glm::vec3> material_albedo(scene.materials.size());
   for (size_t i = 0; i < scene.materials.size(); ++i) {
     const Material& m = scene.materials[i];

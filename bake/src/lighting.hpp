@@ -9,7 +9,9 @@
 #include "luxel/bake/rays.hpp"
 #include "luxel/bake/random.hpp"
 
+#include <algorithm>
 #include <array>
+#include <cmath>
 
 namespace luxel::bake::detail {
 
@@ -54,6 +56,12 @@ glm::vec3 final_radiance(const Context& c, const std::vector<glm::vec3>& flat, c
 inline glm::vec2 stratified(const RandomKey& key, int j, int n) {
   const float r1 = random01(key, 0), r2 = random01(key, 1);
   return {(float(j % n) + r1) / float(n), (float(j / n) + r2) / float(n)};
+}
+
+/// The direction uniform over the hemisphere about +z for a point `xi` of [0, 1)^2 (z = xi.x).
+inline glm::vec3 uniform_hemisphere(glm::vec2 xi) {
+  const float z = xi.x, r = std::sqrt(std::max(0.0f, 1.0f - z * z)), phi = 6.2831853f * xi.y;
+  return {r * std::cos(phi), r * std::sin(phi), z};
 }
 
 /// The number of strata per side for a requested ray count (at least 1).

@@ -39,9 +39,8 @@ std::vector<Rgb4> gather(const Context& c, int bounce, const std::vector<glm::ve
       int sky_rays[3] = {}, seen = 0;
       for (int j = 0; j < n * n; ++j) {
         const RandomKey key{c.settings.seed, kStreamGather, l.texel, uint32_t(j), uint32_t(bounce)};
-        const glm::vec2 xi = stratified(key, j, n);
-        const float z = xi.x, r = std::sqrt(std::max(0.0f, 1.0f - z * z)), phi = 6.2831853f * xi.y;
-        const glm::vec3 local(r * std::cos(phi), r * std::sin(phi), z);
+        const glm::vec3 local = uniform_hemisphere(stratified(key, j, n));
+        const float z = local.z;
         const glm::vec3 dir = local.x * l.tangent + local.y * l.bitangent + local.z * l.normal;
         float w[4] = {z, 0, 0, 0};
         for (int k = 0; k < 3; ++k) w[k + 1] = std::max(0.0f, glm::dot(basis[size_t(k)], local));

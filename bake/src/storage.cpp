@@ -102,10 +102,7 @@ uint64_t bake_input_hash(const scenes::Scene& scene, const BakeSettings& setting
   scenes::ContentHash h;
   h.value(kBakeFormatVersion);
   h.value(scene.meshes.size());
-  std::vector<char> in_model(scene.meshes.size(), 0);
-  for (const auto& m : scene.models)
-    for (int i : m.meshes)
-      if (i >= 0 && size_t(i) < in_model.size()) in_model[size_t(i)] = 1;
+  const std::vector<char> in_model = scenes::meshes_in_models(scene);
   for (size_t i = 0; i < scene.meshes.size(); ++i) {
     const scenes::Mesh& m = scene.meshes[i];
     h.value(m.material), h.value(in_model[i]);

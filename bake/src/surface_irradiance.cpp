@@ -38,9 +38,8 @@ std::vector<glm::vec3> point_irradiance(const Context& c, const LightmapAtlas& a
       for (int j = 0; j < n * n; ++j) {
         // Uniform over the hemisphere above the geometric surface, as the lightmaps' gather.
         const RandomKey key{c.settings.seed, kStreamSurfacePoints, i, uint32_t(j), 0};
-        const glm::vec2 xi = stratified(key, j, n);
-        const float z = xi.x, r = std::sqrt(std::max(0.0f, 1.0f - z * z)), phi = 6.2831853f * xi.y;
-        const glm::vec3 dir = r * std::cos(phi) * t + r * std::sin(phi) * b + z * s.geometric_normal;
+        const glm::vec3 local = uniform_hemisphere(stratified(key, j, n));
+        const glm::vec3 dir = local.x * t + local.y * b + local.z * s.geometric_normal;
         const float w = std::max(0.0f, glm::dot(s.normal, dir));
         weight += w;
         if (w <= 0.0f) continue;  // no weight: its radiance does not count

@@ -70,10 +70,7 @@ struct Triangle {
 /// The bump-mapped world LightmappedGeneric triangles of `group` (the meshes the bake gives luxels,
 /// bake/src/inputs.cpp's rule, that also have a bump map, tangents and normals).
 std::vector<Triangle> bumped_world_triangles(const scenes::Scene& scene, const SurfaceGroup& group) {
-  std::vector<char> in_model(scene.meshes.size(), 0);
-  for (const scenes::Model& m : scene.models)
-    for (int i : m.meshes)
-      if (i >= 0 && size_t(i) < in_model.size()) in_model[size_t(i)] = 1;
+  const std::vector<char> in_model = scenes::meshes_in_models(scene);
   std::vector<Triangle> out;
   for (size_t i = 0; i < scene.meshes.size(); ++i) {
     const scenes::Mesh& mesh = scene.meshes[i];
@@ -103,13 +100,9 @@ void read_lightmaps(const ReportScene& scene, glm::vec2 uv1, glm::vec3 bump_tang
     maps[k] = glm::dvec3(glm::vec3(rasterizer::sample_reference(page.texture, page.sampler, at, 0.0f)));
   }
   p.flat = maps[0];
-  double d[3], sum = 0;
-  for (int i = 0; i < 3; ++i) {
-    const auto& b = shading::source::kBumpBasis[i];
-    const double dot = std::clamp(double(bump_tangent.x) * b[0] + double(bump_tangent.y) * b[1] + double(bump_tangent.z) * b[2], 0.0, 1.0);
-    d[i] = dot * dot;
-    sum += d[i];
-  }
+  // The shader's weights (on the float lane), its combine in double.
+  const shading::float3<float> w = shading::source::rnm_weights(shading::float3<float>(bump_tangent.x, bump_tangent.y, bump_tangent.z));
+  const double d[3] = {w.x, w.y, w.z}, sum = d[0] + d[1] + d[2];
   p.rnm = sum > 0 ? (d[0] * maps[1] + d[1] * maps[2] + d[2] * maps[3]) / sum : glm::dvec3(0.0);
   // vrad's LinearToBumpedLightmap (SOURCE_FACTS 1.5, never called by vrad): each channel of the
   // three maps scaled so that their mean is the flat map's, here on the filtered values.

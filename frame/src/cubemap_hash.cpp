@@ -26,10 +26,7 @@ void hash_texture(scenes::ContentHash& h, const scenes::Texture& t) {
 uint64_t cubemap_input_hash(const scenes::Scene& scene, const CubemapSettings& settings) {
   scenes::ContentHash h;
   h.values(kCubemapFormatVersion, settings.face_size, settings.stops_apart, settings.model);
-  std::vector<char> in_model(scene.meshes.size(), 0);
-  for (const scenes::Model& m : scene.models)
-    for (int i : m.meshes)
-      if (i >= 0 && size_t(i) < in_model.size()) in_model[size_t(i)] = 1;
+  const std::vector<char> in_model = scenes::meshes_in_models(scene);
   h.value(scene.meshes.size());
   for (size_t i = 0; i < scene.meshes.size(); ++i) {
     const scenes::Mesh& m = scene.meshes[i];

@@ -460,10 +460,7 @@ class FrameBuilder {
   }
 
   /// A material's, the sky's or a reflection's sampler with FrameSettings::texture_lod_bias.
-  rasterizer::Sampler biased(rasterizer::Sampler s) const {
-    s.lod_bias += st_.settings.texture_lod_bias;
-    return s;
-  }
+  rasterizer::Sampler biased(const rasterizer::Sampler& s) const { return with_lod_bias(s, st_.settings.texture_lod_bias); }
 
   /// The cube a material reflects (renderer.hpp), or null for none.
   const GpuTexture* envmap_of(const scenes::Material& m, size_t index) const {

@@ -295,9 +295,7 @@ std::optional<SourceDraw> WaterPasses::surface_draw(size_t index, const scenes::
   // A refract-only combo never reads the reflection; the binding only has to be valid.
   const GpuTexture& reflection = plane.reflect ? *plane.reflection_texture : *plane.refraction_texture;
   p.reflection = Sampler2D{2, &reflection.texture, reflection.sampler};
-  rasterizer::Sampler normal_sampler = normal_map.sampler;
-  normal_sampler.lod_bias += settings_.texture_lod_bias;  // FrameSettings::texture_lod_bias
-  p.normal = Sampler2D{4, &normal_map.texture, normal_sampler};
+  p.normal = Sampler2D{4, &normal_map.texture, with_lod_bias(normal_map.sampler, settings_.texture_lod_bias)};
   p.pixel_fog = frame.fog_constants;
   WaterVertexConstants c;
   const scenes::UvTransform t = scenes::UvTransform::of(m.water_normal);

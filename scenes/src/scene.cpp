@@ -26,6 +26,14 @@ uint32_t Mesh::vertex_of_corner(size_t i) const {
   return std::visit([i](const auto& v) { return static_cast<uint32_t>(v[i]); }, indices);
 }
 
+std::vector<char> meshes_in_models(const Scene& scene) {
+  std::vector<char> in_model(scene.meshes.size(), 0);
+  for (const Model& m : scene.models)
+    for (int i : m.meshes)
+      if (i >= 0 && size_t(i) < in_model.size()) in_model[size_t(i)] = 1;
+  return in_model;
+}
+
 Bounds bounds_of(const Scene& scene) {
   Bounds b;
   for (const Mesh& m : scene.meshes) {

@@ -16,6 +16,12 @@ struct GpuTexture {
   rasterizer::Sampler sampler;
 };
 
+/// `s` with `lod_bias` added to its mip LOD bias (FrameSettings::texture_lod_bias).
+inline rasterizer::Sampler with_lod_bias(rasterizer::Sampler s, float lod_bias) {
+  s.lod_bias += lod_bias;
+  return s;
+}
+
 /// 8-bit sRGB images become RGBA8_sRGB, other 8-bit ones RGBA8, float images RGBA16F (HDR); a
 /// full mip chain when the texture asks for mipmaps, the base level alone otherwise.
 GpuTexture upload(const scenes::Texture& texture);

@@ -367,6 +367,10 @@ struct Bounds {
 /// The box around every mesh position.
 Bounds bounds_of(const Scene& scene);
 
+/// Per mesh: 1 when a Model lists it (world geometry is 0). Indices out of range are left out
+/// (validate() refuses them).
+std::vector<char> meshes_in_models(const Scene& scene);
+
 /// Checks what the frame relies on: indices within their vertex counts, array lengths, material
 /// and texture references in range, finite positions, finite material numbers and texture
 /// transforms (a shader computes with each), a finite background and fog, texture images the size

@@ -110,6 +110,16 @@ inline constexpr float kBumpBasis[3][3] = {
     {-0.40824821591377258f, -0.7071068286895752f, 0.57735025882720947f},
 };
 
+/// The RNM weights of a tangent-space normal (SOURCE_FACTS §1.3): d_i = sat(dot(n, basis_i))^2.
+/// LightmappedGeneric lights with sum d_i LM_i / sum d_i.
+template <Lane L>
+inline float3<L> rnm_weights(const float3<L>& n) {
+  const float3<L> d(saturate(dot(n, float3<L>(kBumpBasis[0][0], kBumpBasis[0][1], kBumpBasis[0][2]))),
+                    saturate(dot(n, float3<L>(kBumpBasis[1][0], kBumpBasis[1][1], kBumpBasis[1][2]))),
+                    saturate(dot(n, float3<L>(kBumpBasis[2][0], kBumpBasis[2][1], kBumpBasis[2][2]))));
+  return d * d;
+}
+
 /// Six ambient-cube colors, order +X, -X, +Y, -Y, +Z, -Z (SOURCE_FACTS §2.1), linear.
 struct AmbientCube {
   std::array<glm::vec3, 6> color{};

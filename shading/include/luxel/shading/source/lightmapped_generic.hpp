@@ -179,10 +179,7 @@ inline float4<L> lightmapped_generic_combine(const LightmappedTexels<L>& t, cons
   float3<L> diffuse;
   if constexpr (C.bump) {
     n = t.bump.xyz() * 2.0f - 1.0f;
-    float3<L> d(saturate(dot(n, float3<L>(kBumpBasis[0][0], kBumpBasis[0][1], kBumpBasis[0][2]))),
-                saturate(dot(n, float3<L>(kBumpBasis[1][0], kBumpBasis[1][1], kBumpBasis[1][2]))),
-                saturate(dot(n, float3<L>(kBumpBasis[2][0], kBumpBasis[2][1], kBumpBasis[2][2]))));
-    d = d * d;
+    const float3<L> d = rnm_weights(n);
     diffuse = d.x * t.lightmap[1] + d.y * t.lightmap[2] + d.z * t.lightmap[3];
     const L sum = dot(d, float3<L>(1.0f));
     diffuse = diffuse * (c12.rgb() / sum);
