@@ -15,6 +15,7 @@
 
 #include "texture_internal.hpp"
 
+#include <algorithm>
 #include <array>
 #include <cstdio>
 #include <cstdlib>
@@ -34,7 +35,7 @@ using IntMask = simd::IntMask;
 
 // --- Small lane helpers -----------------------------------------------------------------------
 
-LUXEL_INLINE Int to_int(const Float& x) { return xsimd::to_int(x); }  // exact on floor()ed values
+LUXEL_INLINE Int to_int(const Float& x) { return xsimd::to_int(x); }  // truncates: floor for x >= 0
 LUXEL_INLINE Float to_float(const Int& i) { return xsimd::to_float(i); }
 LUXEL_INLINE FloatMask float_mask(const IntMask& m) { return xsimd::bool_cast(m); }
 LUXEL_INLINE IntMask int_mask(const FloatMask& m) { return xsimd::bool_cast(m); }
@@ -557,24 +558,22 @@ Float4 sample_level_impl(const Texture& texture, const Sampler& s, const TexCoor
   const Float zero(0.0f);
   Float lod = lod_in + Float(s.lod_bias);
   lod = xsimd::select(xsimd::isnan(lod), zero, lod);
-  lod = xsimd::min(xsimd::max(lod, Float(s.min_lod)), Float(s.max_lod));
-  const FloatMask magnified = lod <= zero;
-  const Float last(static_cast<float>(texture.mip_levels() - 1));
+  const FloatMask magnified = xsimd::min(xsimd::max(lod, Float(s.min_lod)), Float(s.max_lod)) <= zero;
+  // The level position: the LOD clamped to [min_lod, max_lod] and then to the texture's levels,
+  // as one clamp to the clamped bounds (every later step waits for it). Non-negative, so the
+  // conversions below truncate where they would floor.
+  const float last = static_cast<float>(texture.mip_levels() - 1);
+  const Float l = xsimd::min(xsimd::max(lod, Float(std::clamp(s.min_lod, 0.0f, last))),
+                             Float(std::clamp(s.max_lod, 0.0f, last)));
 
   Float4 raw;
   switch (s.mip) {
     case MipFilter::None: raw = filter_level<Format, Kind>(ctx, Int(0), magnified, p); break;
-    case MipFilter::Point: {
-      const Float l = xsimd::min(xsimd::max(lod, zero), last);
-      raw = filter_level<Format, Kind>(ctx, to_int(xsimd::floor(l + Float(0.5f))), magnified, p);
-      break;
-    }
+    case MipFilter::Point: raw = filter_level<Format, Kind>(ctx, to_int(l + Float(0.5f)), magnified, p); break;
     case MipFilter::Linear: {
-      const Float l = xsimd::min(xsimd::max(lod, zero), last);
-      const Float first = xsimd::floor(l);
-      const Float t = l - first;
-      const Int level = to_int(first);
+      const Int level = to_int(l);
       raw = filter_level<Format, Kind>(ctx, level, magnified, p);
+      const Float t = l - to_float(level);
       const FloatMask blend = t > zero;
       if (xsimd::any(blend)) {
         // The coarser level is fetched for every lane, blended or not: a lane on the last level
