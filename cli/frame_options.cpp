@@ -93,6 +93,12 @@ void FrameOptions::add_to(CLI::App& cmd) {
                  "Frames before a histogram query is read back (the engine waited 3)")
       ->check(CLI::Range(1, 64))
       ->capture_default_str();
+  cmd.add_option("--water-size", settings.water_texture_size,
+                 "Side of the water's square reflection and refraction targets, drawn without MSAA; 0 (the default): "
+                 "the SDK's 1024 (iWaterTextureSize), or the frame's larger side rounded up to a power of two where "
+                 "that is less")
+      ->check(CLI::Range(0, 8192))
+      ->capture_default_str();
   cmd.add_flag("!--no-color-correction", settings.color_correction,
                "Leave out the scene's color-correction nodes (Source's mat_colorcorrection 0)");
   cmd.add_flag("--no-bloom", no_bloom, "Leave out the bloom (Source's mat_disable_bloom 1)");

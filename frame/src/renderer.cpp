@@ -186,6 +186,8 @@ struct FrameState {
   };
   std::vector<std::unique_ptr<SkyQuads>> sky_quads;  // per view
   std::optional<WaterPasses> water;
+  std::optional<ColorTarget> water_color;  ///< the water's views' targets, made for the first
+  std::optional<DepthStencilTarget> water_depth;
   PassList passes;                                   // the camera's view
   Image image;
   DrawStats stats;
@@ -220,6 +222,9 @@ void check_settings(const FrameSettings& s) {
     throw std::invalid_argument("msaa " + std::to_string(s.samples) + " is not 1, 2, 4 or 8");
   if (!shading::caps(s.model).pixel)
     throw std::invalid_argument("shader model " + std::string(shading::caps(s.model).name) + " is not a pixel-shader model");
+  if (s.water_texture_size < 0 || s.water_texture_size > kMaxTargetSize)
+    throw std::invalid_argument("water texture size " + std::to_string(s.water_texture_size) + " is outside 1.." +
+                                std::to_string(kMaxTargetSize) + " (or 0: the default)");
   if (s.exposure && !(std::isfinite(*s.exposure) && *s.exposure > 0.0f))
     throw std::invalid_argument("exposure " + std::to_string(*s.exposure) + " is not a positive finite number");
 }
@@ -232,15 +237,23 @@ const FrameSettings& checked(const scenes::Scene& scene, const FrameSettings& s)
 
 }  // namespace
 
+int water_texture_side(const FrameSettings& settings) {
+  if (settings.water_texture_size > 0) return settings.water_texture_size;
+  constexpr int kSdkSide = 1024;
+  return std::min(kSdkSide, static_cast<int>(std::bit_ceil(static_cast<unsigned>(std::max(settings.width, settings.height)))));
+}
+
 void check_memory(const scenes::Scene& scene, const FrameSettings& s) {
   uint64_t uploads = 0;  // RGBA8 or RGBA16F, each with its mips (a third more)
   for (const scenes::Texture& t : scene.textures)
     for (const scenes::PixelImage& face : t.faces) uploads += uint64_t(face.width) * uint64_t(face.height) * (face.is_hdr() ? 8 : 4) * 4 / 3;
   // The targets are allocated in whole tiles: color (4 bytes), depth (4) and stencil (1) per sample.
   auto tiles = [](int pixels) { return uint64_t(pixels + kTileSize - 1) / kTileSize * kTileSize; };
-  const uint64_t targets = tiles(s.width) * tiles(s.height) * uint64_t(s.samples) * 9;
-  // The resolved image, the water's reflection and refraction textures, a post pass's target.
-  const uint64_t images = 4 * uint64_t(s.width) * uint64_t(s.height) * 4;
+  const int side = water_texture_side(s);
+  const uint64_t water = uint64_t(side) * uint64_t(side);
+  const uint64_t targets = tiles(s.width) * tiles(s.height) * uint64_t(s.samples) * 9 + tiles(side) * tiles(side) * 9;
+  // The resolved image and a post pass's target; the water's resolved view and its two textures.
+  const uint64_t images = 2 * 4 * uint64_t(s.width) * uint64_t(s.height) + 3 * 4 * water;
   const uint64_t scene_bytes = scenes::scene_bytes(scene);
   scenes::check_memory(scene.name, scene_bytes + uploads + targets + images,
                        "a " + std::to_string(s.width) + "x" + std::to_string(s.height) + " frame at " + std::to_string(s.samples) +
@@ -736,7 +749,12 @@ void Renderer::render(Context& ctx) {
   PassClock clock(ctx, st.settings.time_passes ? &st.pass_times : nullptr);
   // After the clock moved: the views' draws made anew on the CPU (a sequence pays it per frame).
   if (!st.views_current) clock.run("views", 0, [&] { build_views(st); });
-  if (st.water) st.water->render(ctx, st.color, st.depth, clock);  // the water's views first, into the same targets
+  if (st.water && st.water->has_views()) {  // the water's views first: its draws read them
+    const int side = water_texture_side(st.settings);
+    if (!st.water_color) st.water_color.emplace(side, side, 1);
+    if (!st.water_depth) st.water_depth.emplace(side, side, 1);
+    st.water->render(ctx, *st.water_color, *st.water_depth, clock);
+  }
   clear_color(ctx, st.color, st.clear);
   clear_depth(ctx, st.depth, 1.0f);  // as the peer: stencil neither cleared nor used
   run_passes(ctx, Framebuffer{&st.color, &st.depth}, st.passes, &clock);

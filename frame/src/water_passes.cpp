@@ -117,8 +117,8 @@ double largest_offset(const scenes::Material& m, const scenes::Texture& normal_m
   return (xy + 0.02) * alpha * amount + blur;
 }
 
-/// The pixels of a width x height frame that `mesh` covers through `vp`, widened by `margin`
-/// pixels: its bounding box's corners projected, the whole frame when one lies behind the eye.
+/// The pixels of a width x height target that `mesh` covers through `vp`, widened by `margin`
+/// pixels: its bounding box's corners projected, the whole target when one lies behind the eye.
 rasterizer::Scissor screen_rectangle(const scenes::Mesh& mesh, const glm::mat4& vp, int width, int height,
                                      const glm::ivec2& margin) {
   rasterizer::Scissor r{true, 0, 0, width, height};
@@ -138,6 +138,20 @@ rasterizer::Scissor screen_rectangle(const scenes::Mesh& mesh, const glm::mat4& 
   r.x1 = clamp_to(std::ceil(max_px.x) + margin.x, width);
   r.y1 = clamp_to(std::ceil(max_px.y) + margin.y, height);
   return r;
+}
+
+/// The texels of a view (a square of water_texture_side) that bilinear lookups
+/// at screen places inside `frame_pixels` (a rectangle of the frame's pixels) can read: the
+/// screen is stretched onto the square, and a lookup at u reads texels floor(u side - 0.5) and
+/// the next.
+rasterizer::Scissor in_view_pixels(const rasterizer::Scissor& frame_pixels, const FrameSettings& settings) {
+  const int side = water_texture_side(settings);
+  auto to_view = [side](int pixel, int frame_size, bool upper) {
+    const double texel = double(pixel) * side / frame_size;
+    return std::clamp(static_cast<int>(upper ? std::ceil(texel) + 1 : std::floor(texel) - 1), 0, side);
+  };
+  return {true, to_view(frame_pixels.x0, settings.width, false), to_view(frame_pixels.y0, settings.height, false),
+          to_view(frame_pixels.x1, settings.width, true), to_view(frame_pixels.y1, settings.height, true)};
 }
 
 /// The smallest rectangle holding both.
@@ -212,7 +226,8 @@ WaterPasses::WaterPasses(const scenes::Scene& scene, const FrameSettings& settin
     const glm::ivec2 margin(static_cast<int>(std::ceil(offset * settings.width)) + 1,
                             static_cast<int>(std::ceil(offset * settings.height)) + 1);
     (*same)->pixels_read = united((*same)->pixels_read,
-                                  screen_rectangle(mesh, camera_view.view_projection, settings.width, settings.height, margin));
+                                  in_view_pixels(screen_rectangle(mesh, camera_view.view_projection, settings.width, settings.height, margin),
+                                                 settings));
   }
 
   const float scale = camera_view.exposure;
@@ -233,7 +248,7 @@ WaterPasses::WaterPasses(const scenes::Scene& scene, const FrameSettings& settin
       fixed.exposure = WaterReflectionExposure::sdk_fixed;
       v.exposure = water_reflection_scale(scale, HdrType::integer, fixed);  // 0.25 x the frame's
       build(v, plane->reflection);
-      plane->reflection_texture = view_texture(settings.width, settings.height);
+      plane->reflection_texture = view_texture(water_texture_side(settings), water_texture_side(settings));
       plane->reflection_clear = encoded_clear(scene.background, 1.0f);
     }
     // The water's fog: of the first of its materials that is drawn (the SDK's fog volume has one).
@@ -251,7 +266,7 @@ WaterPasses::WaterPasses(const scenes::Scene& scene, const FrameSettings& settin
     v.water_fog = fog;
     v.sky = false;
     build(v, plane->refraction);
-    plane->refraction_texture = view_texture(settings.width, settings.height);
+    plane->refraction_texture = view_texture(water_texture_side(settings), water_texture_side(settings));
     plane->refraction_clear = encoded_clear(fog.color * scale, 1.0f);
   }
 }

@@ -1,9 +1,11 @@
 #pragma once
 // Private: the water's views (issue #14), as viewrender.cpp's CAboveWaterView draws them. For
 // each height at which the scene has water that the camera sees from above, two views of the
-// scene are drawn before the frame, into the frame's own targets (free until the frame starts),
-// and resolved into 8-bit sRGB textures the size of the frame, which the water shader reads
-// (water.hpp, adapter.hpp's WaterPixelShader):
+// scene are drawn before the frame into square one-sample targets (renderer.hpp's
+// water_texture_side: 1024, the SDK's render targets), each over the whole target with the
+// camera's aspect as viewrender.cpp's AdjustView draws them, and copied into 8-bit sRGB textures,
+// which the water shader reads at the pixel's place on screen (water.hpp, adapter.hpp's
+// WaterPixelShader):
 //  - reflection (only when a water material of that height reflects): the scene mirrored about
 //    the water plane, seen from the camera, so that the reflection of what lies along a pixel's
 //    reflected ray lands on that pixel (the SDK flips its camera instead and its vertex shader
@@ -66,8 +68,12 @@ class WaterPasses {
   WaterPasses(WaterPasses&&) noexcept;
   WaterPasses& operator=(WaterPasses&&) noexcept;
 
-  /// Draws every plane's views into `color` and `depth` and resolves each into its texture; each
-  /// view one pass of `clock` ("water reflection", "water refraction").
+  /// Whether any plane is drawn (render has views to draw).
+  bool has_views() const { return !planes_.empty(); }
+
+  /// Draws every plane's views into `color` and `depth`, one-sample targets of
+  /// water_texture_side on a side, and resolves each into its texture; each view
+  /// one pass of `clock` ("water reflection", "water refraction").
   void render(rasterizer::Context& ctx, rasterizer::ColorTarget& color, rasterizer::DepthStencilTarget& depth, PassClock& clock);
 
   /// The water draw of mesh `index` with material `m`, its plane's textures bound; nothing when

@@ -102,9 +102,9 @@ uint64_t fnv1a(const std::vector<uint8_t>& bytes) {
 TEST(FrameDeterminism, CourtyardGoldenHashes) {
   if (rasterizer::simd::kLanes != 8) GTEST_SKIP() << "golden hashes are for 8-lane builds";
   const struct { shading::ShaderModel model; uint64_t hash, without_post; } golden[] = {
-      {shading::ShaderModel::ps_2_0, 0x62243deeca789a07ull, 0xf89c1c491f9832abull},
-      {shading::ShaderModel::ps_2_b, 0x04b57afedb920228ull, 0xdde937decb6c8a8eull},
-      {shading::ShaderModel::ps_3_0, 0x04b57afedb920228ull, 0xdde937decb6c8a8eull},
+      {shading::ShaderModel::ps_2_0, 0x101449198fe42ebdull, 0x3769a8681f3693b2ull},
+      {shading::ShaderModel::ps_2_b, 0xc8737a01cb837a87ull, 0x779dc7ba808d222bull},
+      {shading::ShaderModel::ps_3_0, 0xc8737a01cb837a87ull, 0x779dc7ba808d222bull},
   };
   // ps_2_b and ps_3_0 run the same combos on the courtyard (no combo there needs more than
   // ps_2_b offers), hence the same bytes.

@@ -419,6 +419,59 @@ TEST(Water, ViewsAreDrawnOnlyForVisibleWater) {
   EXPECT_TRUE(std::none_of(uses.begin(), uses.end(), [](const ShaderUse& u) { return u.family == "Water"; }));
 }
 
+TEST(Water, ViewsAreSquareTargetsOfTheirOwnSize) {
+  // The views are drawn into water_texture_size x water_texture_size one-sample targets (the
+  // SDK's 1024 x 1024 render targets), the screen stretched onto them, and read bilinear: across
+  // a row through the post's reflection, the pixels between the black around it and its color
+  // are the blend of its edges' texels. At 1024 texels a side (over 10 per pixel) an edge is at
+  // most one such pixel (the reflection is 4 pixels wide); at 16 (6 pixels a texel across) the
+  // reflection is less than a texel and spreads over a ramp of a dozen pixels.
+  WaterLook look;
+  look.refract_amount = 0.0f;
+  scenes::Scene s = water_scene(look, {0.1f, 0.1f, 0.1f}, {0.1f, 0.1f, 0.1f});
+  const glm::vec3 post(0.8f, 0.3f, 0.1f);
+  add_post(s, post);
+  const int full = srgb8(4.0 * through_srgb8(0.25 * post.r));
+  auto ramp_pixels = [&](int side) {
+    FrameSettings f = settings();
+    f.water_texture_size = side;
+    const rasterizer::Image image = render_frame(s, f);
+    const int y = pixel_of({30, 150, -20}).y;
+    int between = 0, at_full = 0;
+    for (int x = 0; x < kWidth; ++x) {
+      const int r = image.pixel(x, y)[0];
+      if (r > 2 && r < full - 2) ++between;
+      if (std::abs(r - full) <= 2) ++at_full;
+    }
+    if (side >= 64) EXPECT_GT(at_full, 0) << "the reflection's color is reached at " << side << " texels a side";
+    return between;
+  };
+  EXPECT_LE(ramp_pixels(1024), 2);
+  EXPECT_GE(ramp_pixels(16), 6);
+  // The default: the SDK's 1024 from 640 x 480 up, the frame's larger side in a power of two below.
+  FrameSettings f;
+  EXPECT_EQ(water_texture_side(f), 1024) << f.width << "x" << f.height;
+  f.width = 640, f.height = 480;
+  EXPECT_EQ(water_texture_side(f), 1024);
+  f.width = 160, f.height = 90;
+  EXPECT_EQ(water_texture_side(f), 256);
+  f.width = 90, f.height = 300;
+  EXPECT_EQ(water_texture_side(f), 512);
+  f.water_texture_size = 100;
+  EXPECT_EQ(water_texture_side(f), 100);
+
+  for (const int side : {-1, rasterizer::kMaxTargetSize + 1}) {
+    FrameSettings f = settings();
+    f.water_texture_size = side;
+    try {
+      Renderer r(s, f);
+      FAIL() << "water texture size " << side << " was accepted";
+    } catch (const std::invalid_argument& e) {
+      EXPECT_NE(std::string(e.what()).find("water texture size"), std::string::npos) << e.what();
+    }
+  }
+}
+
 TEST(Water, RejectsWaterItCannotDraw) {
   WaterLook look;
   scenes::Scene no_normal = water_scene(look, {0, 0, 0}, {0, 0, 0});

@@ -187,12 +187,24 @@ struct FrameSettings {
   std::optional<scenes::Camera> view = std::nullopt;
   /// Draw what a cube-map capture draws (above): the world and the sky, unfogged.
   bool cubemap_capture = false;
+  /// The side of the water's reflection and refraction targets, square whatever the frame's size:
+  /// each view is drawn over the whole target with the camera's aspect, without multisampling
+  /// (render targets, unlike the back buffer, have none), as viewrender.cpp's AdjustView draws
+  /// them. 1 to kMaxTargetSize, or 0: water_texture_side's choice.
+  int water_texture_size = 0;
   /// Scissor the water's views to what the water can read of them (water_passes.hpp); off, they
-  /// draw the whole frame: slower, and the same bytes (tested), like the rasterizer's fast paths.
+  /// draw the whole target: slower, and the same bytes (tested), like the rasterizer's fast paths.
   bool water_view_scissor = true;
   /// The most bytes a renderer may ask for (Renderer's constructor, scenes/memory_limit.hpp).
   uint64_t memory_limit = scenes::kDefaultMemoryLimit;
 };
+
+/// The side of the water's view targets: FrameSettings::water_texture_size when set, else the
+/// SDK's 1024 (iWaterTextureSize, CBaseClientRenderTargets; tf_water_resolution's default), or
+/// the smallest power of two holding the frame's larger side where that is less: every frame of
+/// 640 x 480 or more (all the engine drew) gets the engine's targets, a thumbnail does not pay
+/// for a million texels a view.
+int water_texture_side(const FrameSettings& settings);
 
 /// A model's lighting in the last frame, after the time averaging (above), before a material's
 /// folding and hero boost.
