@@ -30,8 +30,9 @@
 //    at which the camera sees water, a reflection view (the scene mirrored about the water plane,
 //    what lies below it clipped, at 0.25 x the frame's tone-map scale, SOURCE_FACTS §6.4) and a
 //    refraction view (what lies below the plane, in the water's height fog, whose factor opaque
-//    materials write to alpha: the water's depth) are drawn into the frame's targets and
-//    resolved into 8-bit textures the size of the frame; the water surface then reads them,
+//    materials write to alpha: the water's depth) are drawn into square one-sample targets
+//    (water_texture_side: the SDK's 1024 x 1024) and copied into 8-bit textures; the water
+//    surface then reads them at the pixel's place on screen,
 //    distorted by its normal map (scrolling with the scene's clock), blended
 //    by Fresnel, its reflect tint x 4; the refraction blurred (25 taps) where the material asks
 //    ($blurrefract) and the model has the combo (ps_2_b, ps_3_0). Reflection only when the
@@ -256,8 +257,9 @@ class Renderer {
   /// Before anything is allocated, what the renderer will hold is estimated and refused beyond
   /// FrameSettings::memory_limit with scenes::MemoryLimitError naming the scene: the scene's
   /// meshes and textures, the textures' uploaded copies with their mips, the color, depth and
-  /// stencil targets in whole tiles at the frame's samples (9 bytes a sample) and four 8-bit
-  /// images the size of the frame (the resolved image, the water's two views, a post pass).
+  /// stencil targets in whole tiles at the frame's samples (9 bytes a sample), two 8-bit images
+  /// the size of the frame (the resolved image, a post pass), and the water's one-sample targets
+  /// with their resolved image and two textures (water_texture_side on a side).
   Renderer(const scenes::Scene& scene, const FrameSettings& settings, std::shared_ptr<const SceneTextures> textures = nullptr);
   /// A temporary scene would be gone before the first frame reads it.
   Renderer(scenes::Scene&& scene, const FrameSettings& settings, std::shared_ptr<const SceneTextures> textures = nullptr) = delete;
