@@ -177,6 +177,15 @@ void add_post(scenes::Scene& s, const glm::vec3& linear) {
   s.meshes.push_back(quad({20, 150, 10}, {20, 0, 0}, {0, 0, 20}, m, "post"));
 }
 
+/// Reflect-only water (refract amount 0) over dark floors, and the post in `post`'s color.
+scenes::Scene reflecting_a_post(const glm::vec3& post) {
+  WaterLook look;
+  look.refract_amount = 0.0f;
+  scenes::Scene s = water_scene(look, {0.1f, 0.1f, 0.1f}, {0.1f, 0.1f, 0.1f});
+  add_post(s, post);
+  return s;
+}
+
 FrameSettings settings(float exposure = 1.0f) {
   FrameSettings f;
   f.width = kWidth;
@@ -199,11 +208,8 @@ void expect_pixel(const rasterizer::Image& image, const Pixel& p, const double (
 TEST(Water, ReflectsWhatIsAboveItAtTheMirroredPlace) {
   // Reflect-only water (refract amount 0): the water shows the reflection x tint x 4, the
   // reflection view holding 0.25 x the radiance. The post's mirror image is at z -> -z.
-  WaterLook look;
-  look.refract_amount = 0.0f;
-  scenes::Scene s = water_scene(look, {0.1f, 0.1f, 0.1f}, {0.1f, 0.1f, 0.1f});
   const glm::vec3 post(0.8f, 0.3f, 0.1f);
-  add_post(s, post);
+  const scenes::Scene s = reflecting_a_post(post);
   const rasterizer::Image image = render_frame(s, settings());
   double reflected[3];
   for (int c = 0; c < 3; ++c) reflected[c] = 4.0 * through_srgb8(0.25 * post[c]);
@@ -426,11 +432,8 @@ TEST(Water, ViewsAreSquareTargetsOfTheirOwnSize) {
   // are the blend of its edges' texels. At 1024 texels a side (over 10 per pixel) an edge is at
   // most one such pixel (the reflection is 4 pixels wide); at 16 (6 pixels a texel across) the
   // reflection is less than a texel and spreads over a ramp of a dozen pixels.
-  WaterLook look;
-  look.refract_amount = 0.0f;
-  scenes::Scene s = water_scene(look, {0.1f, 0.1f, 0.1f}, {0.1f, 0.1f, 0.1f});
   const glm::vec3 post(0.8f, 0.3f, 0.1f);
-  add_post(s, post);
+  const scenes::Scene s = reflecting_a_post(post);
   const int full = srgb8(4.0 * through_srgb8(0.25 * post.r));
   auto ramp_pixels = [&](int side) {
     FrameSettings f = settings();
