@@ -186,8 +186,12 @@ struct FrameState {
   };
   std::vector<std::unique_ptr<SkyQuads>> sky_quads;  // per view
   std::optional<WaterPasses> water;
-  std::optional<ColorTarget> water_color;  ///< the water's views' targets, made for the first
-  std::optional<DepthStencilTarget> water_depth;
+  struct WaterTargets {
+    explicit WaterTargets(int side) : color(side, side, 1), depth(side, side, 1) {}
+    ColorTarget color;
+    DepthStencilTarget depth;
+  };
+  std::optional<WaterTargets> water_targets;  ///< the water's views', made at the first frame with water
   PassList passes;                                   // the camera's view
   Image image;
   DrawStats stats;
@@ -750,10 +754,8 @@ void Renderer::render(Context& ctx) {
   // After the clock moved: the views' draws made anew on the CPU (a sequence pays it per frame).
   if (!st.views_current) clock.run("views", 0, [&] { build_views(st); });
   if (st.water && st.water->has_views()) {  // the water's views first: its draws read them
-    const int side = water_texture_side(st.settings);
-    if (!st.water_color) st.water_color.emplace(side, side, 1);
-    if (!st.water_depth) st.water_depth.emplace(side, side, 1);
-    st.water->render(ctx, *st.water_color, *st.water_depth, clock);
+    if (!st.water_targets) st.water_targets.emplace(water_texture_side(st.settings));
+    st.water->render(ctx, st.water_targets->color, st.water_targets->depth, clock);
   }
   clear_color(ctx, st.color, st.clear);
   clear_depth(ctx, st.depth, 1.0f);  // as the peer: stencil neither cleared nor used

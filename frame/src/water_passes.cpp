@@ -175,8 +175,8 @@ WaterMaterial water_material(const scenes::Material& m) {
 
 /// A view's target as a texture: 8-bit sRGB, one level, read bilinear and clamped (the distorted
 /// lookups near the screen's edges).
-GpuTexture view_texture(int width, int height) {
-  GpuTexture t{rasterizer::Texture::create_2d(width, height, rasterizer::TextureFormat::RGBA8_sRGB, 1), {}};
+GpuTexture view_texture(int side) {
+  GpuTexture t{rasterizer::Texture::create_2d(side, side, rasterizer::TextureFormat::RGBA8_sRGB, 1), {}};
   t.sampler.mip = rasterizer::MipFilter::None;
   t.sampler.u = t.sampler.v = rasterizer::Address::Clamp;
   return t;
@@ -248,7 +248,7 @@ WaterPasses::WaterPasses(const scenes::Scene& scene, const FrameSettings& settin
       fixed.exposure = WaterReflectionExposure::sdk_fixed;
       v.exposure = water_reflection_scale(scale, HdrType::integer, fixed);  // 0.25 x the frame's
       build(v, plane->reflection);
-      plane->reflection_texture = view_texture(water_texture_side(settings), water_texture_side(settings));
+      plane->reflection_texture = view_texture(water_texture_side(settings));
       plane->reflection_clear = encoded_clear(scene.background, 1.0f);
     }
     // The water's fog: of the first of its materials that is drawn (the SDK's fog volume has one).
@@ -266,7 +266,7 @@ WaterPasses::WaterPasses(const scenes::Scene& scene, const FrameSettings& settin
     v.water_fog = fog;
     v.sky = false;
     build(v, plane->refraction);
-    plane->refraction_texture = view_texture(water_texture_side(settings), water_texture_side(settings));
+    plane->refraction_texture = view_texture(water_texture_side(settings));
     plane->refraction_clear = encoded_clear(fog.color * scale, 1.0f);
   }
 }

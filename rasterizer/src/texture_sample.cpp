@@ -354,7 +354,8 @@ Float4 filter_volume(const Context& ctx, const Level& g, Filter filter, const Fl
   const LinearAxis y = linear_axis(v, g.height, g.fheight, s.v);
   const LinearAxis z = linear_axis(w, g.depth, g.fdepth, s.w);
   auto filter_slice = [&](const Int& k, const IntMask& out_z) {
-    const Int row0 = k * slice + row_start(y.i0, g.width), row1 = k * slice + row_start(y.i1, g.width);
+    const Int plane = k * slice;
+    const Int row0 = plane + row_start(y.i0, g.width), row1 = plane + row_start(y.i1, g.width);
     Float4 t00 = Format::fetch(ctx.words, word_index<Format>(g.offset, row0 + x.i0));
     Float4 t10 = Format::fetch(ctx.words, word_index<Format>(g.offset, row0 + x.i1));
     Float4 t01 = Format::fetch(ctx.words, word_index<Format>(g.offset, row1 + x.i0));
