@@ -10,8 +10,9 @@
 
 namespace luxel::frame {
 
-/// Sanitizer and unoptimized builds render fewer and smaller frames.
-#if defined(__SANITIZE_ADDRESS__) || !defined(__OPTIMIZE__)
+/// Sanitizer (ASan and TSan: LUXEL_SANITIZE_BUILD) and unoptimized builds render fewer and smaller
+/// frames.
+#if defined(LUXEL_SANITIZE_BUILD) || !defined(__OPTIMIZE__)
 inline constexpr bool kReduced = true;
 #else
 inline constexpr bool kReduced = false;

@@ -34,8 +34,8 @@ namespace luxel::rasterizer::test {
 
 // --- Budget ------------------------------------------------------------------------------------
 
-/// Sanitizer and unoptimized builds run fewer and smaller cases.
-#if defined(__SANITIZE_ADDRESS__) || !defined(__OPTIMIZE__)
+/// Sanitizer (ASan and TSan: LUXEL_SANITIZE_BUILD) and unoptimized builds run fewer and smaller cases.
+#if defined(LUXEL_SANITIZE_BUILD) || !defined(__OPTIMIZE__)
 inline constexpr bool kReducedRun = true;
 #else
 inline constexpr bool kReducedRun = false;
