@@ -394,14 +394,21 @@ constexpr EdgeTarget kCubeEdges[6][4] = {
     {{0, kLast, kAlong}, {1, kFirst, kAlong}, {2, kAlongFlipped, kFirst}, {3, kAlongFlipped, kLast}},    // -Z
 };
 
-inline int edge_coordinate(EdgeCode code, int along, int n) {
-  switch (code) {
-    case kFirst: return 0;
-    case kLast: return n - 1;
-    case kAlong: return along;
-    case kAlongFlipped: return n - 1 - along;
-  }
-  return 0;
+/// kCubeEdges as one word per [face][edge] (face | i << 8 | j << 16), for lane gathers.
+constexpr std::array<int32_t, 24> kCubeEdgeWords = [] {
+  std::array<int32_t, 24> words{};
+  for (int face = 0; face < 6; ++face)
+    for (int edge = 0; edge < 4; ++edge) {
+      const EdgeTarget& to = kCubeEdges[face][edge];
+      words[size_t(face * 4 + edge)] = to.face | int32_t(to.i) << 8 | int32_t(to.j) << 16;
+    }
+  return words;
+}();
+
+/// A coordinate on the face across an edge, from its code (`last` = n - 1).
+LUXEL_INLINE Int edge_coordinate(const Int& code, const Int& along, const Int& last) {
+  return xsimd::select(code == Int(kFirst), Int(0),
+                       xsimd::select(code == Int(kLast), last, xsimd::select(code == Int(kAlong), along, last - along)));
 }
 
 /// Per-lane face, u, v of cube directions (see texture.hpp for the rules).
@@ -459,38 +466,28 @@ Float4 filter_cube(const Context& ctx, const Level& g, Filter filter, const Cube
   bool any_corner = false;
   IntMask corner[4] = {IntMask(false), IntMask(false), IntMask(false), IntMask(false)};
   if (xsimd::any(leaves_face)) {
-    // Rare (lanes within half a texel of an edge): fix those lanes' texels one by one.
-    alignas(64) int32_t face[kLanes], n[kLanes], offset[kLanes], ii[2][kLanes], jj[2][kLanes];
-    alignas(64) int32_t idx[4][kLanes], is_corner[4][kLanes] = {};
-    c.face.store_aligned(face);
-    g.width.store_aligned(n);
-    g.offset.store_aligned(offset);
-    i0.store_aligned(ii[0]);
-    i1.store_aligned(ii[1]);
-    j0.store_aligned(jj[0]);
-    j1.store_aligned(jj[1]);
-    for (int k = 0; k < 4; ++k) index[k].store_aligned(idx[k]);
-    for (simd::LaneBits bits = simd::to_bits(leaves_face); bits; bits &= bits - 1) {
-      const int l = __builtin_ctz(bits);
-      for (int k = 0; k < 4; ++k) {
-        const int i = ii[k & 1][l], j = jj[k >> 1][l], size = n[l];
-        const bool off_i = i < 0 || i >= size, off_j = j < 0 || j >= size;
-        if (off_i && off_j) {
-          is_corner[k][l] = -1;  // its index (clamped, in the face) is read and then replaced
-          any_corner = true;
-        } else if (off_i || off_j) {
-          const int edge = off_i ? (i < 0 ? 0 : 1) : (j < 0 ? 2 : 3);
-          const EdgeTarget& to = kCubeEdges[face[l]][edge];
-          const int along = off_i ? j : i;
-          const int ti = edge_coordinate(to.i, along, size), tj = edge_coordinate(to.j, along, size);
-          idx[k][l] = to.face * face_words + offset[l] + (tj * size + ti) * Format::kWords;
-        }
-      }
-    }
+    // Lanes within half a texel of an edge (at the smallest levels, most lanes): a texel one step
+    // past an edge is read on the face across it; one past a corner (past both) is replaced
+    // below. In lanes, not lane by lane: at levels a few texels wide the lanes' branches would
+    // be unpredictable.
+    const Int face_of_edges = c.face + c.face + c.face + c.face;  // the first of c.face's four edges
     for (int k = 0; k < 4; ++k) {
-      index[k] = Int::load_aligned(idx[k]);
-      if (any_corner) corner[k] = Int::load_aligned(is_corner[k]) != zero;
+      const Int& i = (k & 1) ? i1 : i0;
+      const Int& j = (k >> 1) ? j1 : j0;
+      const IntMask off_i = (i < zero) | (i > last), off_j = (j < zero) | (j > last);
+      corner[k] = off_i & off_j;
+      // Off on one axis only. (Not off_i ^ off_j: xsimd 8.1 computes a ^ of AVX-512 masks as |.)
+      const IntMask across = (off_i | off_j) & !corner[k];
+      if (!xsimd::any(across)) continue;
+      const Int edge = xsimd::select(off_i, xsimd::select(i < zero, Int(0), Int(1)), xsimd::select(j < zero, Int(2), Int(3)));
+      const Int along = xsimd::select(off_i, j, i);
+      const Int to = gather(kCubeEdgeWords.data(), face_of_edges + edge);
+      const Int byte(0xff);
+      const Int ti = edge_coordinate((to >> 8) & byte, along, last), tj = edge_coordinate(to >> 16, along, last);
+      const Int moved = word_index<Format>((to & byte) * Int(face_words) + g.offset, row_start(tj, g.width) + ti);
+      index[k] = xsimd::select(across, moved, index[k]);
     }
+    any_corner = xsimd::any(corner[0] | corner[1] | corner[2] | corner[3]);
   }
   Float4 t[4];
   for (int k = 0; k < 4; ++k) t[k] = Format::fetch(ctx.words, index[k]);
