@@ -22,8 +22,8 @@ namespace luxel::cli {
 
 namespace {
 
-constexpr int kFrames = 60;
-constexpr float kFps = 30.0f;
+constexpr int kExposureFrames = 60;
+constexpr float kExposureFps = 30.0f;
 constexpr int kLatencies[] = {1, 2, 3, 4};
 
 struct Count {
@@ -60,8 +60,8 @@ SectionResult run_exposure(const ReportSettings& s) {
         return out;
       }
       std::vector<double> stops, ms;
-      for (int n = 0; n < kFrames; ++n) {
-        if (n > 0) renderer->set_time(float(n) / kFps);
+      for (int n = 0; n < kExposureFrames; ++n) {
+        if (n > 0) renderer->set_time(float(n) / kExposureFps);
         const float drawn = renderer->exposure();
         const auto start = std::chrono::steady_clock::now();
         renderer->render(*scene.ctx);
@@ -78,14 +78,14 @@ SectionResult run_exposure(const ReportSettings& s) {
       }
       const std::string label = std::string(count.count == postfx::HistogramCount::direct_query ? "direct" : "stencil") +
                                 ", " + std::to_string(latency);
-      out.rows.push_back({scene.name, scene.resolution() + ", " + std::to_string(kFrames) + " frames", count.name, label,
+      out.rows.push_back({scene.name, scene.resolution() + ", " + std::to_string(kExposureFrames) + " frames", count.name, label,
                           "the target of each frame's exact histogram (postfx::exact_target: every bucket counted from the "
                           "frame drawn, with no query latency)",
                           {double(latency), median_of_sorted(ms), max, sum / double(stops.size()),
                            late / double(stops.size() - stops.size() / 2)}});
     }
   }
-  out.notes.push_back("Frames 0 to " + std::to_string(kFrames - 1) + " at " + std::to_string(int(kFps)) + " fps" +
+  out.notes.push_back("Frames 0 to " + std::to_string(kExposureFrames - 1) + " at " + std::to_string(int(kExposureFps)) + " fps" +
                       (path ? " along the scene's camera path" : " from its first camera") +
                       ", the shaders' pixels (no bloom, no color correction), each drawn with the exposure the frames "
                       "before it chose; the histogram's region, buckets and target rule are the scene's.");
