@@ -262,6 +262,16 @@ Texture Texture::create(const TextureDesc& desc) {
   }
   t.face_words_ = static_cast<int32_t>(offset);
   t.words_.assign(static_cast<size_t>(total), 0u);
+  if (t.kind_ == TextureKind::Cube) {
+    int64_t bordered = 0;
+    for (int l = 0; l < t.levels_; ++l) {
+      t.cube_level_offset_[l] = static_cast<int32_t>(bordered);
+      bordered += static_cast<int64_t>(t.width(l) + 2) * (t.width(l) + 2) * t.words_per_texel_;
+    }
+    if (bordered * t.faces() > INT32_MAX) invalid("a " + size_text(desc) + " cube needs more than 8 GiB to sample");
+    t.cube_face_words_ = static_cast<int32_t>(bordered);
+    t.cube_words_.assign(static_cast<size_t>(bordered * t.faces()), 0u);
+  }
   return t;
 }
 
@@ -300,22 +310,23 @@ std::span<const uint8_t> Texture::level_bytes(int level, int face) const {
   return {reinterpret_cast<const uint8_t*>(first), level_words(level) * sizeof(uint32_t)};
 }
 
-std::span<uint8_t> Texture::level_bytes(int level, int face) {
-  const auto bytes = static_cast<const Texture&>(*this).level_bytes(level, face);
+std::span<uint8_t> Texture::level_span(int level, int face) {
+  const auto bytes = level_bytes(level, face);
   return {const_cast<uint8_t*>(bytes.data()), bytes.size()};
 }
 
 void Texture::upload(int level, std::span<const uint8_t> bytes, int face) {
-  const auto destination = level_bytes(level, face);
+  const auto destination = level_span(level, face);
   if (bytes.size() != destination.size()) {
     invalid("level " + std::to_string(level) + " takes " + std::to_string(destination.size()) +
             " bytes, not " + std::to_string(bytes.size()));
   }
   std::memcpy(destination.data(), bytes.data(), bytes.size());
+  refresh_cube_copy(level, face);
 }
 
 void Texture::upload(int level, std::span<const glm::vec4> texels, int face) {
-  const auto destination = level_bytes(level, face);
+  const auto destination = level_span(level, face);
   const size_t texel_bytes = static_cast<size_t>(bytes_per_texel(format_));
   if (texels.size() * texel_bytes != destination.size()) {
     invalid("level " + std::to_string(level) + " takes " + std::to_string(destination.size() / texel_bytes) +
@@ -323,6 +334,65 @@ void Texture::upload(int level, std::span<const glm::vec4> texels, int face) {
   }
   for (size_t i = 0; i < texels.size(); ++i) {
     encode_texel(format_, glm::dvec4(texels[i]), destination.data() + i * texel_bytes);
+  }
+  refresh_cube_copy(level, face);
+}
+
+// --- The cube maps' sampling copy -------------------------------------------------------------
+
+namespace {
+
+/// Where a texel one step past an edge of a face is read: on face `face`, at column `i` and row
+/// `j` given as codes: kFirst (0), kLast (n - 1), kAlong (the texel's position along the edge),
+/// kAlongFlipped (n - 1 - that). Derived from the face bases in texture.hpp by folding the
+/// overhanging texel onto the neighbouring face (it agrees entry by entry with llvmpipe's
+/// lp_build_cube_new_coords); texture_reference.cpp reaches the same texels by ray casting, and
+/// the tests hold the two together.
+enum EdgeCode : uint8_t { kFirst, kLast, kAlong, kAlongFlipped };
+struct EdgeTarget {
+  uint8_t face;
+  EdgeCode i, j;
+};
+// [face][edge], edges: 0 = left (i < 0), 1 = right (i >= n), 2 = top (j < 0), 3 = bottom (j >= n).
+constexpr EdgeTarget kCubeEdges[6][4] = {
+    {{4, kLast, kAlong}, {5, kFirst, kAlong}, {2, kLast, kAlongFlipped}, {3, kLast, kAlong}},            // +X
+    {{5, kLast, kAlong}, {4, kFirst, kAlong}, {2, kFirst, kAlong}, {3, kFirst, kAlongFlipped}},          // -X
+    {{1, kAlong, kFirst}, {0, kAlongFlipped, kFirst}, {5, kAlongFlipped, kFirst}, {4, kAlong, kFirst}},  // +Y
+    {{1, kAlongFlipped, kLast}, {0, kAlong, kLast}, {4, kAlong, kLast}, {5, kAlongFlipped, kLast}},      // -Y
+    {{1, kLast, kAlong}, {0, kFirst, kAlong}, {2, kAlong, kLast}, {3, kAlong, kFirst}},                  // +Z
+    {{0, kLast, kAlong}, {1, kFirst, kAlong}, {2, kAlongFlipped, kFirst}, {3, kAlongFlipped, kLast}},    // -Z
+};
+
+int edge_coordinate(EdgeCode code, int along, int n) {
+  switch (code) {
+    case kFirst: return 0;
+    case kLast: return n - 1;
+    case kAlong: return along;
+    case kAlongFlipped: return n - 1 - along;
+  }
+  return 0;
+}
+
+}  // namespace
+
+void Texture::refresh_cube_copy(int level, int changed_face) {
+  if (kind_ != TextureKind::Cube) return;
+  const int n = width(level), stride = n + 2, w = words_per_texel_;
+  auto texel = [&](int face, int i, int j) { return words_.data() + face * face_words_ + level_offset_[level] + (j * n + i) * w; };
+  for (int face = 0; face < 6; ++face) {
+    uint32_t* copy = cube_words_.data() + face * cube_face_words_ + cube_level_offset_[level];
+    if (changed_face < 0 || face == changed_face)
+      for (int j = 0; j < n; ++j) std::memcpy(copy + ((j + 1) * stride + 1) * w, texel(face, 0, j), size_t(n) * w * 4);
+    // The border, of every face (any may show the changed one); its corners stay 0, as the
+    // filter computes the texels past a corner.
+    for (int edge = 0; edge < 4; ++edge) {
+      const EdgeTarget& to = kCubeEdges[face][edge];
+      for (int along = 0; along < n; ++along) {
+        const int x = edge == 0 ? -1 : edge == 1 ? n : along, y = edge == 2 ? -1 : edge == 3 ? n : along;
+        std::memcpy(copy + ((y + 1) * stride + x + 1) * w,
+                    texel(to.face, edge_coordinate(to.i, along, n), edge_coordinate(to.j, along, n)), size_t(w) * 4);
+      }
+    }
   }
 }
 
@@ -393,7 +463,7 @@ void Texture::generate_mips() {
   for (int face = 0; face < faces(); ++face) {
     for (int level = 1; level < levels_; ++level) {
       const auto source = level_bytes(level - 1, face);
-      const auto destination = level_bytes(level, face);
+      const auto destination = level_span(level, face);
       const int sw = width(level - 1), sh = height(level - 1), sd = depth(level - 1);
       const int dw = width(level), dh = height(level), dd = depth(level);
       taps_x.resize(dw);
@@ -424,6 +494,7 @@ void Texture::generate_mips() {
       }
     }
   }
+  for (int level = 1; level < levels_; ++level) refresh_cube_copy(level, -1);
 }
 
 }  // namespace luxel::rasterizer

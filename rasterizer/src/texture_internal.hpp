@@ -21,6 +21,10 @@ struct TextureAccess {
   static int words_per_texel(const Texture& t) { return t.words_per_texel_; }
   static int32_t face_words(const Texture& t) { return t.face_words_; }
   static const std::array<int32_t, kMaxMipLevels>& level_offsets(const Texture& t) { return t.level_offset_; }
+  /// A cube map's sampling copy, its levels bordered by their neighbours' texels (Texture).
+  static const uint32_t* cube_words(const Texture& t) { return t.cube_words_.data(); }
+  static int32_t cube_face_words(const Texture& t) { return t.cube_face_words_; }
+  static const std::array<int32_t, kMaxMipLevels>& cube_level_offsets(const Texture& t) { return t.cube_level_offset_; }
 };
 
 namespace texture_detail {

@@ -8,8 +8,9 @@
 // is exactly c / (2^n - 1).
 //
 // Level geometry is taken per lane (levels differ between quads in trilinear stamps), with a fast
-// case when the whole stamp reads one level. Cube footprints that leave a face (only lanes within
-// half a texel of an edge) are fixed up lane by lane from a table of the 24 face edges.
+// case when the whole stamp reads one level. Cube maps are read from their bordered copy
+// (Texture), where a footprint straddling a face's edge finds the texels across it in the border;
+// only texels past a corner are computed here.
 
 #include "luxel/rasterizer/texture.hpp"
 
@@ -196,7 +197,7 @@ struct Level {
   Int offset;  ///< first word of the level within a face
 };
 
-LUXEL_INLINE Level level_geometry(const Texture& t, const Int& level) {
+LUXEL_INLINE Level level_geometry(const Texture& t, const std::array<int32_t, kMaxMipLevels>& offsets, const Int& level) {
 #if defined(__SANITIZE_ADDRESS__)
   // The level table is an array inside the Texture: AddressSanitizer cannot see a read past its
   // end (it lands on the next member or padding), so sanitizer builds check the levels here.
@@ -212,13 +213,13 @@ LUXEL_INLINE Level level_geometry(const Texture& t, const Int& level) {
     g.width = Int(t.width(l[0]));
     g.height = Int(t.height(l[0]));
     g.depth = Int(t.depth(l[0]));
-    g.offset = Int(TextureAccess::level_offsets(t)[l[0]]);
+    g.offset = Int(offsets[l[0]]);
   } else {
     const Int one(1);
     g.width = xsimd::max(Int(t.width()) >> level, one);
     g.height = xsimd::max(Int(t.height()) >> level, one);
     g.depth = xsimd::max(Int(t.depth()) >> level, one);
-    g.offset = simd::gather(TextureAccess::level_offsets(t).data(), level);
+    g.offset = simd::gather(offsets.data(), level);
   }
   g.fwidth = to_float(g.width);
   g.fheight = to_float(g.height);
@@ -373,44 +374,6 @@ Float4 filter_volume(const Context& ctx, const Level& g, Filter filter, const Fl
 
 // --- Cube maps --------------------------------------------------------------------------------
 
-/// Where a texel one step past an edge of a face is read: on face `face`, at column `i` and row
-/// `j` given as codes: kFirst (0), kLast (n - 1), kAlong (the texel's position along the edge),
-/// kAlongFlipped (n - 1 - that). Derived from the face bases in texture.hpp by folding the
-/// overhanging texel onto the neighbouring face (it agrees entry by entry with llvmpipe's
-/// lp_build_cube_new_coords); texture_reference.cpp reaches the same texels by ray casting, and
-/// the tests hold the two together.
-enum EdgeCode : uint8_t { kFirst, kLast, kAlong, kAlongFlipped };
-struct EdgeTarget {
-  uint8_t face;
-  EdgeCode i, j;
-};
-// [face][edge], edges: 0 = left (i < 0), 1 = right (i >= n), 2 = top (j < 0), 3 = bottom (j >= n).
-constexpr EdgeTarget kCubeEdges[6][4] = {
-    {{4, kLast, kAlong}, {5, kFirst, kAlong}, {2, kLast, kAlongFlipped}, {3, kLast, kAlong}},            // +X
-    {{5, kLast, kAlong}, {4, kFirst, kAlong}, {2, kFirst, kAlong}, {3, kFirst, kAlongFlipped}},          // -X
-    {{1, kAlong, kFirst}, {0, kAlongFlipped, kFirst}, {5, kAlongFlipped, kFirst}, {4, kAlong, kFirst}},  // +Y
-    {{1, kAlongFlipped, kLast}, {0, kAlong, kLast}, {4, kAlong, kLast}, {5, kAlongFlipped, kLast}},      // -Y
-    {{1, kLast, kAlong}, {0, kFirst, kAlong}, {2, kAlong, kLast}, {3, kAlong, kFirst}},                  // +Z
-    {{0, kLast, kAlong}, {1, kFirst, kAlong}, {2, kAlongFlipped, kFirst}, {3, kAlongFlipped, kLast}},    // -Z
-};
-
-/// kCubeEdges as one word per [face][edge] (face | i << 8 | j << 16), for lane gathers.
-constexpr std::array<int32_t, 24> kCubeEdgeWords = [] {
-  std::array<int32_t, 24> words{};
-  for (int face = 0; face < 6; ++face)
-    for (int edge = 0; edge < 4; ++edge) {
-      const EdgeTarget& to = kCubeEdges[face][edge];
-      words[size_t(face * 4 + edge)] = to.face | int32_t(to.i) << 8 | int32_t(to.j) << 16;
-    }
-  return words;
-}();
-
-/// A coordinate on the face across an edge, from its code (`last` = n - 1).
-LUXEL_INLINE Int edge_coordinate(const Int& code, const Int& along, const Int& last) {
-  return xsimd::select(code == Int(kFirst), Int(0),
-                       xsimd::select(code == Int(kLast), last, xsimd::select(code == Int(kAlong), along, last - along)));
-}
-
 /// Per-lane face, u, v of cube directions (see texture.hpp for the rules).
 struct CubeCoords {
   Int face;
@@ -443,56 +406,33 @@ LUXEL_INLINE CubeCoords project_to_faces(const TexCoord& d) {
 
 template <class Format>
 Float4 filter_cube(const Context& ctx, const Level& g, Filter filter, const CubeCoords& c) {
-  const int32_t face_words = TextureAccess::face_words(ctx.texture);
+  // The sampling copy (Texture): face levels n texels wide are stored n + 2 wide, texel (i, j) of
+  // the face at (i + 1, j + 1), bordered by the texels across its edges. g.offset is the level's
+  // offset in that copy.
+  const int32_t face_words = TextureAccess::cube_face_words(ctx.texture);
   const Int face_offset = c.face * Int(face_words) + g.offset;
-  const Int last = g.width - Int(1);
+  const Int one(1), stride = g.width + Int(2), last = g.width - one;
   if (filter == Filter::Point) {
-    const Int i = xsimd::min(to_int(xsimd::floor(c.u * g.fwidth)), last);
-    const Int j = xsimd::min(to_int(xsimd::floor(c.v * g.fwidth)), last);
-    return Format::fetch(ctx.words, word_index<Format>(face_offset, row_start(j, g.width) + i));
+    const Int i = xsimd::min(to_int(xsimd::floor(c.u * g.fwidth)), last) + one;
+    const Int j = xsimd::min(to_int(xsimd::floor(c.v * g.fwidth)), last) + one;
+    return Format::fetch(ctx.words, word_index<Format>(face_offset, row_start(j, stride) + i));
   }
+  // u and v lie in [0, 1] (project_to_faces), so i0 and j0 lie in [-1, n - 1]: within the border.
   const Float x = c.u * g.fwidth - Float(0.5f), y = c.v * g.fwidth - Float(0.5f);
   const Float fx = xsimd::floor(x), fy = xsimd::floor(y);
   const Float wx = x - fx, wy = y - fy;
-  const Int i0 = to_int(fx), j0 = to_int(fy), i1 = i0 + Int(1), j1 = j0 + Int(1);
-  const Int zero(0);
-  const Int ci0 = xsimd::max(i0, zero), ci1 = xsimd::min(i1, last);
-  const Int cj0 = xsimd::max(j0, zero), cj1 = xsimd::min(j1, last);
+  const Int i0 = to_int(fx), j0 = to_int(fy);
   // Slots 0..3: texels (i0, j0), (i1, j0), (i0, j1), (i1, j1).
-  const Int row0 = row_start(cj0, g.width), row1 = row_start(cj1, g.width);
-  Int index[4] = {word_index<Format>(face_offset, row0 + ci0), word_index<Format>(face_offset, row0 + ci1),
-                  word_index<Format>(face_offset, row1 + ci0), word_index<Format>(face_offset, row1 + ci1)};
-  const IntMask leaves_face = (i0 < zero) | (i1 > last) | (j0 < zero) | (j1 > last);
-  bool any_corner = false;
-  IntMask corner[4] = {IntMask(false), IntMask(false), IntMask(false), IntMask(false)};
-  if (xsimd::any(leaves_face)) {
-    // Lanes within half a texel of an edge (at the smallest levels, most lanes): a texel one step
-    // past an edge is read on the face across it; one past a corner (past both) is replaced
-    // below. In lanes, not lane by lane: at levels a few texels wide the lanes' branches would
-    // be unpredictable.
-    const Int face_of_edges = c.face + c.face + c.face + c.face;  // the first of c.face's four edges
-    for (int k = 0; k < 4; ++k) {
-      const Int& i = (k & 1) ? i1 : i0;
-      const Int& j = (k >> 1) ? j1 : j0;
-      const IntMask off_i = (i < zero) | (i > last), off_j = (j < zero) | (j > last);
-      corner[k] = off_i & off_j;
-      // Off on one axis only. (Not off_i ^ off_j: xsimd 8.1 computes a ^ of AVX-512 masks as |.)
-      const IntMask across = (off_i | off_j) & !corner[k];
-      if (!xsimd::any(across)) continue;
-      const Int edge = xsimd::select(off_i, xsimd::select(i < zero, Int(0), Int(1)), xsimd::select(j < zero, Int(2), Int(3)));
-      const Int along = xsimd::select(off_i, j, i);
-      const Int to = gather(kCubeEdgeWords.data(), face_of_edges + edge);
-      const Int byte(0xff);
-      const Int ti = edge_coordinate((to >> 8) & byte, along, last), tj = edge_coordinate(to >> 16, along, last);
-      const Int moved = word_index<Format>((to & byte) * Int(face_words) + g.offset, row_start(tj, g.width) + ti);
-      index[k] = xsimd::select(across, moved, index[k]);
-    }
-    any_corner = xsimd::any(corner[0] | corner[1] | corner[2] | corner[3]);
-  }
+  const Int row0 = row_start(j0 + one, stride) + i0 + one, row1 = row0 + stride;
+  const Int index[4] = {word_index<Format>(face_offset, row0), word_index<Format>(face_offset, row0 + one),
+                        word_index<Format>(face_offset, row1), word_index<Format>(face_offset, row1 + one)};
   Float4 t[4];
   for (int k = 0; k < 4; ++k) t[k] = Format::fetch(ctx.words, index[k]);
-  if (any_corner) {
-    // The texel past a cube corner is the mean of the footprint's other three.
+  // A texel past a cube corner (past two edges) is the mean of the footprint's other three.
+  const Int zero(0);
+  const IntMask before_i = i0 < zero, after_i = i0 >= last, before_j = j0 < zero, after_j = j0 >= last;
+  const IntMask corner[4] = {before_i & before_j, after_i & before_j, before_i & after_j, after_i & after_j};
+  if (xsimd::any(corner[0] | corner[1] | corner[2] | corner[3])) {
     const Float third(3.0f);
     Float4 fixed[4];
     for (int k = 0; k < 4; ++k) {
@@ -515,7 +455,9 @@ struct Prepared {
 
 template <class Format, TextureKind Kind>
 Float4 filter_level(const Context& ctx, const Int& level, Filter filter, const Prepared& p) {
-  const Level g = level_geometry(ctx.texture, level);
+  const Level g = level_geometry(
+      ctx.texture,
+      Kind == TextureKind::Cube ? TextureAccess::cube_level_offsets(ctx.texture) : TextureAccess::level_offsets(ctx.texture), level);
   if constexpr (Kind == TextureKind::Cube) {
     return filter_cube<Format>(ctx, g, filter, p.cube);
   } else if constexpr (Kind == TextureKind::Volume) {
@@ -540,7 +482,9 @@ Float4 filter_level(const Context& ctx, const Int& level, const FloatMask& magni
 template <class Format, TextureKind Kind>
 Float4 sample_level_impl(const Texture& texture, const Sampler& s, const TexCoord& coord,
                          const Float& lod_in) {
-  const Context ctx{texture, s, reinterpret_cast<const int32_t*>(TextureAccess::words(texture)),
+  const Context ctx{texture, s,
+                    reinterpret_cast<const int32_t*>(Kind == TextureKind::Cube ? TextureAccess::cube_words(texture)
+                                                                               : TextureAccess::words(texture)),
                     Format::raw_border(s.border),
                     Kind != TextureKind::Cube && (s.u == Address::Border || s.v == Address::Border ||
                                                   (Kind == TextureKind::Volume && s.w == Address::Border))};

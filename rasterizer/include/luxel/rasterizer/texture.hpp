@@ -167,9 +167,8 @@ class Texture {
   /// to back, each texel as bytes_per_texel(format()) bytes in the format's channel order.
   /// Throws std::out_of_range for a level or face that does not exist.
   std::span<const uint8_t> level_bytes(int level, int face = 0) const;
-  std::span<uint8_t> level_bytes(int level, int face = 0);
-  /// Bytes of all levels of all faces.
-  size_t storage_bytes() const { return words_.size() * sizeof(uint32_t); }
+  /// Bytes of all levels of all faces, with a cube map's second copy for sampling (below).
+  size_t storage_bytes() const { return (words_.size() + cube_words_.size()) * sizeof(uint32_t); }
 
   /// Replaces one level of one face with `bytes`, laid out as level_bytes() describes. Throws
   /// std::invalid_argument when the size does not match, std::out_of_range for a bad level/face.
@@ -189,6 +188,9 @@ class Texture {
   static int level_size(int size0, int level) { return size0 >> level > 1 ? size0 >> level : 1; }
   void check_level_face(int level, int face) const;
   size_t level_words(int level) const;
+  std::span<uint8_t> level_span(int level, int face);
+  /// Remakes the sampling copy of a cube map's `level` after `face` changed (all faces: -1).
+  void refresh_cube_copy(int level, int face);
 
   TextureKind kind_ = TextureKind::Texture2D;
   TextureFormat format_ = TextureFormat::RGBA8;
@@ -200,6 +202,14 @@ class Texture {
   int32_t face_words_ = 0;
   std::array<int32_t, kMaxMipLevels> level_offset_{};
   std::vector<uint32_t> words_;
+  /// Cube maps only: a second copy that sampling reads, each face level n x n stored as
+  /// (n + 2) x (n + 2) with a one-texel border holding the texels across its edges on the
+  /// neighbouring faces (the seamless filter's), so that a bilinear footprint never leaves its
+  /// face's rows; the four corner texels, past two edges, hold 0 (the filter replaces them).
+  /// Same face-major layout as words_; made again by every upload and generate_mips().
+  int32_t cube_face_words_ = 0;
+  std::array<int32_t, kMaxMipLevels> cube_level_offset_{};
+  std::vector<uint32_t> cube_words_;
 };
 
 enum class Filter : uint8_t { Point, Linear };
