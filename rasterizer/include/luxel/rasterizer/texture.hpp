@@ -3,6 +3,8 @@
 //
 // A Texture holds 2D, cube or volume texels in their native format (no float32 expansion: a
 // 1024x1024 RGBA8 texture with its mip chain is 5.6 MB), with every mip level in one allocation.
+// A cube map keeps a second copy for sampling, each face level bordered by the texels across its
+// edges (a little over twice the memory), so that seamless filtering reads plain rows.
 // Sampling comes in two flavours that must agree:
 //   - sample / sample_level / sample_grad: one stamp of simd::kLanes pixels at a time (the path
 //     shaders use);
