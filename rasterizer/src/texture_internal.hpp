@@ -14,17 +14,20 @@
 
 namespace luxel::rasterizer {
 
-/// The sampling code's view of a Texture's storage (see the layout comment in Texture).
+/// The storage sampling reads: a Texture's levels, or for a cube map its bordered copy (see the
+/// layout comments in Texture). Face f, level l starts at word f * face_words + level_offsets[l].
+struct SampledStorage {
+  const int32_t* words;
+  int32_t face_words;
+  const std::array<int32_t, kMaxMipLevels>* level_offsets;
+};
+
 struct TextureAccess {
-  static const uint32_t* words(const Texture& t) { return t.words_.data(); }
-  static size_t word_count(const Texture& t) { return t.words_.size(); }
-  static int words_per_texel(const Texture& t) { return t.words_per_texel_; }
-  static int32_t face_words(const Texture& t) { return t.face_words_; }
-  static const std::array<int32_t, kMaxMipLevels>& level_offsets(const Texture& t) { return t.level_offset_; }
-  /// A cube map's sampling copy, its levels bordered by their neighbours' texels (Texture).
-  static const uint32_t* cube_words(const Texture& t) { return t.cube_words_.data(); }
-  static int32_t cube_face_words(const Texture& t) { return t.cube_face_words_; }
-  static const std::array<int32_t, kMaxMipLevels>& cube_level_offsets(const Texture& t) { return t.cube_level_offset_; }
+  static SampledStorage sampled(const Texture& t) {
+    if (t.kind_ == TextureKind::Cube)
+      return {reinterpret_cast<const int32_t*>(t.cube_words_.data()), t.cube_face_words_, &t.cube_level_offset_};
+    return {reinterpret_cast<const int32_t*>(t.words_.data()), t.face_words_, &t.level_offset_};
+  }
 };
 
 namespace texture_detail {

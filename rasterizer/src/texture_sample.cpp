@@ -185,7 +185,7 @@ struct R32f {
 struct Context {
   const Texture& texture;
   const Sampler& sampler;
-  const int32_t* words;
+  SampledStorage storage;
   Float4 border;  ///< in the format's raw domain
   bool any_border;
 };
@@ -317,17 +317,17 @@ Float4 filter_2d(const Context& ctx, const Level& g, Filter filter, const Float&
     IntMask out_x(false), out_y(false);
     const Int i = point_axis(u, g.width, g.fwidth, s.u, out_x);
     const Int j = point_axis(v, g.height, g.fheight, s.v, out_y);
-    Float4 t = Format::fetch(ctx.words, word_index<Format>(g.offset, row_start(j, g.width) + i));
+    Float4 t = Format::fetch(ctx.storage.words, word_index<Format>(g.offset, row_start(j, g.width) + i));
     if (ctx.any_border) apply_border(ctx, out_x | out_y, t);
     return t;
   }
   const LinearAxis x = linear_axis(u, g.width, g.fwidth, s.u);
   const LinearAxis y = linear_axis(v, g.height, g.fheight, s.v);
   const Int row0 = row_start(y.i0, g.width), row1 = row_start(y.i1, g.width);
-  Float4 t00 = Format::fetch(ctx.words, word_index<Format>(g.offset, row0 + x.i0));
-  Float4 t10 = Format::fetch(ctx.words, word_index<Format>(g.offset, row0 + x.i1));
-  Float4 t01 = Format::fetch(ctx.words, word_index<Format>(g.offset, row1 + x.i0));
-  Float4 t11 = Format::fetch(ctx.words, word_index<Format>(g.offset, row1 + x.i1));
+  Float4 t00 = Format::fetch(ctx.storage.words, word_index<Format>(g.offset, row0 + x.i0));
+  Float4 t10 = Format::fetch(ctx.storage.words, word_index<Format>(g.offset, row0 + x.i1));
+  Float4 t01 = Format::fetch(ctx.storage.words, word_index<Format>(g.offset, row1 + x.i0));
+  Float4 t11 = Format::fetch(ctx.storage.words, word_index<Format>(g.offset, row1 + x.i1));
   if (ctx.any_border) {
     apply_border(ctx, x.outside0 | y.outside0, t00);
     apply_border(ctx, x.outside1 | y.outside0, t10);
@@ -347,7 +347,7 @@ Float4 filter_volume(const Context& ctx, const Level& g, Filter filter, const Fl
     const Int i = point_axis(u, g.width, g.fwidth, s.u, out_x);
     const Int j = point_axis(v, g.height, g.fheight, s.v, out_y);
     const Int k = point_axis(w, g.depth, g.fdepth, s.w, out_z);
-    Float4 t = Format::fetch(ctx.words, word_index<Format>(g.offset, k * slice + row_start(j, g.width) + i));
+    Float4 t = Format::fetch(ctx.storage.words, word_index<Format>(g.offset, k * slice + row_start(j, g.width) + i));
     if (ctx.any_border) apply_border(ctx, out_x | out_y | out_z, t);
     return t;
   }
@@ -357,10 +357,10 @@ Float4 filter_volume(const Context& ctx, const Level& g, Filter filter, const Fl
   auto filter_slice = [&](const Int& k, const IntMask& out_z) {
     const Int plane = k * slice;
     const Int row0 = plane + row_start(y.i0, g.width), row1 = plane + row_start(y.i1, g.width);
-    Float4 t00 = Format::fetch(ctx.words, word_index<Format>(g.offset, row0 + x.i0));
-    Float4 t10 = Format::fetch(ctx.words, word_index<Format>(g.offset, row0 + x.i1));
-    Float4 t01 = Format::fetch(ctx.words, word_index<Format>(g.offset, row1 + x.i0));
-    Float4 t11 = Format::fetch(ctx.words, word_index<Format>(g.offset, row1 + x.i1));
+    Float4 t00 = Format::fetch(ctx.storage.words, word_index<Format>(g.offset, row0 + x.i0));
+    Float4 t10 = Format::fetch(ctx.storage.words, word_index<Format>(g.offset, row0 + x.i1));
+    Float4 t01 = Format::fetch(ctx.storage.words, word_index<Format>(g.offset, row1 + x.i0));
+    Float4 t11 = Format::fetch(ctx.storage.words, word_index<Format>(g.offset, row1 + x.i1));
     if (ctx.any_border) {
       apply_border(ctx, x.outside0 | y.outside0 | out_z, t00);
       apply_border(ctx, x.outside1 | y.outside0 | out_z, t10);
@@ -409,13 +409,12 @@ Float4 filter_cube(const Context& ctx, const Level& g, Filter filter, const Cube
   // The sampling copy (Texture): face levels n texels wide are stored n + 2 wide, texel (i, j) of
   // the face at (i + 1, j + 1), bordered by the texels across its edges. g.offset is the level's
   // offset in that copy.
-  const int32_t face_words = TextureAccess::cube_face_words(ctx.texture);
-  const Int face_offset = c.face * Int(face_words) + g.offset;
+  const Int face_offset = c.face * Int(ctx.storage.face_words) + g.offset;
   const Int one(1), stride = g.width + Int(2), last = g.width - one;
   if (filter == Filter::Point) {
     const Int i = xsimd::min(to_int(xsimd::floor(c.u * g.fwidth)), last) + one;
     const Int j = xsimd::min(to_int(xsimd::floor(c.v * g.fwidth)), last) + one;
-    return Format::fetch(ctx.words, word_index<Format>(face_offset, row_start(j, stride) + i));
+    return Format::fetch(ctx.storage.words, word_index<Format>(face_offset, row_start(j, stride) + i));
   }
   // u and v lie in [0, 1] (project_to_faces), so i0 and j0 lie in [-1, n - 1]: within the border.
   const Float x = c.u * g.fwidth - Float(0.5f), y = c.v * g.fwidth - Float(0.5f);
@@ -427,7 +426,7 @@ Float4 filter_cube(const Context& ctx, const Level& g, Filter filter, const Cube
   const Int index[4] = {word_index<Format>(face_offset, row0), word_index<Format>(face_offset, row0 + one),
                         word_index<Format>(face_offset, row1), word_index<Format>(face_offset, row1 + one)};
   Float4 t[4];
-  for (int k = 0; k < 4; ++k) t[k] = Format::fetch(ctx.words, index[k]);
+  for (int k = 0; k < 4; ++k) t[k] = Format::fetch(ctx.storage.words, index[k]);
   // A texel past a cube corner (past two edges) is the mean of the footprint's other three.
   const Int zero(0);
   const IntMask before_i = i0 < zero, after_i = i0 >= last, before_j = j0 < zero, after_j = j0 >= last;
@@ -455,9 +454,7 @@ struct Prepared {
 
 template <class Format, TextureKind Kind>
 Float4 filter_level(const Context& ctx, const Int& level, Filter filter, const Prepared& p) {
-  const Level g = level_geometry(
-      ctx.texture,
-      Kind == TextureKind::Cube ? TextureAccess::cube_level_offsets(ctx.texture) : TextureAccess::level_offsets(ctx.texture), level);
+  const Level g = level_geometry(ctx.texture, *ctx.storage.level_offsets, level);
   if constexpr (Kind == TextureKind::Cube) {
     return filter_cube<Format>(ctx, g, filter, p.cube);
   } else if constexpr (Kind == TextureKind::Volume) {
@@ -482,9 +479,7 @@ Float4 filter_level(const Context& ctx, const Int& level, const FloatMask& magni
 template <class Format, TextureKind Kind>
 Float4 sample_level_impl(const Texture& texture, const Sampler& s, const TexCoord& coord,
                          const Float& lod_in) {
-  const Context ctx{texture, s,
-                    reinterpret_cast<const int32_t*>(Kind == TextureKind::Cube ? TextureAccess::cube_words(texture)
-                                                                               : TextureAccess::words(texture)),
+  const Context ctx{texture, s, TextureAccess::sampled(texture),
                     Format::raw_border(s.border),
                     Kind != TextureKind::Cube && (s.u == Address::Border || s.v == Address::Border ||
                                                   (Kind == TextureKind::Volume && s.w == Address::Border))};
