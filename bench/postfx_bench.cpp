@@ -1,11 +1,14 @@
-// Post-processing passes on a 1280x720 frame: the bloom's five passes one by one and together, and
-// film grain, on a 1-sample frame and on a 4x MSAA one (Source draws bloomadd and the grain onto
+// Post-processing passes on a 1280x720 frame: the bloom's five passes one by one and together,
+// the color correction that adds the bloom (Engine_Post, one LUT) and film grain, on a 1-sample
+// frame and on a 4x MSAA one (Source draws bloomadd and the grain onto
 // the multisampled back buffer; the copy resolves it), on 1 and 2 threads. One iteration = one
 // pass over the whole frame; the passes run as the frame runs them (each flushes its draw, so on
 // a busy machine a pass also waits for its worker to be scheduled: the 1-thread runs show the work
 // alone). Each reports the median and the minimum of its repetitions.
 
 #include "luxel/postfx/bloom.hpp"
+#include "luxel/postfx/color_correction.hpp"
+#include "luxel/postfx/grade.hpp"
 #include "luxel/postfx/film_grain.hpp"
 
 #include <benchmark/benchmark.h>
@@ -92,6 +95,18 @@ void BM_FilmGrain(benchmark::State& state) {
   label(state);
 }
 
+/// The engine's combine pass with one LUT (the courtyard's case): the bloom added to the frame
+/// and the sum color-corrected in one draw, resolved to an image.
+void BM_ColorCorrect(benchmark::State& state) {
+  Setup s(state);
+  const rasterizer::Image resolved = rasterizer::resolve(s.ctx, s.frame);
+  s.bloom.blur(s.ctx, resolved, 1.0f);
+  const Lut lut = sample_lut(grade_transform(*grade_preset("warm"), "builtin:warm"));
+  const WeightedLut luts[] = {{&lut, 1.0f}};
+  for (auto _ : state) benchmark::DoNotOptimize(color_correct(s.ctx, s.bloom, luts));
+  label(state);
+}
+
 double minimum(const std::vector<double>& v) { return *std::min_element(v.begin(), v.end()); }
 
 #define LUXEL_POSTFX_BENCH(name)                                                                  \
@@ -103,6 +118,7 @@ LUXEL_POSTFX_BENCH(BM_BloomBlurY);
 LUXEL_POSTFX_BENCH(BM_BloomAdd);
 LUXEL_POSTFX_BENCH(BM_Bloom);
 LUXEL_POSTFX_BENCH(BM_FilmGrain);
+LUXEL_POSTFX_BENCH(BM_ColorCorrect);
 
 }  // namespace
 }  // namespace luxel::postfx

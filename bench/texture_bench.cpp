@@ -11,6 +11,7 @@
 
 #include <benchmark/benchmark.h>
 
+#include <array>
 #include <cmath>
 #include <random>
 #include <vector>
@@ -133,7 +134,32 @@ void BM_Volume_RGBA16F_Trilinear(benchmark::State& s) {
   run(s, TextureKind::Volume, TextureFormat::RGBA16F, Filter::Linear, MipFilter::Linear, kMinified);
 }
 
+/// A blur's 13 taps of one stamp (the bloom's, horizontal, on a level-0 sampler that needs no
+/// LOD): independent samples, so what one costs when others overlap it. Reported per sample.
+void BM_Texture2D_RGBA8_BlurTaps(benchmark::State& state) {
+  const Texture t = make_texture(TextureKind::Texture2D, TextureFormat::RGBA8);
+  Sampler sampler;
+  sampler.mip = MipFilter::None;
+  sampler.u = sampler.v = Address::Clamp;
+  const Stamps stamps = make_stamps(t, kMagnified);
+  constexpr int kTaps = 13;
+  std::vector<std::array<TexCoord, kTaps>> taps(stamps.coords.size());
+  for (size_t i = 0; i < taps.size(); ++i)
+    for (int k = 0; k < kTaps; ++k)
+      taps[i][k] = {stamps.coords[i].x + Float(float(k - 6) * 1.37f / float(t.width())), stamps.coords[i].y, Float(0.0f)};
+  std::array<simd::Float4, kTaps> out;
+  size_t i = 0;
+  for (auto _ : state) {
+    for (int k = 0; k < kTaps; ++k) out[k] = sample(t, sampler, taps[i][k]);
+    benchmark::DoNotOptimize(out);
+    if (++i == taps.size()) i = 0;
+  }
+  state.counters["sample"] = benchmark::Counter(static_cast<double>(state.iterations()) * kTaps,
+                                                benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
+}
+
 BENCHMARK(BM_Texture2D_RGBA8_Bilinear);
+BENCHMARK(BM_Texture2D_RGBA8_BlurTaps);
 BENCHMARK(BM_Texture2D_RGBA8_Trilinear);
 BENCHMARK(BM_Texture2D_RGBA8_Trilinear_ImplicitLod);
 BENCHMARK(BM_Texture2D_RGBA8_Point);

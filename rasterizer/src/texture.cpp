@@ -272,6 +272,8 @@ Texture Texture::create(const TextureDesc& desc) {
     t.cube_face_words_ = static_cast<int32_t>(bordered);
     t.cube_words_.assign(static_cast<size_t>(bordered * t.faces()), 0u);
   }
+  t.opaque_ = desc.format == TextureFormat::R32F;  // reads alpha 1 whatever it holds
+  t.level_opaque_.assign(static_cast<size_t>(t.faces() * t.levels_), t.opaque_ ? 1 : 0);
   return t;
 }
 
@@ -323,6 +325,7 @@ void Texture::upload(int level, std::span<const uint8_t> bytes, int face) {
   }
   std::memcpy(destination.data(), bytes.data(), bytes.size());
   refresh_cube_copy(level, face);
+  note_alpha(level, face);
 }
 
 void Texture::upload(int level, std::span<const glm::vec4> texels, int face) {
@@ -336,6 +339,28 @@ void Texture::upload(int level, std::span<const glm::vec4> texels, int face) {
     encode_texel(format_, glm::dvec4(texels[i]), destination.data() + i * texel_bytes);
   }
   refresh_cube_copy(level, face);
+  note_alpha(level, face);
+}
+
+void Texture::note_alpha(int level, int face) {
+  if (format_ != TextureFormat::R32F) {
+    const auto bytes = level_bytes(level, face);
+    const uint32_t* words = reinterpret_cast<const uint32_t*>(bytes.data());
+    const size_t count = bytes.size() / sizeof(uint32_t);
+    // The word holding alpha, its place and its maximum: RGBA8 0xff in bits 24-31; RGBA16 0xffff
+    // and RGBA16F 0x3c00 (1.0) in the high half of a texel's second word.
+    const bool eight_bit = words_per_texel_ == 1;
+    const uint32_t one = format_ == TextureFormat::RGBA16F ? 0x3c00u : eight_bit ? 0xffu : 0xffffu;
+    const int shift = eight_bit ? 24 : 16;
+    uint32_t differ = 0;  // (constant strides, no early exit: the loops vectorize)
+    if (eight_bit) {
+      for (size_t i = 0; i < count; ++i) differ |= (words[i] >> shift) ^ one;
+    } else {
+      for (size_t i = 1; i < count; i += 2) differ |= (words[i] >> shift) ^ one;
+    }
+    level_opaque_[static_cast<size_t>(face) * levels_ + level] = differ == 0 ? 1 : 0;
+  }
+  opaque_ = std::all_of(level_opaque_.begin(), level_opaque_.end(), [](uint8_t o) { return o != 0; });
 }
 
 // --- The cube maps' sampling copy -------------------------------------------------------------
@@ -494,7 +519,10 @@ void Texture::generate_mips() {
       }
     }
   }
-  for (int level = 1; level < levels_; ++level) refresh_cube_copy(level, -1);
+  for (int level = 1; level < levels_; ++level) {
+    refresh_cube_copy(level, -1);
+    for (int face = 0; face < faces(); ++face) note_alpha(level, face);
+  }
 }
 
 }  // namespace luxel::rasterizer

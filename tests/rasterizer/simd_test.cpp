@@ -43,6 +43,21 @@ TEST(Simd, DotHalvesIsTwoSignedProductsPerLane) {
   }
 }
 
+TEST(Simd, ByteOfIsEachLanesByteZeroExtended) {
+  std::mt19937 rng(2);
+  for (int round = 0; round < kRounds; ++round) {
+    int32_t v[kLanes], got[4][kLanes];
+    for (int l = 0; l < kLanes; ++l) v[l] = static_cast<int32_t>(rng());
+    simd::byte_of<0>(load(v)).store_unaligned(got[0]);
+    simd::byte_of<1>(load(v)).store_unaligned(got[1]);
+    simd::byte_of<2>(load(v)).store_unaligned(got[2]);
+    simd::byte_of<3>(load(v)).store_unaligned(got[3]);
+    for (int k = 0; k < 4; ++k)
+      for (int l = 0; l < kLanes; ++l)
+        ASSERT_EQ(got[k][l], int32_t((uint32_t(v[l]) >> (8 * k)) & 0xffu)) << "byte " << k << ", lane " << l;
+  }
+}
+
 TEST(Simd, Int4LaneBroadcastAndSignBits) {
   std::mt19937 rng(2);
   for (int round = 0; round < kRounds; ++round) {

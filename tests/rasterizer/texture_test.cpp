@@ -1079,6 +1079,97 @@ TEST(TextureSimd, MatchesReference) {
   std::printf("[          ] %ld samples, worst |SIMD - reference| = %g\n", compared, worst);
 }
 
+/// Sets the alpha of every texel of every level and face: `step` steps below the format's
+/// maximum (RGBA8 and sRGB: 255, RGBA16: 65535, RGBA16F: the half 1.0, 0x3c00).
+void set_alpha(Texture& t, int step) {
+  for (int face = 0; face < t.faces(); ++face) {
+    for (int level = 0; level < t.mip_levels(); ++level) {
+      const auto current = t.level_bytes(level, face);
+      std::vector<uint8_t> bytes(current.begin(), current.end());
+      const size_t texel = size_t(bytes_per_texel(t.format()));
+      for (size_t i = 0; i < bytes.size(); i += texel) {
+        if (texel == 4) {
+          bytes[i + 3] = uint8_t(255 - step);
+        } else {
+          const uint16_t alpha = uint16_t((t.format() == TextureFormat::RGBA16F ? 0x3c00 : 0xffff) - step);
+          std::memcpy(&bytes[i + 6], &alpha, 2);
+        }
+      }
+      t.upload(level, bytes, face);
+    }
+  }
+}
+
+TEST(TextureCreate, OpaqueFollowsUploads) {
+  Texture t = Texture::create_2d(8, 4, TextureFormat::RGBA8);
+  EXPECT_FALSE(t.opaque());  // zeros
+  std::vector<glm::vec4> white(32, glm::vec4(1.0f));
+  t.upload(0, white);
+  EXPECT_FALSE(t.opaque());  // the other levels are still zero
+  t.generate_mips();
+  EXPECT_TRUE(t.opaque());
+  white[5].a = 254.0f / 255.0f;
+  t.upload(0, white);
+  EXPECT_FALSE(t.opaque());
+  EXPECT_TRUE(Texture::create_2d(8, 4, TextureFormat::R32F).opaque());  // alpha reads 1 whatever it holds
+  for (const TextureFormat format : {TextureFormat::RGBA8_sRGB, TextureFormat::RGBA16F, TextureFormat::RGBA16}) {
+    Texture c = Texture::create_cube(4, format, 2);
+    set_alpha(c, 0);
+    EXPECT_TRUE(c.opaque()) << name(format);
+    set_alpha(c, 1);
+    EXPECT_FALSE(c.opaque()) << name(format);
+  }
+}
+
+// An opaque texture is read through a path that filters the color channels alone and returns
+// alpha 1. Its colors must be bit for bit those of a twin whose alpha is one step lower (read
+// through the four-channel path: alpha takes no part in filtering the colors), and its alpha
+// exactly 1, wherever no border color enters the footprint.
+TEST(TextureSimd, OpaqueTexturesFilterTheColorsAlone) {
+  std::mt19937 rng(11);
+  constexpr int kStampsPerConfig = 16;
+  long compared = 0;
+  for (const TextureFormat format : kFormats) {
+    if (format == TextureFormat::R32F) continue;  // always opaque: MatchesReference covers it
+    for (const TestTexture& tt : random_textures(format, rng)) {
+      Texture opaque = tt.texture, twin = tt.texture;
+      set_alpha(opaque, 0);
+      set_alpha(twin, 1);
+      ASSERT_TRUE(opaque.opaque()) << tt.label;
+      ASSERT_FALSE(twin.opaque()) << tt.label;
+      for (const Sampler& s : sampler_configs(opaque.kind(), rng)) {
+        const bool border = opaque.kind() != TextureKind::Cube &&
+                            (s.u == Address::Border || s.v == Address::Border ||
+                             (opaque.kind() == TextureKind::Volume && s.w == Address::Border));
+        int failures = 0;
+        for (int stamp = 0; stamp < kStampsPerConfig; ++stamp) {
+          LaneValues x, y, z, lod;
+          for (int l = 0; l < kLanes; ++l) {
+            const glm::vec3 c = random_coord(opaque, rng);
+            x[l] = c.x, y[l] = c.y, z[l] = c.z;
+            lod[l] = random_lod(opaque, rng);
+          }
+          const TexCoord coord{lanes_of(x), lanes_of(y), lanes_of(z)};
+          const auto got = unpack(sample_level(opaque, s, coord, lanes_of(lod)));
+          const auto want = unpack(sample_level(twin, s, coord, lanes_of(lod)));
+          for (int l = 0; l < kLanes; ++l) {
+            ++compared;
+            bool same = true;
+            for (int ch = 0; ch < 3; ++ch) same &= std::memcmp(&got[l][ch], &want[l][ch], sizeof(float)) == 0;
+            if (!border) same &= got[l].a == 1.0f;
+            if (!same && failures++ < 3) {
+              ADD_FAILURE() << tt.label << ", " << describe(s) << ", lane " << l << ": opaque (" << got[l].r << ", "
+                            << got[l].g << ", " << got[l].b << ", " << got[l].a << "), twin (" << want[l].r << ", "
+                            << want[l].g << ", " << want[l].b << ", " << want[l].a << ")";
+            }
+          }
+        }
+      }
+    }
+  }
+  std::printf("[          ] %ld samples compared\n", compared);
+}
+
 TEST(TextureSimd, ImplicitLodMatchesExplicitAndReference) {
   // sample() must be sample_level() at compute_lod() of the coarse quad derivatives, and
   // compute_lod() must agree with lod_reference() on those derivatives.

@@ -264,6 +264,31 @@ inline void store_bytes(uint8_t* p, const Int& v) {
 #endif
 }
 
+/// Byte kByte (0 = the lowest) of each lane, zero-extended. The bytes above the lowest come by
+/// one byte shuffle (port 5 on Intel cores, where the shift-and-mask pair would take two of the
+/// ports the conversions and FMAs of texture filtering already crowd; one cheap op on AMD's).
+template <int kByte>
+inline Int byte_of(const Int& v) {
+  static_assert(kByte >= 0 && kByte < 4);
+  if constexpr (kByte == 0) {
+    return v & Int(0xff);
+  } else {
+#if defined(__AVX512F__) || defined(__AVX2__)
+    // Within each 128-bit block, lane l's byte kByte to its lowest byte, zeros above (-1).
+    const __m128i pick = _mm_setr_epi8(kByte, -1, -1, -1, 4 + kByte, -1, -1, -1, 8 + kByte, -1, -1, -1, 12 + kByte, -1, -1, -1);
+#endif
+#if defined(__AVX512BW__)
+    return Int(_mm512_shuffle_epi8(v, _mm512_broadcast_i32x4(pick)));
+#elif defined(__AVX512F__)
+    return (v >> (8 * kByte)) & Int(0xff);
+#elif defined(__AVX2__)
+    return Int(_mm256_shuffle_epi8(v, _mm256_broadcastsi128_si256(pick)));
+#else
+    return (v >> (8 * kByte)) & Int(0xff);
+#endif
+  }
+}
+
 /// base[index[l]] in each lane l. (xsimd 8.1's batch<int32_t>::gather never picks the AVX2
 /// instruction, its enable_if makes that overload unusable, and inserts lanes one by one.)
 inline Int gather(const int32_t* base, const Int& index) {

@@ -180,6 +180,12 @@ class Texture {
   /// Fills levels 1.. of every face from level 0 (box filter; see "Mip levels" above).
   void generate_mips();
 
+  /// Every texel of every level and face has alpha at its format's maximum (255, 65535, half 1.0;
+  /// R32F always): sampling then filters the color channels alone and returns alpha 1, exactly
+  /// what filtering the constant alpha gives, for less work. Kept current by upload and
+  /// generate_mips; a new texture (all zero) is not opaque, but for R32F.
+  bool opaque() const { return opaque_; }
+
   /// One texel, decoded to float RGBA (sRGB decoded, R32F as (r, 1, 1, 1)), no filtering (D3D10's
   /// Load). For cube maps `z` is the face. Throws std::out_of_range outside the texture.
   glm::vec4 load(int x, int y, int z = 0, int level = 0) const;
@@ -193,6 +199,8 @@ class Texture {
   std::span<uint8_t> level_span(int level, int face);
   /// Remakes the sampling copy of a cube map's `level` after `face` changed (all faces: -1).
   void refresh_cube_copy(int level, int face);
+  /// Records whether `level` of `face` is opaque, after it changed, and updates opaque_.
+  void note_alpha(int level, int face);
 
   TextureKind kind_ = TextureKind::Texture2D;
   TextureFormat format_ = TextureFormat::RGBA8;
@@ -212,6 +220,9 @@ class Texture {
   int32_t cube_face_words_ = 0;
   std::array<int32_t, kMaxMipLevels> cube_level_offset_{};
   std::vector<uint32_t> cube_words_;
+  /// Per face and level (face-major): whether its alpha is at the maximum everywhere.
+  std::vector<uint8_t> level_opaque_;
+  bool opaque_ = false;
 };
 
 enum class Filter : uint8_t { Point, Linear };
