@@ -75,8 +75,12 @@ void FrameOptions::add_to(CLI::App& cmd) {
       ->transform(CLI::CheckedTransformer(ambient, CLI::ignore_case));
   cmd.add_option("--exposure", exposure,
                  "A fixed tone-map scale; without it the scene's exposure range decides (auto exposure from the "
-                 "luminance histogram, or the range's one value)")
+                 "luminance histogram, starting where it settles on the first frame's view, or the range's one value)")
       ->check(CLI::PositiveNumber);
+  cmd.add_flag("--unsettled", unsettled,
+               "Start auto exposure at the engine's first-frame scale (1, clamped to the scene's range) instead of "
+               "the scale it comes to rest at on the first frame's view (found by drawing that frame a few times)")
+      ->excludes("--exposure");
   const std::map<std::string, postfx::ExposureAlgorithm> algorithms{{"percentile", postfx::ExposureAlgorithm::percentile},
                                                                      {"mean", postfx::ExposureAlgorithm::mean}};
   cmd.add_option("--tonemap-algorithm", settings.histogram.algorithm,
@@ -195,7 +199,7 @@ std::optional<scenes::Scene> FrameOptions::prepare_scene(const std::string& comm
 
 std::unique_ptr<frame::Renderer> FrameOptions::make_renderer(const std::string& command, const scenes::Scene& scene,
                                                              const frame::FrameSettings& settings, rasterizer::Context& ctx,
-                                                             int& code) const {
+                                                             int& code, std::optional<float>* start) const {
   try {
     frame::FrameSettings first = settings;
     first.time = 0.0f;
@@ -208,6 +212,17 @@ std::unique_ptr<frame::Renderer> FrameOptions::make_renderer(const std::string& 
     auto renderer = std::make_unique<frame::Renderer>(scene, first);
     const bool carried = renderer->auto_exposure() != nullptr;
     const bool terminal = isatty(STDERR_FILENO);
+    if (carried && !unsettled) {
+      if (start && *start) {
+        renderer->start_exposure_at(**start);
+      } else {
+        const frame::SettledExposure settled = renderer->settle_exposure(ctx);
+        std::fprintf(stderr, "luxel %s: auto exposure %s at %.4g after %d draws of the first frame\n", command.c_str(),
+                     settled.settled ? "starts settled" : "starts (not settled within its draws)", settled.scale,
+                     settled.draws);
+        if (start) *start = settled.scale;
+      }
+    }
     for (int n = 0; n < frame; ++n) {
       if (carried) {
         renderer->render(ctx);

@@ -35,12 +35,13 @@ struct FrameOptions {
   int frame = 0;                  ///< the frame of the scene's sequence, at time frame / fps
   float fps = 30.0f;
   std::optional<float> exposure;  ///< --exposure: a fixed tone-map scale
+  bool unsettled = false;         ///< --unsettled: auto exposure starts at the engine's 1, not settled
   bool no_bloom = false, bloom_true_height = false;
   std::optional<uint64_t> film_grain_seed;  ///< --film-grain SEED
   MemoryLimitOption memory;                 ///< --memory-limit: the scene's import, the bake, the renderer
 
   /// Registers --scene --width --height --msaa --camera --camera-path --frame --fps --threads
-  /// --bake --ambient --exposure --tonemap-algorithm --histogram --query-latency
+  /// --bake --ambient --exposure --unsettled --tonemap-algorithm --histogram --query-latency
   /// --no-color-correction --no-bloom --bloom-true-height --film-grain --look --memory-limit on `cmd`.
   void add_to(CLI::App& cmd);
 
@@ -63,10 +64,14 @@ struct FrameOptions {
   /// at frame 0 and moved through every frame before, so that the models' lighting is averaged
   /// as in the sequence (frame/renderer.hpp); with auto exposure those frames are rendered on
   /// `ctx`, since each one's exposure comes from the frames before it (progress on a terminal).
+  /// Auto exposure starts at frame 0 settled unless --unsettled: at `*start` when it holds a
+  /// scale (several renderers of one command start alike: compare's and cost's models), else at
+  /// the scale it comes to rest at on frame 0's view (Renderer::settle_exposure, one line on
+  /// stderr saying which), kept in `*start` when `start` is given.
   /// nullptr after printing one line for settings the renderer refuses, exit code 2 in `code`.
   std::unique_ptr<frame::Renderer> make_renderer(const std::string& command, const scenes::Scene& scene,
                                                  const frame::FrameSettings& settings, rasterizer::Context& ctx,
-                                                 int& code) const;
+                                                 int& code, std::optional<float>* start = nullptr) const;
 };
 
 }  // namespace luxel::cli

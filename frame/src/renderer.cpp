@@ -206,6 +206,7 @@ struct FrameState {
   // it, and the clock at the last frame rendered (the next frame's duration).
   float exposure = 1.0f;
   std::optional<postfx::AutoExposure> auto_exposure;
+  std::optional<float> start_exposure;  // where auto exposure starts when not at its initial scale
   std::optional<float> last_frame_time;
   std::optional<ColorCorrectionNodes> color_correction;  // when the frame blends the scene's nodes
   std::optional<postfx::Bloom> bloom;
@@ -733,25 +734,14 @@ Renderer::~Renderer() = default;
 Renderer::Renderer(Renderer&&) noexcept = default;
 Renderer& Renderer::operator=(Renderer&&) noexcept = default;
 
-void Renderer::render(Context& ctx) {
-  State& st = *state_;
-  // The frame's duration moves the exposure; a clock that went back starts it again.
-  const float dt = st.last_frame_time ? st.settings.time - *st.last_frame_time : 0.0f;
-  if (st.auto_exposure) {
-    const postfx::AutoExposureSettings controls = auto_exposure_settings(frame_controls(*st.scene, st.settings), st.settings);
-    if (dt < 0.0f) {
-      st.auto_exposure.emplace(controls);
-      if (st.exposure != st.auto_exposure->scale()) st.views_current = false;
-      st.exposure = st.auto_exposure->scale();
-    } else {
-      st.auto_exposure->set_controls(controls);  // the zone the camera is in
-    }
-  }
-  st.last_frame_time = st.settings.time;
+namespace {
+
+/// The 3D frame at st.exposure, resolved into st.image (its draws' stats in st.stats): what
+/// the post passes start from.
+void draw_3d(FrameState& st, Context& ctx, PassClock& clock) {
   ctx.reset_stats();
-  st.pass_times.clear();
-  PassClock clock(ctx, st.settings.time_passes ? &st.pass_times : nullptr);
-  // After the clock moved: the views' draws made anew on the CPU (a sequence pays it per frame).
+  // After the clock or the exposure moved: the views' draws made anew on the CPU (a sequence pays
+  // it per frame).
   if (!st.views_current) clock.run("views", 0, [&] { build_views(st); });
   if (st.water && st.water->has_views()) {  // the water's views first: its draws read them
     if (!st.water_targets) st.water_targets.emplace(water_texture_side(st.settings));
@@ -764,6 +754,81 @@ void Renderer::render(Context& ctx) {
   // fog factor), which a screen never shows: the image is what is shown, opaque.
   clock.run("resolve", 0, [&] { resolve_into(ctx, st.color, st.image, rasterizer::ResolveAlpha::opaque); });
   st.stats = ctx.stats();  // the 3D frame's draws, not the passes on the finished image
+}
+
+/// Auto exposure's controls where the camera is, starting from the renderer's start scale.
+postfx::AutoExposureSettings exposure_controls(const FrameState& st) {
+  postfx::AutoExposureSettings controls = auto_exposure_settings(frame_controls(*st.scene, st.settings), st.settings);
+  if (st.start_exposure) controls.initial_scale = *st.start_exposure;
+  return controls;
+}
+
+}  // namespace
+
+void Renderer::start_exposure_at(float scale) {
+  State& st = *state_;
+  if (!st.auto_exposure) return;
+  if (!(std::isfinite(scale) && scale > 0.0f))
+    throw std::invalid_argument("start exposure " + std::to_string(scale) + " is not positive and finite");
+  st.start_exposure = scale;
+  st.auto_exposure.emplace(exposure_controls(st));
+  if (st.exposure != st.auto_exposure->scale()) st.views_current = false;
+  st.exposure = st.auto_exposure->scale();
+}
+
+SettledExposure Renderer::settle_exposure(Context& ctx, int max_draws) {
+  State& st = *state_;
+  SettledExposure result{st.exposure, 0, false};
+  if (!st.auto_exposure) return result;
+  const postfx::AutoExposureSettings controls = exposure_controls(st);
+  // Step 3's clamp, which the scale cannot leave.
+  const float low = std::max(controls.min_scale, 0.001f), high = std::max(low, controls.max_scale);
+  // The target of the frame drawn at e, over e, does not grow with e: a brighter frame puts its
+  // bright pixels higher, and the percentile rule asks for less (the mean rule too). So the scale
+  // at rest is where the target crosses e (or a bound of the range); each draw narrows the bracket
+  // [lo, hi] around it, and the next scale is the target itself (the engine's own step) while it
+  // stays inside the bracket, else the bracket's geometric middle.
+  float lo = low, hi = high, e = std::clamp(st.exposure, low, high);
+  for (int draw = 0; draw < max_draws; ++draw) {
+    st.exposure = e;
+    st.views_current = false;  // the draws carry the scale in their constants
+    st.pass_times.clear();
+    PassClock clock(ctx, nullptr);
+    draw_3d(st, ctx, clock);
+    ++result.draws;
+    const float target = std::clamp(postfx::exact_target(st.image, controls, e), low, high);
+    if (std::fabs(target - e) <= kSettledTolerance * e) {
+      result.settled = true;
+      break;
+    }
+    (target > e ? lo : hi) = e;
+    // (A target on the range's bound is tried as it is: the scale may rest there.)
+    const bool inside = (target > lo || (target == low && lo == low)) && (target < hi || (target == high && hi == high));
+    e = inside ? target : std::sqrt(lo * hi);
+  }
+  result.scale = e;
+  start_exposure_at(e);
+  return result;
+}
+
+void Renderer::render(Context& ctx) {
+  State& st = *state_;
+  // The frame's duration moves the exposure; a clock that went back starts it again.
+  const float dt = st.last_frame_time ? st.settings.time - *st.last_frame_time : 0.0f;
+  if (st.auto_exposure) {
+    const postfx::AutoExposureSettings controls = exposure_controls(st);
+    if (dt < 0.0f) {
+      st.auto_exposure.emplace(controls);
+      if (st.exposure != st.auto_exposure->scale()) st.views_current = false;
+      st.exposure = st.auto_exposure->scale();
+    } else {
+      st.auto_exposure->set_controls(controls);  // the zone the camera is in
+    }
+  }
+  st.last_frame_time = st.settings.time;
+  st.pass_times.clear();
+  PassClock clock(ctx, st.settings.time_passes ? &st.pass_times : nullptr);
+  draw_3d(st, ctx, clock);
   st.shader_uses.clear();
   if (st.settings.count_shading) {  // the 3D draws have run (the resolve flushed them)
     if (st.water) st.water->add_shader_uses(st.shader_uses);

@@ -1,6 +1,7 @@
 // Auto exposure through the frame: each frame is drawn at the scale the frames before it chose,
 // a grey scene settles where the percentile rule says, a clock that goes back starts the exposure
-// again, and a courtyard sequence gives the same bytes on 1 and 2 threads.
+// again, a still's exposure found at rest is where the sequence stays, and a courtyard sequence
+// gives the same bytes on 1 and 2 threads.
 
 #include "frame/frame_support.hpp"
 
@@ -102,6 +103,66 @@ TEST(FrameAutoExposure, EnteringAnExposureZoneChangesTheControlsWithoutAJump) {
     EXPECT_GE(scales[size_t(f) + 1], 1.0f - 1e-5f) << "frame " << f;
   }
   EXPECT_NEAR(scales[599], 1.0f, 0.01f) << "settled at the zone's fixed scale";
+}
+
+TEST(FrameAutoExposure, SettlingFindsTheScaleTheSequenceStaysAt) {
+  const scenes::Scene s = grey_scene();
+  Renderer r(s, {kSize, kSize, 4});
+  rasterizer::Context ctx(2);
+  const SettledExposure settled = r.settle_exposure(ctx);
+  EXPECT_TRUE(settled.settled);
+  EXPECT_LE(settled.draws, 8);
+  EXPECT_EQ(r.exposure(), settled.scale);
+  // In the percentile rule's sticky bin, as the 900-frame sequence above ends: the grey's
+  // luminance kGrey x scale in [0.5700, 0.6495].
+  EXPECT_GE(kGrey * settled.scale, 0.5700);
+  EXPECT_LE(kGrey * settled.scale, 0.6495);
+  std::printf("grey %.2f: settled at scale %.4f after %d draws\n", kGrey, settled.scale, settled.draws);
+  // At rest: ten seconds of frames from there keep the scale (the histogram fills and agrees).
+  for (int f = 0; f < 300; ++f) {
+    r.set_time(float(f) / 30.0f);
+    r.render(ctx);
+    ASSERT_NEAR(r.exposure(), settled.scale, 0.01f * settled.scale) << "frame " << f;
+  }
+  // A clock that goes back starts the exposure again, at the settled scale.
+  r.set_time(0.0f);
+  r.render(ctx);
+  EXPECT_EQ(r.exposure(), settled.scale);
+}
+
+TEST(FrameAutoExposure, SettlingStopsAtTheRange) {
+  // The grey wants a scale near 4; a range up to 2 keeps it at 2, which is then at rest.
+  scenes::Scene s = grey_scene();
+  s.exposure.max_scale = 2.0f;
+  Renderer r(s, {kSize, kSize, 4});
+  rasterizer::Context ctx(1);
+  const SettledExposure settled = r.settle_exposure(ctx);
+  EXPECT_TRUE(settled.settled);
+  EXPECT_EQ(settled.scale, 2.0f);
+  // A fixed exposure has nothing to settle.
+  FrameSettings fixed_settings{kSize, kSize, 4};
+  fixed_settings.exposure = 3.0f;
+  const scenes::Scene grey = grey_scene();
+  Renderer fixed(grey, fixed_settings);
+  EXPECT_EQ(fixed.settle_exposure(ctx).draws, 0);
+  EXPECT_EQ(fixed.exposure(), 3.0f);
+  EXPECT_THROW(r.start_exposure_at(0.0f), std::invalid_argument);
+  EXPECT_THROW(r.start_exposure_at(std::nanf("")), std::invalid_argument);
+}
+
+TEST(FrameAutoExposure, CourtyardSettlesAlikeOnOneAndTwoThreads) {
+  scenes::Scene scene = scenes::make_builtin_scene("courtyard", {96, 54});
+  attach_test_bake(scene);
+  Renderer one(scene, {96, 54, 4}), two(scene, {96, 54, 4});
+  rasterizer::Context ctx1(1), ctx2(2);
+  const SettledExposure a = one.settle_exposure(ctx1), b = two.settle_exposure(ctx2);
+  EXPECT_EQ(a.scale, b.scale);
+  EXPECT_EQ(a.draws, b.draws);
+  EXPECT_TRUE(a.settled) << "after " << a.draws << " draws at " << a.scale;
+  EXPECT_LT(a.scale, 1.0f) << "the sunlit courtyard is brighter than the first frame's scale wants";
+  one.render(ctx1);
+  two.render(ctx2);
+  EXPECT_EQ(one.image().rgba, two.image().rgba);
 }
 
 TEST(FrameAutoExposure, CourtyardSequenceWithEveryPassIsTheSameOnOneAndTwoThreads) {

@@ -47,7 +47,8 @@
 //    alpha holds what shaders and blending left there, which a screen never shows).
 //  - The tone-map scale: FrameSettings::exposure when set (fixed); else, when the scene's
 //    Exposure or one of its exposure zones leaves a range (min_scale < max_scale), Source's auto
-//    exposure (postfx/auto_exposure.hpp): the first frame is drawn at 1 clamped to the range, and
+//    exposure (postfx/auto_exposure.hpp): the first frame is drawn at 1 clamped to the range (or
+//    where start_exposure_at or settle_exposure put the start), and
 //    after each frame the luminance histogram counts one bucket of it (the "histogram" pass) and
 //    the scale moves for the next frame, by the time since the last frame (the clock), under the
 //    controls where the camera is (scenes::exposure_at: the zone holding it, else the scene's);
@@ -243,6 +244,16 @@ void check_memory(const scenes::Scene& scene, const FrameSettings& settings);
 /// (its aspect, when the camera gives none).
 glm::mat4 view_projection(const scenes::Camera& camera, int width, int height);
 
+/// How close the target of a settled exposure's frame is to the scale (relative).
+inline constexpr float kSettledTolerance = 0.005f;
+
+/// What Renderer::settle_exposure found.
+struct SettledExposure {
+  float scale = 1.0f;    ///< the scale the frames start at
+  int draws = 0;         ///< frames drawn to find it
+  bool settled = false;  ///< the last draw's target was within kSettledTolerance (else: the draws ran out)
+};
+
 class Renderer {
  public:
   /// Prepares `scene`, which must outlive the renderer (it reads the meshes in place). Throws
@@ -292,6 +303,19 @@ class Renderer {
   const std::vector<PassTime>& pass_times() const;
   /// Per Scene::models entry, its lighting at the clock's time.
   const std::vector<ModelLightingState>& model_lighting() const;
+  /// Auto exposure only (otherwise nothing happens): the frames' exposure starts at `scale` (for
+  /// the next frame, and again where a clock that went back restarts it), with its goal there,
+  /// instead of at the first frame's 1. Throws std::invalid_argument for a scale that is not
+  /// positive and finite.
+  void start_exposure_at(float scale);
+  /// Auto exposure only: finds the scale the exposure comes to rest at for the current view, and
+  /// starts the frames there (start_exposure_at), as a still's viewer sees the scene once the eye
+  /// has adapted rather than on its first frame. The scale at rest is the one whose frame's exact
+  /// histogram targets that scale (postfx::exact_target, within kSettledTolerance; within the
+  /// controls' range): what the engine's loop settles at on a view that does not move, once every
+  /// bucket has been counted. Found by drawing the 3D frame (no post-processing) at most
+  /// `max_draws` times; the image then holds the last draw.
+  SettledExposure settle_exposure(rasterizer::Context& ctx, int max_draws = 8);
   /// The tone-map scale the next frame is drawn with.
   float exposure() const;
   /// The auto exposure (histogram, goal, last target), or null when the exposure is fixed.
