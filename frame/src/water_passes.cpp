@@ -278,18 +278,30 @@ WaterPasses& WaterPasses::operator=(WaterPasses&&) noexcept = default;
 void WaterPasses::render(rasterizer::Context& ctx, rasterizer::ColorTarget& color, rasterizer::DepthStencilTarget& depth,
                          PassClock& clock) {
   const rasterizer::Framebuffer fb{&color, &depth};
-  auto draw_view = [&](const char* name, PassList& passes, const glm::vec4& clear, std::optional<GpuTexture>& into) {
+  auto draw_view = [&](const char* name, const Plane& plane, PassList& passes, const glm::vec4& clear,
+                       std::optional<GpuTexture>& into) {
+    // Scissored views: only the scissor's tiles are cleared and resolved and only its rows
+    // uploaded. The texels around it are never read (the scissor holds every texel the water
+    // reads, with a nonzero weight), so whatever they hold changes no pixel.
+    const rasterizer::Scissor region = settings_.water_view_scissor ? plane.pixels_read : rasterizer::Scissor{};
     clock.run(name, draw_count(passes), [&] {
-      rasterizer::clear_color(ctx, color, clear);
-      rasterizer::clear_depth(ctx, depth, 1.0f);
+      rasterizer::clear_color(ctx, color, clear, region);
+      rasterizer::clear_depth(ctx, depth, 1.0f, region);
       run_passes(ctx, fb, passes);
-      rasterizer::resolve_into(ctx, color, resolved_);  // flushes: the views' draws are done
-      into->texture.upload(0, std::span<const uint8_t>(resolved_.rgba));
+      // Flushes: the views' draws are done.
+      rasterizer::resolve_into(ctx, color, resolved_, rasterizer::ResolveAlpha::samples, region);
+      if (!region.enable) {
+        into->texture.upload(0, std::span<const uint8_t>(resolved_.rgba));
+      } else {
+        const size_t row_bytes = size_t(resolved_.width) * 4;
+        const int rows = std::max(0, region.y1 - region.y0);
+        into->texture.upload_rows(0, region.y0, std::span<const uint8_t>(resolved_.rgba).subspan(size_t(region.y0) * row_bytes, size_t(rows) * row_bytes));
+      }
     });
   };
   for (auto& plane : planes_) {
-    if (plane->reflect) draw_view("water reflection", plane->reflection, plane->reflection_clear, plane->reflection_texture);
-    draw_view("water refraction", plane->refraction, plane->refraction_clear, plane->refraction_texture);
+    if (plane->reflect) draw_view("water reflection", *plane, plane->reflection, plane->reflection_clear, plane->reflection_texture);
+    draw_view("water refraction", *plane, plane->refraction, plane->refraction_clear, plane->refraction_texture);
   }
 }
 

@@ -58,6 +58,13 @@ uint32_t pack_rgba8(glm::vec4 c) {
 
 namespace {
 
+/// Whether tile `tile` holds some of `region` (every tile does when the region is off).
+bool tile_holds(const SurfaceLayout& L, int tile, const Scissor& region) {
+  if (!region.enable) return true;
+  const int x0 = (tile % L.tiles_x) * kTileSize, y0 = (tile / L.tiles_x) * kTileSize;
+  return x0 < region.x1 && region.x0 < x0 + kTileSize && y0 < region.y1 && region.y0 < y0 + kTileSize;
+}
+
 /// Makes the pending frame use `layout`, flushing a frame of another tiling first.
 detail::CommandQueue& queue_for(Context& ctx, const SurfaceLayout& layout) {
   if (!ctx.queue().accepts(layout)) ctx.flush();
@@ -67,22 +74,26 @@ detail::CommandQueue& queue_for(Context& ctx, const SurfaceLayout& layout) {
 
 class ClearColorCommand final : public detail::Command {
  public:
-  ClearColorCommand(ColorTarget& target, uint32_t value) : target_(target), value_(value) {}
+  ClearColorCommand(ColorTarget& target, uint32_t value, const Scissor& region)
+      : target_(target), value_(value), region_(region) {}
   void execute(int tile, detail::TileCounters&) override {
+    if (!tile_holds(target_.layout(), tile, region_)) return;
     simd::fill_u32(target_.tile(tile), value_, target_.layout().elements_per_tile());
   }
 
  private:
   ColorTarget& target_;
   uint32_t value_;
+  Scissor region_;
 };
 
 /// Clears depth, and stencil unless it is left out.
 class ClearDepthStencilCommand final : public detail::Command {
  public:
-  ClearDepthStencilCommand(DepthStencilTarget& target, float depth, std::optional<uint8_t> stencil)
-      : target_(target), depth_(depth), stencil_(stencil) {}
+  ClearDepthStencilCommand(DepthStencilTarget& target, float depth, std::optional<uint8_t> stencil, const Scissor& region)
+      : target_(target), depth_(depth), stencil_(stencil), region_(region) {}
   void execute(int tile, detail::TileCounters&) override {
+    if (!tile_holds(target_.layout(), tile, region_)) return;
     const size_t n = target_.layout().elements_per_tile();
     simd::fill_u32(reinterpret_cast<uint32_t*>(target_.depth_tile(tile)), std::bit_cast<uint32_t>(depth_), n);
     if (stencil_) std::fill_n(target_.stencil_tile(tile), n, *stencil_);
@@ -92,6 +103,7 @@ class ClearDepthStencilCommand final : public detail::Command {
   DepthStencilTarget& target_;
   float depth_;
   std::optional<uint8_t> stencil_;
+  Scissor region_;
 };
 
 /// Copies one tile's pixels of the image into every sample of the target.
@@ -121,11 +133,12 @@ class LoadImageCommand final : public detail::Command {
 /// Box filter of one tile's samples into the image (a plain copy for one sample).
 class ResolveCommand final : public detail::Command {
  public:
-  ResolveCommand(const ColorTarget& target, Image& image, ResolveAlpha alpha)
-      : target_(target), image_(image), opaque_(alpha == ResolveAlpha::opaque ? int32_t(0xff000000u) : 0) {}
+  ResolveCommand(const ColorTarget& target, Image& image, ResolveAlpha alpha, const Scissor& region)
+      : target_(target), image_(image), opaque_(alpha == ResolveAlpha::opaque ? int32_t(0xff000000u) : 0), region_(region) {}
   void execute(int tile, detail::TileCounters&) override {
     using simd::Int;
     const SurfaceLayout& L = target_.layout();
+    if (!tile_holds(L, tile, region_)) return;
     const int samples = L.samples;
     const int shift = std::countr_zero(static_cast<unsigned>(samples));  // samples is a power of two
     const int x0 = (tile % L.tiles_x) * kTileSize, y0 = (tile / L.tiles_x) * kTileSize;
@@ -164,31 +177,33 @@ class ResolveCommand final : public detail::Command {
   const ColorTarget& target_;
   Image& image_;
   int32_t opaque_;  ///< or-ed into every pixel: alpha 255, or nothing
+  Scissor region_;
 };
 
 }  // namespace
 
-void clear_color(Context& ctx, ColorTarget& target, glm::vec4 color) {
+void clear_color(Context& ctx, ColorTarget& target, glm::vec4 color, const Scissor& region) {
   detail::CommandQueue& queue = queue_for(ctx, target.layout());
   ctx.refer(target);  // after queue_for, whose flush would forget it
-  queue.push(std::make_unique<ClearColorCommand>(target, pack_rgba8(color)));
+  queue.push(std::make_unique<ClearColorCommand>(target, pack_rgba8(color), region));
 }
 
 namespace {
-void record_depth_clear(Context& ctx, DepthStencilTarget& target, float depth, std::optional<uint8_t> stencil) {
+void record_depth_clear(Context& ctx, DepthStencilTarget& target, float depth, std::optional<uint8_t> stencil,
+                        const Scissor& region) {
   const float d = std::clamp(std::isnan(depth) ? 0.0f : depth, 0.0f, 1.0f);
   detail::CommandQueue& queue = queue_for(ctx, target.layout());
   ctx.refer(target);
-  queue.push(std::make_unique<ClearDepthStencilCommand>(target, d, stencil));
+  queue.push(std::make_unique<ClearDepthStencilCommand>(target, d, stencil, region));
 }
 }  // namespace
 
 void clear_depth_stencil(Context& ctx, DepthStencilTarget& target, float depth, uint8_t stencil) {
-  record_depth_clear(ctx, target, depth, stencil);
+  record_depth_clear(ctx, target, depth, stencil, {});
 }
 
-void clear_depth(Context& ctx, DepthStencilTarget& target, float depth) {
-  record_depth_clear(ctx, target, depth, std::nullopt);
+void clear_depth(Context& ctx, DepthStencilTarget& target, float depth, const Scissor& region) {
+  record_depth_clear(ctx, target, depth, std::nullopt, region);
 }
 
 void load_image(Context& ctx, const Image& image, ColorTarget& target) {
@@ -202,11 +217,11 @@ void load_image(Context& ctx, const Image& image, ColorTarget& target) {
   queue.push(std::make_unique<LoadImageCommand>(image, target));
 }
 
-void resolve_into(Context& ctx, const ColorTarget& target, Image& image, ResolveAlpha alpha) {
+void resolve_into(Context& ctx, const ColorTarget& target, Image& image, ResolveAlpha alpha, const Scissor& region) {
   if (image.width != target.width() || image.height != target.height()) image = Image(target.width(), target.height());
   detail::CommandQueue& queue = queue_for(ctx, target.layout());
   ctx.refer(target);  // runs another context's pending frame on it first
-  queue.push(std::make_unique<ResolveCommand>(target, image, alpha));
+  queue.push(std::make_unique<ResolveCommand>(target, image, alpha, region));
   ctx.flush();
 }
 

@@ -342,24 +342,43 @@ void Texture::upload(int level, std::span<const glm::vec4> texels, int face) {
   note_alpha(level, face);
 }
 
-void Texture::note_alpha(int level, int face) {
-  if (format_ != TextureFormat::R32F) {
-    const auto bytes = level_bytes(level, face);
-    const uint32_t* words = reinterpret_cast<const uint32_t*>(bytes.data());
-    const size_t count = bytes.size() / sizeof(uint32_t);
-    // The word holding alpha, its place and its maximum: RGBA8 0xff in bits 24-31; RGBA16 0xffff
-    // and RGBA16F 0x3c00 (1.0) in the high half of a texel's second word.
-    const bool eight_bit = words_per_texel_ == 1;
-    const uint32_t one = format_ == TextureFormat::RGBA16F ? 0x3c00u : eight_bit ? 0xffu : 0xffffu;
-    const int shift = eight_bit ? 24 : 16;
-    uint32_t differ = 0;  // (constant strides, no early exit: the loops vectorize)
-    if (eight_bit) {
-      for (size_t i = 0; i < count; ++i) differ |= (words[i] >> shift) ^ one;
-    } else {
-      for (size_t i = 1; i < count; i += 2) differ |= (words[i] >> shift) ^ one;
-    }
-    level_opaque_[static_cast<size_t>(face) * levels_ + level] = differ == 0 ? 1 : 0;
+bool Texture::alpha_at_max(std::span<const uint8_t> texels) const {
+  if (format_ == TextureFormat::R32F) return true;  // reads alpha 1 whatever it holds
+  const uint32_t* words = reinterpret_cast<const uint32_t*>(texels.data());
+  const size_t count = texels.size() / sizeof(uint32_t);
+  // The word holding alpha, its place and its maximum: RGBA8 0xff in bits 24-31; RGBA16 0xffff
+  // and RGBA16F 0x3c00 (1.0) in the high half of a texel's second word.
+  const bool eight_bit = words_per_texel_ == 1;
+  const uint32_t one = format_ == TextureFormat::RGBA16F ? 0x3c00u : eight_bit ? 0xffu : 0xffffu;
+  const int shift = eight_bit ? 24 : 16;
+  uint32_t differ = 0;  // (constant strides, no early exit: the loops vectorize)
+  if (eight_bit) {
+    for (size_t i = 0; i < count; ++i) differ |= (words[i] >> shift) ^ one;
+  } else {
+    for (size_t i = 1; i < count; i += 2) differ |= (words[i] >> shift) ^ one;
   }
+  return differ == 0;
+}
+
+void Texture::note_alpha(int level, int face) {
+  level_opaque_[static_cast<size_t>(face) * levels_ + level] = alpha_at_max(level_bytes(level, face)) ? 1 : 0;
+  opaque_ = std::all_of(level_opaque_.begin(), level_opaque_.end(), [](uint8_t o) { return o != 0; });
+}
+
+void Texture::upload_rows(int level, int first_row, std::span<const uint8_t> rows, int face) {
+  const auto destination = level_span(level, face);
+  if (kind_ == TextureKind::Volume) invalid("rows are uploaded to 2D textures and cube maps, not volumes");
+  const size_t row_bytes = static_cast<size_t>(width(level)) * bytes_per_texel(format_);
+  const size_t n = rows.size() / row_bytes;
+  if (rows.size() % row_bytes != 0 || first_row < 0 || static_cast<size_t>(first_row) + n > static_cast<size_t>(height(level))) {
+    invalid("level " + std::to_string(level) + " has " + std::to_string(height(level)) + " rows of " +
+            std::to_string(row_bytes) + " bytes; " + std::to_string(rows.size()) + " bytes from row " +
+            std::to_string(first_row) + " are not whole rows within it");
+  }
+  std::memcpy(destination.data() + static_cast<size_t>(first_row) * row_bytes, rows.data(), rows.size());
+  refresh_cube_copy(level, face);
+  uint8_t& opaque = level_opaque_[static_cast<size_t>(face) * levels_ + level];
+  opaque = opaque && alpha_at_max(rows) ? 1 : 0;
   opaque_ = std::all_of(level_opaque_.begin(), level_opaque_.end(), [](uint8_t o) { return o != 0; });
 }
 

@@ -232,5 +232,30 @@ TEST(Clear, PacksRoundToNearestClampsAndZeroesNaN) {
   }
 }
 
+// A region limits clears and resolves to the tiles holding some of it; the rest keeps its values.
+TEST(Clear, ARegionTouchesOnlyTheTilesHoldingIt) {
+  Context ctx(2);
+  const int W = 200, H = 150;  // tiles of kTileSize: 4 x 3, the last ones partial
+  ColorTarget target(W, H, 4);
+  DepthStencilTarget ds(W, H, 4);
+  clear_color(ctx, target, {1, 0, 0, 1});
+  clear_depth(ctx, ds, 0.75f);
+  const Scissor region{true, kTileSize + 3, kTileSize - 1, 2 * kTileSize + 1, kTileSize + 5};  // tiles x 1-2, y 0-1
+  clear_color(ctx, target, {0, 0, 1, 1}, region);
+  clear_depth(ctx, ds, 0.25f, region);
+  Image image(W, H);
+  std::fill(image.rgba.begin(), image.rgba.end(), uint8_t(7));
+  resolve_into(ctx, target, image, ResolveAlpha::samples, region);
+  for (int y = 0; y < H; ++y) {
+    for (int x = 0; x < W; ++x) {
+      const int tx = x / kTileSize, ty = y / kTileSize;
+      const bool held = tx >= 1 && tx <= 2 && ty <= 1;
+      ASSERT_EQ(target.sample(x, y, 3), held ? rgba8(0, 0, 255, 255) : rgba8(255, 0, 0, 255)) << x << ", " << y;
+      ASSERT_EQ(ds.depth(x, y, 2), held ? 0.25f : 0.75f) << x << ", " << y;
+      ASSERT_EQ(image.pixel(x, y)[2], held ? 255 : 7) << x << ", " << y;
+    }
+  }
+}
+
 }  // namespace
 }  // namespace luxel::rasterizer::test

@@ -13,6 +13,7 @@
 #include "luxel/rasterizer/image.hpp"
 #include "luxel/rasterizer/limits.hpp"
 #include "luxel/rasterizer/simd.hpp"
+#include "luxel/rasterizer/state.hpp"
 
 #include <glm/vec4.hpp>
 
@@ -142,11 +143,13 @@ inline glm::vec4 unpack_rgba8(uint32_t rgba) {
   return glm::vec4(rgba & 255, (rgba >> 8) & 255, (rgba >> 16) & 255, rgba >> 24) / 255.0f;
 }
 
-/// Records a clear of every sample (runs at the next flush, like draws).
-void clear_color(Context& ctx, ColorTarget& target, glm::vec4 color);
+/// Records a clear of every sample (runs at the next flush, like draws). With an enabled
+/// `region` (pixels [x0, x1) x [y0, y1)), only the tiles that hold some of it are cleared: what a
+/// view scissored to the region needs, the rest of the target left as it was.
+void clear_color(Context& ctx, ColorTarget& target, glm::vec4 color, const Scissor& region = {});
 void clear_depth_stencil(Context& ctx, DepthStencilTarget& target, float depth, uint8_t stencil);
 /// Depth alone (D3DCLEAR_ZBUFFER without D3DCLEAR_STENCIL): stencil keeps its values.
-void clear_depth(Context& ctx, DepthStencilTarget& target, float depth);
+void clear_depth(Context& ctx, DepthStencilTarget& target, float depth, const Scissor& region = {});
 
 /// Loads an image into every sample of a target of the same size (the reverse of a one-sample
 /// resolve): how a finished frame held as an Image comes back as a target that post-processing
@@ -163,7 +166,9 @@ enum class ResolveAlpha {
 /// Box-filter resolve: each channel of each pixel is the rounded mean of its samples' 8-bit
 /// values (a plain copy out of the tiled layout for one sample). Flushes the context.
 Image resolve(Context& ctx, const ColorTarget& target, ResolveAlpha alpha = ResolveAlpha::samples);
-/// The same into an existing image (reallocated only when its size differs).
-void resolve_into(Context& ctx, const ColorTarget& target, Image& image, ResolveAlpha alpha = ResolveAlpha::samples);
+/// The same into an existing image (reallocated only when its size differs). With an enabled
+/// `region`, only the tiles that hold some of it are resolved; the image keeps its other pixels.
+void resolve_into(Context& ctx, const ColorTarget& target, Image& image, ResolveAlpha alpha = ResolveAlpha::samples,
+                  const Scissor& region = {});
 
 }  // namespace luxel::rasterizer
