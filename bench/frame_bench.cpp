@@ -10,7 +10,8 @@
 // stderr gets the CPU, the instruction set and the fast paths turned off (LUXEL_NO_FASTPATH).
 // The Source frames (demo, courtyard) run the passes on the finished image that their scene and
 // the options ask for: auto exposure's histogram and color correction from the scene, bloom and
-// film grain with --bloom and --film-grain; --passes times each.
+// film grain with --bloom and --film-grain; --passes times each. Their auto exposure starts settled
+// on the view, as `luxel render` starts a still (untimed; stderr says where).
 
 #include "machine.hpp"
 #include "sponza.hpp"
@@ -158,6 +159,9 @@ int main(int argc, char** argv) {
         if (name == "demo" || name == "courtyard")
           luxel::bake::attach(scene, luxel::bake::bake(scene, luxel::bake::BakeSettings::quick()));
         renderer = std::make_unique<luxel::frame::Renderer>(scene, settings);
+        // As luxel render starts a still: auto exposure settled on the view (untimed).
+        if (const luxel::frame::SettledExposure s = renderer->settle_exposure(ctx); s.draws > 0)
+          std::fprintf(stderr, "%s: auto exposure starts settled at %.4g after %d draws\n", name.c_str(), s.scale, s.draws);
       } catch (const std::exception& e) {
         std::printf("workload=%s skipped reason=\"%s\"\n", name.c_str(), e.what());
         continue;
@@ -182,6 +186,7 @@ int main(int argc, char** argv) {
       luxel::frame::FrameSettings timed = settings;
       timed.time_passes = true;
       luxel::frame::Renderer per_pass(scene, timed);
+      per_pass.settle_exposure(ctx);
       std::vector<std::pair<std::string, std::vector<double>>> pass_ms;
       for (int i = 0; i < warmup + frames; ++i) {
         per_pass.render(ctx);
