@@ -792,7 +792,6 @@ SettledExposure Renderer::settle_exposure(Context& ctx, int max_draws) {
   for (int draw = 0; draw < max_draws; ++draw) {
     st.exposure = e;
     st.views_current = false;  // the draws carry the scale in their constants
-    st.pass_times.clear();
     PassClock clock(ctx, nullptr);
     draw_3d(st, ctx, clock);
     ++result.draws;

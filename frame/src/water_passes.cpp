@@ -290,13 +290,9 @@ void WaterPasses::render(rasterizer::Context& ctx, rasterizer::ColorTarget& colo
       run_passes(ctx, fb, passes);
       // Flushes: the views' draws are done.
       rasterizer::resolve_into(ctx, color, resolved_, rasterizer::ResolveAlpha::samples, region);
-      if (!region.enable) {
-        into->texture.upload(0, std::span<const uint8_t>(resolved_.rgba));
-      } else {
-        const size_t row_bytes = size_t(resolved_.width) * 4;
-        const int rows = std::max(0, region.y1 - region.y0);
-        into->texture.upload_rows(0, region.y0, std::span<const uint8_t>(resolved_.rgba).subspan(size_t(region.y0) * row_bytes, size_t(rows) * row_bytes));
-      }
+      const int y0 = region.enable ? region.y0 : 0, y1 = region.enable ? std::max(y0, region.y1) : resolved_.height;
+      const size_t row_bytes = size_t(resolved_.width) * 4;
+      into->texture.upload_rows(0, y0, std::span<const uint8_t>(resolved_.rgba).subspan(size_t(y0) * row_bytes, size_t(y1 - y0) * row_bytes));
     });
   };
   for (auto& plane : planes_) {

@@ -272,8 +272,9 @@ Texture Texture::create(const TextureDesc& desc) {
     t.cube_face_words_ = static_cast<int32_t>(bordered);
     t.cube_words_.assign(static_cast<size_t>(bordered * t.faces()), 0u);
   }
-  t.opaque_ = desc.format == TextureFormat::R32F;  // reads alpha 1 whatever it holds
-  t.level_opaque_.assign(static_cast<size_t>(t.faces() * t.levels_), t.opaque_ ? 1 : 0);
+  // All zeros: opaque only as R32F, which reads alpha 1 whatever it holds.
+  t.level_opaque_.assign(static_cast<size_t>(t.faces() * t.levels_), desc.format == TextureFormat::R32F ? 1 : 0);
+  t.opaque_ = desc.format == TextureFormat::R32F;
   return t;
 }
 
@@ -325,7 +326,7 @@ void Texture::upload(int level, std::span<const uint8_t> bytes, int face) {
   }
   std::memcpy(destination.data(), bytes.data(), bytes.size());
   refresh_cube_copy(level, face);
-  note_alpha(level, face);
+  set_level_opaque(level, face, alpha_at_max(destination));
 }
 
 void Texture::upload(int level, std::span<const glm::vec4> texels, int face) {
@@ -339,7 +340,7 @@ void Texture::upload(int level, std::span<const glm::vec4> texels, int face) {
     encode_texel(format_, glm::dvec4(texels[i]), destination.data() + i * texel_bytes);
   }
   refresh_cube_copy(level, face);
-  note_alpha(level, face);
+  set_level_opaque(level, face, alpha_at_max(destination));
 }
 
 bool Texture::alpha_at_max(std::span<const uint8_t> texels) const {
@@ -360,8 +361,8 @@ bool Texture::alpha_at_max(std::span<const uint8_t> texels) const {
   return differ == 0;
 }
 
-void Texture::note_alpha(int level, int face) {
-  level_opaque_[static_cast<size_t>(face) * levels_ + level] = alpha_at_max(level_bytes(level, face)) ? 1 : 0;
+void Texture::set_level_opaque(int level, int face, bool opaque) {
+  level_opaque_[static_cast<size_t>(face) * levels_ + level] = opaque ? 1 : 0;
   opaque_ = std::all_of(level_opaque_.begin(), level_opaque_.end(), [](uint8_t o) { return o != 0; });
 }
 
@@ -377,9 +378,7 @@ void Texture::upload_rows(int level, int first_row, std::span<const uint8_t> row
   }
   std::memcpy(destination.data() + static_cast<size_t>(first_row) * row_bytes, rows.data(), rows.size());
   refresh_cube_copy(level, face);
-  uint8_t& opaque = level_opaque_[static_cast<size_t>(face) * levels_ + level];
-  opaque = opaque && alpha_at_max(rows) ? 1 : 0;
-  opaque_ = std::all_of(level_opaque_.begin(), level_opaque_.end(), [](uint8_t o) { return o != 0; });
+  set_level_opaque(level, face, level_opaque_[static_cast<size_t>(face) * levels_ + level] && alpha_at_max(rows));
 }
 
 // --- The cube maps' sampling copy -------------------------------------------------------------
@@ -540,7 +539,7 @@ void Texture::generate_mips() {
   }
   for (int level = 1; level < levels_; ++level) {
     refresh_cube_copy(level, -1);
-    for (int face = 0; face < faces(); ++face) note_alpha(level, face);
+    for (int face = 0; face < faces(); ++face) set_level_opaque(level, face, alpha_at_max(level_bytes(level, face)));
   }
 }
 

@@ -140,36 +140,23 @@ LUXEL_INLINE Float lod_log2(const Float& x) {
 
 // --- Formats ----------------------------------------------------------------------------------
 // Each format: kWords per texel, fetch() to the raw domain, the border color in that domain, and
-// finish() from raw to the returned linear RGBA; fetch_rgb() and finish_rgb() do the same for the
-// color channels alone (Opaque). Texel is what the filters carry.
+// finish() from raw to the returned linear RGBA.
 
 struct Rgba8 {
-  using Texel = Float4;
   static constexpr int kWords = 1;
-  LUXEL_INLINE static Float3 fetch_rgb(const int32_t* words, const Int& index) {
-    const Int w = gather(words, index);
-    return {to_float(simd::byte_of<0>(w)), to_float(simd::byte_of<1>(w)), to_float(simd::byte_of<2>(w))};
-  }
   LUXEL_INLINE static Float4 fetch(const int32_t* words, const Int& index) {
     const Int w = gather(words, index);
     return {to_float(simd::byte_of<0>(w)), to_float(simd::byte_of<1>(w)), to_float(simd::byte_of<2>(w)),
             to_float(simd::byte_of<3>(w))};
   }
   static Float4 raw_border(const glm::vec4& b) { return broadcast(b * 255.0f); }
-  static Float finish_channel(const Float& raw) { return divide_by<255>(raw); }
-  static Float4 finish(const Float4& raw) {
+  LUXEL_INLINE static Float4 finish(const Float4& raw) {
     return {divide_by<255>(raw.x), divide_by<255>(raw.y), divide_by<255>(raw.z), divide_by<255>(raw.w)};
   }
 };
 
 struct Rgba8Srgb {
-  using Texel = Float4;
   static constexpr int kWords = 1;
-  LUXEL_INLINE static Float3 fetch_rgb(const int32_t* words, const Int& index) {
-    const float* table = kSrgbToLinear.data();
-    const Int w = gather(words, index);
-    return {gather(table, simd::byte_of<0>(w)), gather(table, simd::byte_of<1>(w)), gather(table, simd::byte_of<2>(w))};
-  }
   LUXEL_INLINE static Float4 fetch(const int32_t* words, const Int& index) {
     const float* table = kSrgbToLinear.data();
     const Int w = gather(words, index);
@@ -177,12 +164,10 @@ struct Rgba8Srgb {
             to_float(simd::byte_of<3>(w))};
   }
   static Float4 raw_border(const glm::vec4& b) { return broadcast({b.x, b.y, b.z, b.w * 255.0f}); }
-  static Float finish_channel(const Float& raw) { return raw; }
-  static Float4 finish(const Float4& raw) { return {raw.x, raw.y, raw.z, divide_by<255>(raw.w)}; }
+  LUXEL_INLINE static Float4 finish(const Float4& raw) { return {raw.x, raw.y, raw.z, divide_by<255>(raw.w)}; }
 };
 
 struct Rgba16f {
-  using Texel = Float4;
   static constexpr int kWords = 2;
   LUXEL_INLINE static Float4 fetch(const int32_t* words, const Int& index) {
     Float4 t;
@@ -190,70 +175,65 @@ struct Rgba16f {
     simd::unpack_halves(gather(words, index + Int(1)), t.z, t.w);
     return t;
   }
-  LUXEL_INLINE static Float3 fetch_rgb(const int32_t* words, const Int& index) {
-    const Float4 t = fetch(words, index);
-    return {t.x, t.y, t.z};
-  }
   static Float4 raw_border(const glm::vec4& b) { return broadcast(b); }
-  static Float finish_channel(const Float& raw) { return raw; }
-  static Float4 finish(const Float4& raw) { return raw; }
+  LUXEL_INLINE static Float4 finish(const Float4& raw) { return raw; }
 };
 
 struct Rgba16 {
-  using Texel = Float4;
   static constexpr int kWords = 2;
-  LUXEL_INLINE static Float3 fetch_rgb(const int32_t* words, const Int& index) {
-    const Int rg = gather(words, index), ba = gather(words, index + Int(1)), low(0xffff);
-    return {to_float(rg & low), to_float((rg >> 16) & low), to_float(ba & low)};
-  }
   LUXEL_INLINE static Float4 fetch(const int32_t* words, const Int& index) {
     const Int rg = gather(words, index), ba = gather(words, index + Int(1)), low(0xffff);
     return {to_float(rg & low), to_float((rg >> 16) & low), to_float(ba & low), to_float((ba >> 16) & low)};
   }
   static Float4 raw_border(const glm::vec4& b) { return broadcast(b * 65535.0f); }
-  static Float finish_channel(const Float& raw) { return divide_by<65535>(raw); }
-  static Float4 finish(const Float4& raw) {
+  LUXEL_INLINE static Float4 finish(const Float4& raw) {
     return {divide_by<65535>(raw.x), divide_by<65535>(raw.y), divide_by<65535>(raw.z),
             divide_by<65535>(raw.w)};
   }
 };
 
 struct R32f {
-  using Texel = Float4;
   static constexpr int kWords = 1;
-  LUXEL_INLINE static Float3 fetch_rgb(const int32_t* words, const Int& index) {
-    const Float one(1.0f);
-    return {gather(reinterpret_cast<const float*>(words), index), one, one};
-  }
   LUXEL_INLINE static Float4 fetch(const int32_t* words, const Int& index) {
-    const Float3 rgb = fetch_rgb(words, index);
-    return {rgb.x, rgb.y, rgb.z, Float(1.0f)};
+    const Float one(1.0f);
+    return {gather(reinterpret_cast<const float*>(words), index), one, one, one};
   }
   static Float4 raw_border(const glm::vec4& b) { return broadcast(b); }
-  static Float finish_channel(const Float& raw) { return raw; }
-  static Float4 finish(const Float4& raw) { return raw; }
+  LUXEL_INLINE static Float4 finish(const Float4& raw) { return raw; }
 };
 
 /// A texture of `Format` whose alpha is at its maximum everywhere (Texture::opaque), read with no
 /// border color: the color channels are filtered alone and alpha is 1, which is what filtering the
 /// constant alpha gives exactly (lerps of equal values, the mean of three equal values, max / max).
+/// The format's own fetch and finish are used; inlined, the work on the alpha they drop goes.
 template <class Format>
 struct Opaque {
-  using Texel = Float3;
   static constexpr int kWords = Format::kWords;
-  LUXEL_INLINE static Float3 fetch(const int32_t* words, const Int& index) { return Format::fetch_rgb(words, index); }
+  LUXEL_INLINE static Float3 fetch(const int32_t* words, const Int& index) {
+    const Float4 t = Format::fetch(words, index);
+    return {t.x, t.y, t.z};
+  }
   static Float3 raw_border(const glm::vec4& b) {
     const Float4 raw = Format::raw_border(b);
     return {raw.x, raw.y, raw.z};
   }
-  static Float4 finish(const Float3& raw) {
-    return {Format::finish_channel(raw.x), Format::finish_channel(raw.y), Format::finish_channel(raw.z), Float(1.0f)};
+  LUXEL_INLINE static Float4 finish(const Float3& raw) {
+    const Float4 done = Format::finish({raw.x, raw.y, raw.z, Float(0.0f)});
+    return {done.x, done.y, done.z, Float(1.0f)};
   }
 };
 
 /// What the filters carry for `Format`: Float4, or Float3 for an Opaque one.
 template <class Format>
-using TexelOf = typename Format::Texel;
+struct TexelType {
+  using type = Float4;
+};
+template <class Format>
+struct TexelType<Opaque<Format>> {
+  using type = Float3;
+};
+template <class Format>
+using TexelOf = typename TexelType<Format>::type;
 
 // --- Per-call state ---------------------------------------------------------------------------
 

@@ -273,16 +273,14 @@ inline Int byte_of(const Int& v) {
   if constexpr (kByte == 0) {
     return v & Int(0xff);
   } else {
-#if defined(__AVX512F__) || defined(__AVX2__)
+#if defined(__AVX512BW__) || (defined(__AVX2__) && !defined(__AVX512F__))
     // Within each 128-bit block, lane l's byte kByte to its lowest byte, zeros above (-1).
     const __m128i pick = _mm_setr_epi8(kByte, -1, -1, -1, 4 + kByte, -1, -1, -1, 8 + kByte, -1, -1, -1, 12 + kByte, -1, -1, -1);
-#endif
 #if defined(__AVX512BW__)
     return Int(_mm512_shuffle_epi8(v, _mm512_broadcast_i32x4(pick)));
-#elif defined(__AVX512F__)
-    return (v >> (8 * kByte)) & Int(0xff);
-#elif defined(__AVX2__)
+#else
     return Int(_mm256_shuffle_epi8(v, _mm256_broadcastsi128_si256(pick)));
+#endif
 #else
     return (v >> (8 * kByte)) & Int(0xff);
 #endif

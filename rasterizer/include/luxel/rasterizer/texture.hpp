@@ -206,8 +206,8 @@ class Texture {
   std::span<uint8_t> level_span(int level, int face);
   /// Remakes the sampling copy of a cube map's `level` after `face` changed (all faces: -1).
   void refresh_cube_copy(int level, int face);
-  /// Records whether `level` of `face` is opaque, after it changed, and updates opaque_.
-  void note_alpha(int level, int face);
+  /// Records whether `level` of `face` is opaque, and opaque_ with it.
+  void set_level_opaque(int level, int face, bool opaque);
   /// Whether every texel of `texels` (whole texels of this format) has alpha at its maximum.
   bool alpha_at_max(std::span<const uint8_t> texels) const;
 
@@ -231,7 +231,7 @@ class Texture {
   std::vector<uint32_t> cube_words_;
   /// Per face and level (face-major): whether its alpha is at the maximum everywhere.
   std::vector<uint8_t> level_opaque_;
-  bool opaque_ = false;
+  bool opaque_ = false;  ///< all of level_opaque_ (read by every sample)
 };
 
 enum class Filter : uint8_t { Point, Linear };
