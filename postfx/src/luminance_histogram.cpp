@@ -6,6 +6,7 @@
 #include "luxel/rasterizer/draw.hpp"
 #include "luxel/rasterizer/srgb.hpp"
 
+#include <array>
 #include <atomic>
 #include <cmath>
 #include <stdexcept>
@@ -73,9 +74,18 @@ uint64_t count_in_range(rasterizer::Context& ctx, rasterizer::DepthStencilTarget
   return in_range;
 }
 
-double srgb_decode(uint8_t code) {
-  const double s = code / 255.0;
-  return s <= 0.04045 ? s / 12.92 : std::pow((s + 0.055) / 1.055, 2.4);
+/// The sRGB curve in double for each 8-bit code: the exact histogram decodes three codes per pixel,
+/// and a pow per code made it the slowest part of settling a still's exposure.
+const std::array<double, 256>& srgb_decoded() {
+  static const std::array<double, 256> table = [] {
+    std::array<double, 256> t{};
+    for (int code = 0; code < 256; ++code) {
+      const double s = code / 255.0;
+      t[size_t(code)] = s <= 0.04045 ? s / 12.92 : std::pow((s + 0.055) / 1.055, 2.4);
+    }
+    return t;
+  }();
+  return table;
 }
 
 }  // namespace
@@ -157,10 +167,11 @@ void LuminanceHistogram::issue(rasterizer::Context& ctx, const rasterizer::Image
 std::vector<uint64_t> exact_histogram(const rasterizer::Image& frame, const HistogramRegion& region, ExposureAlgorithm algorithm) {
   const std::span<const HistogramBucket> buckets = histogram_buckets(algorithm);
   std::vector<uint64_t> counts(buckets.size(), 0);
+  const std::array<double, 256>& decoded = srgb_decoded();
   for (int y = region.y0; y < region.y1; ++y) {
     for (int x = region.x0; x < region.x1; ++x) {
       const uint8_t* p = frame.pixel(x, y);
-      const double luminance = 0.2125 * srgb_decode(p[0]) + 0.7154 * srgb_decode(p[1]) + 0.0721 * srgb_decode(p[2]);
+      const double luminance = 0.2125 * decoded[p[0]] + 0.7154 * decoded[p[1]] + 0.0721 * decoded[p[2]];
       for (size_t b = 0; b < buckets.size(); ++b) {
         counts[b] += luminance >= double(buckets[b].min) && luminance <= double(range_test_max(buckets[b]));
       }
