@@ -73,7 +73,7 @@ int main(int argc, char** argv) {
       ->check(CLI::IsMember({"ps_2_0", "ps_2_b", "ps_3_0"}));
   app.add_flag("--passes", passes,
                "Then time each pass of the built-in scenes' frames (stderr: median ms per pass, each pass run to its end "
-               "before the next, so their sum exceeds the frame's time)");
+               "before the next and without tile memory, so their sum exceeds the frame's time)");
   bool bloom = false;
   std::optional<uint64_t> film_grain_seed;
   app.add_flag("--bloom", bloom, "Add the bloom to the Source frames (as luxel render does; off in the library's FrameSettings)");

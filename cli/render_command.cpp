@@ -141,7 +141,7 @@ void print_stats(const frame::Renderer& renderer, const rasterizer::ContextOptio
             << " blocks_full=" << s.blocks_full
             << " non_finite=" << s.non_finite << " bad_index=" << s.bad_index << " stamps_full=" << s.stamps_full
             << " stamps_partial=" << s.stamps_partial << " stamps_wide_edges=" << s.stamps_wide_edges
-            << " stamps_shaded=" << s.stamps_shaded
+            << " stamps_shaded=" << s.stamps_shaded << " tile_memory_targets=" << s.tile_memory_targets
             << " fast_paths_off=" << rasterizer::fast_paths_off_names(context_options.fast_paths) << "\n";
   for (const frame::ShaderUse& u : renderer.shader_uses())
     std::cout << "shader=" << u.family << " combo=" << u.combo << " pixels=" << u.pixels << " slots=" << u.slots

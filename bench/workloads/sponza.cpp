@@ -232,10 +232,14 @@ SponzaFrame& SponzaFrame::operator=(SponzaFrame&&) noexcept = default;
 
 void SponzaFrame::render(rasterizer::Context& ctx) {
   State& st = *state_;
+  // Cleared whole and discarded once resolved, as the peer's frame may (its depth is never read):
+  // the samples live in tile memory (rasterizer/framebuffer.hpp).
   clear_color(ctx, st.color, kClear);
-  clear_depth(ctx, st.depth, 1.0f);
+  clear_depth_stencil(ctx, st.depth, 1.0f, 0);
   const rasterizer::Framebuffer fb{&st.color, &st.depth};
   for (const Draw& d : st.draws) rasterizer::draw(ctx, fb, d.state, d.geometry, d.vertex, d.pixel);
+  discard(ctx, st.color);
+  discard(ctx, st.depth);
   resolve_into(ctx, st.color, st.image);
 }
 

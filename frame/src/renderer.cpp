@@ -747,9 +747,13 @@ void draw_3d(FrameState& st, Context& ctx, PassClock& clock) {
     if (!st.water_targets) st.water_targets.emplace(water_texture_side(st.settings));
     st.water->render(ctx, st.water_targets->color, st.water_targets->depth, clock);
   }
+  // Cleared whole and discarded once resolved: the frame's samples live in tile memory
+  // (rasterizer/framebuffer.hpp) and never travel to the targets' memory.
   clear_color(ctx, st.color, st.clear);
-  clear_depth(ctx, st.depth, 1.0f);  // as the peer: stencil neither cleared nor used
+  clear_depth_stencil(ctx, st.depth, 1.0f, 0);
   run_passes(ctx, Framebuffer{&st.color, &st.depth}, st.passes, &clock);
+  discard(ctx, st.color);
+  discard(ctx, st.depth);
   // The target's alpha holds what the shaders wrote there (base alpha, blend results, the water's
   // fog factor), which a screen never shows: the image is what is shown, opaque.
   clock.run("resolve", 0, [&] { resolve_into(ctx, st.color, st.image, rasterizer::ResolveAlpha::opaque); });
@@ -877,10 +881,12 @@ std::vector<glm::vec4> Renderer::render_float(Context& ctx) {
     auto byte_of = [byte](float v) { return float((std::bit_cast<uint32_t>(v) >> (8 * byte)) & 255u) / 255.0f; };
     ctx.reset_stats();
     clear_color(ctx, st.color, glm::vec4(byte_of(background.r), byte_of(background.g), byte_of(background.b), 1.0f));
-    clear_depth(ctx, st.depth, 1.0f);
+    clear_depth_stencil(ctx, st.depth, 1.0f, 0);
     for (auto* passes : {&st.passes.opaque, &st.passes.sky}) {
       for (Pass& p : *passes) p.source->run_float_byte(ctx, fb, byte);
     }
+    discard(ctx, st.color);
+    discard(ctx, st.depth);
     resolve_into(ctx, st.color, st.image);
     for (size_t i = 0; i < bits.size(); ++i) bits[i] |= uint32_t(st.image.rgba[i / 3 * 4 + i % 3]) << (8 * byte);
   }

@@ -57,18 +57,20 @@ uint64_t count_in_range(rasterizer::Context& ctx, rasterizer::DepthStencilTarget
   uint64_t in_range = 0;
   counted_draw<Test>(tally, C.name(), shading::source::measure_luminance_range<C>, [&](std::atomic<uint64_t>* pixels) {
     rasterizer::OcclusionQuery query;
+    // The engine clears the stencil at the start of each frame; the frame's samples are not
+    // needed after the count, so they live in tile memory (rasterizer/framebuffer.hpp).
+    rasterizer::clear_depth_stencil(ctx, target, 1.0f, 0);
     if (count == HistogramCount::direct_query) {
       ctx.begin_query(query);
       region.draw(ctx, target, luminance_range_pipeline_state(C.reject, LuminancePass::query), Test{&params, pixels});
       ctx.end_query();
     } else {
-      // The engine clears the stencil at the start of each frame; one mark per frame follows.
-      rasterizer::clear_depth_stencil(ctx, target, 1.0f, 0);
       region.draw(ctx, target, luminance_range_pipeline_state(C.reject, LuminancePass::stencil_mark), Test{&params, pixels});
       ctx.begin_query(query);
       region.draw(ctx, target, luminance_range_pipeline_state(C.reject, LuminancePass::stencil_count), NoPixelWrite{});
       ctx.end_query();
     }
+    rasterizer::discard(ctx, target);
     in_range = ctx.query_result(query);  // flushes: `params` and `pixels` outlive the draws
   });
   return in_range;

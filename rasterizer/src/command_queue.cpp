@@ -28,8 +28,17 @@ int CommandQueue::query_slot(OcclusionQuery* query) {
   return static_cast<int>(queries_.size()) - 1;
 }
 
+std::byte* CommandQueue::tile_memory(int thread, size_t bytes) {
+  if (tile_memory_.size() <= size_t(thread)) tile_memory_.resize(size_t(thread) + 1);
+  SurfaceBuffer<std::byte>& memory = tile_memory_[size_t(thread)];
+  if (memory.size() < bytes) memory = SurfaceBuffer<std::byte>(bytes);
+  return memory.data();
+}
+
 void CommandQueue::reset() {
   commands_.clear();
+  color_targets_.clear();
+  depth_targets_.clear();
   chunks_used_ = 0;
   pending_record_bytes_ = 0;
   queries_.clear();

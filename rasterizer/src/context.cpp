@@ -32,7 +32,7 @@ Context::Context(const ContextOptions& options)
 
 namespace detail {
 void PendingUse::flush() const {
-  if (context_) context_->flush();
+  if (context_) context_->flush_within_frame();
 }
 void PendingUse::release() const {
   if (context_) context_->release(*this);
@@ -57,17 +57,53 @@ void Context::refer(const detail::PendingUse& use) {
   pending_uses_.push_back(&use);
 }
 
-void Context::refer(const ColorTarget& target) { refer(target.pending_); }
-void Context::refer(const DepthStencilTarget& target) { refer(target.pending_); }
+namespace {
+void list(detail::CommandQueue& q, const ColorTarget& t) { q.color_targets().push_back(&t); }
+void list(detail::CommandQueue& q, const DepthStencilTarget& t) { q.depth_targets().push_back(&t); }
+}  // namespace
+
+template <class Target>
+void Context::refer_target(const Target& target, Access access) {
+  refer(target.pending_);
+  detail::FrameUse& use = target.use_;
+  if (access == Access::whole_clear) {
+    use.discarded = use.discard = false;  // new samples, to be kept unless discarded again
+    if (!use.referred) use.starts_cleared = true;
+  } else {
+    use.check_kept(access == Access::resolve ? "resolved" : "drawn into");
+    if (use.discard && access != Access::resolve)
+      throw std::logic_error("a render target was drawn into after discard() in the same frame (only a resolve may follow it)");
+  }
+  if (!use.referred) {
+    use.referred = true;
+    list(*queue_, target);
+  }
+}
+
+template <class Target>
+void Context::discard_target(const Target& target) {
+  refer(target.pending_);
+  detail::FrameUse& use = target.use_;
+  use.discard = true;  // applies when the frame ends (flush)
+  if (!use.referred) {
+    use.referred = true;
+    list(*queue_, target);
+  }
+}
+
+void Context::refer(const ColorTarget& target, Access access) { refer_target(target, access); }
+void Context::refer(const DepthStencilTarget& target, Access access) { refer_target(target, access); }
+void Context::discard(const ColorTarget& target) { discard_target(target); }
+void Context::discard(const DepthStencilTarget& target) { discard_target(target); }
 
 void Context::release(const detail::PendingUse& use) {
   if (active_query_ && &active_query_->use_ == &use) active_query_ = nullptr;
-  flush();
+  flush_frame(false);
 }
 
 void Context::begin_query(OcclusionQuery& query) {
   const auto& pending = queue_->queries();
-  if (std::find(pending.begin(), pending.end(), &query) != pending.end()) flush();
+  if (std::find(pending.begin(), pending.end(), &query) != pending.end()) flush_within_frame();
   refer(query.use_);
   query.samples_ = 0;
   active_query_ = &query;
@@ -82,18 +118,63 @@ uint64_t Context::query_result(const OcclusionQuery& query) {
 
 void Context::reset_stats() { *stats_ = {}; }
 
-void Context::flush() {
-  run_frame();
+void Context::flush() { flush_frame(true); }
+void Context::flush_within_frame() { flush_frame(false); }
+
+void Context::flush_frame(bool ends_frame) {
+  run_frame(ends_frame);
   // Nothing pending refers to anything now; the active query stays referred to.
   for (const detail::PendingUse* use : pending_uses_) use->context_ = nullptr;
   pending_uses_.clear();
   if (active_query_) refer(active_query_->use_);
 }
 
-void Context::run_frame() {
+namespace {
+/// Places in tile memory the targets a frame clears whole first and discards at its end, and
+/// returns the bytes a thread's tile memory needs; the frame's targets forget it afterwards
+/// (FrameEnd).
+template <class Target>
+size_t place_in_tile_memory(const std::vector<const Target*>& targets, bool ends_frame, size_t bytes, uint64_t& count) {
+  for (const Target* t : targets) {
+    detail::FrameUse& use = detail::FrameUseAccess::of(*t);
+    if (!(ends_frame && use.starts_cleared && use.discard)) continue;
+    use.tile_memory_offset = bytes;
+    bytes += (t->tile_bytes() + 63) / 64 * 64;
+    ++count;
+  }
+  return bytes;
+}
+
+/// What a frame leaves of its targets: discarded ones when it ends the frame, and no tile memory.
+template <class Target>
+void end_frame_use(const std::vector<const Target*>& targets, bool ends_frame) {
+  for (const Target* t : targets) {
+    detail::FrameUse& use = detail::FrameUseAccess::of(*t);
+    if (ends_frame && use.discard) use.discarded = true, use.discard = false;
+    use.referred = use.starts_cleared = false;
+    use.tile_memory_offset = detail::kNoTileMemory;
+  }
+}
+}  // namespace
+
+void Context::run_frame(bool ends_frame) {
   detail::CommandQueue& q = *queue_;
-  if (q.empty()) return;
+  if (q.empty()) {
+    end_frame_use(q.color_targets(), ends_frame);
+    end_frame_use(q.depth_targets(), ends_frame);
+    q.reset();
+    return;
+  }
   ++flush_count_;
+  uint64_t in_tile_memory = 0;
+  size_t tile_memory_bytes = 0;
+  if (options_.fast_paths.on(FastPath::TileMemory)) {
+    tile_memory_bytes = place_in_tile_memory(q.color_targets(), ends_frame, tile_memory_bytes, in_tile_memory);
+    tile_memory_bytes = place_in_tile_memory(q.depth_targets(), ends_frame, tile_memory_bytes, in_tile_memory);
+  }
+  std::vector<std::byte*> tile_memory(size_t(thread_count()), nullptr);
+  if (tile_memory_bytes > 0)
+    for (int t = 0; t < thread_count(); ++t) tile_memory[size_t(t)] = q.tile_memory(t, tile_memory_bytes);
   const int tiles = q.layout().tile_count();
   auto& counters = q.tile_counters();
   auto& tile_stats = q.tile_stats();
@@ -103,7 +184,8 @@ void Context::run_frame() {
     counters[t].query_samples.assign(q.queries().size(), 0);
     counters[t].stats = &tile_stats[t];
   }
-  parallel_for(tiles, [&](int tile, int) {
+  parallel_for(tiles, [&](int tile, int thread) {
+    detail::tile_memory_base = tile_memory[size_t(thread)];
     for (const auto& command : q.commands()) command->execute(tile, counters[tile]);
   });
   // Sums in tile order: the totals do not depend on which thread ran which tile.
@@ -112,6 +194,9 @@ void Context::run_frame() {
     *stats_ += tile_stats[t];
   }
   *stats_ += q.front_end_stats();
+  stats_->tile_memory_targets += in_tile_memory;
+  end_frame_use(q.color_targets(), ends_frame);
+  end_frame_use(q.depth_targets(), ends_frame);
   q.reset();
 }
 

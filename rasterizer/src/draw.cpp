@@ -21,6 +21,7 @@ DrawStats& DrawStats::operator+=(const DrawStats& o) {
   rasterized += o.rasterized;
   small_walks += o.small_walks;
   constant_depth += o.constant_depth;
+  tile_memory_targets += o.tile_memory_targets;
   blocks_full += o.blocks_full;
   stamps_full += o.stamps_full;
   stamps_partial += o.stamps_partial;

@@ -17,6 +17,12 @@
 namespace luxel::rasterizer {
 
 namespace detail {
+void FrameUse::check_kept(const char* what) const {
+  if (discarded)
+    throw std::logic_error(std::string("a render target was ") + what +
+                           " after discard() without a whole clear first: its samples are gone");
+}
+
 void FreeAligned::operator()(void* p) const { std::free(p); }
 void* allocate_aligned(size_t bytes) {
   const size_t rounded = (bytes + 63) / 64 * 64;
@@ -67,7 +73,7 @@ bool tile_holds(const SurfaceLayout& L, int tile, const Scissor& region) {
 
 /// Makes the pending frame use `layout`, flushing a frame of another tiling first.
 detail::CommandQueue& queue_for(Context& ctx, const SurfaceLayout& layout) {
-  if (!ctx.queue().accepts(layout)) ctx.flush();
+  if (!ctx.queue().accepts(layout)) ctx.flush_within_frame();
   ctx.queue().set_layout(layout);
   return ctx.queue();
 }
@@ -184,7 +190,8 @@ class ResolveCommand final : public detail::Command {
 
 void clear_color(Context& ctx, ColorTarget& target, glm::vec4 color, const Scissor& region) {
   detail::CommandQueue& queue = queue_for(ctx, target.layout());
-  ctx.refer(target);  // after queue_for, whose flush would forget it
+  // After queue_for, whose flush would forget it.
+  ctx.refer(target, region.enable ? Context::Access::use : Context::Access::whole_clear);
   queue.push(std::make_unique<ClearColorCommand>(target, pack_rgba8(color), region));
 }
 
@@ -193,7 +200,7 @@ void record_depth_clear(Context& ctx, DepthStencilTarget& target, float depth, s
                         const Scissor& region) {
   const float d = std::clamp(std::isnan(depth) ? 0.0f : depth, 0.0f, 1.0f);
   detail::CommandQueue& queue = queue_for(ctx, target.layout());
-  ctx.refer(target);
+  ctx.refer(target, stencil && !region.enable ? Context::Access::whole_clear : Context::Access::use);
   queue.push(std::make_unique<ClearDepthStencilCommand>(target, d, stencil, region));
 }
 }  // namespace
@@ -213,17 +220,20 @@ void load_image(Context& ctx, const Image& image, ColorTarget& target) {
                                 std::to_string(target.height()) + " target");
   }
   detail::CommandQueue& queue = queue_for(ctx, target.layout());
-  ctx.refer(target);
+  ctx.refer(target, Context::Access::whole_clear);
   queue.push(std::make_unique<LoadImageCommand>(image, target));
 }
 
 void resolve_into(Context& ctx, const ColorTarget& target, Image& image, ResolveAlpha alpha, const Scissor& region) {
   if (image.width != target.width() || image.height != target.height()) image = Image(target.width(), target.height());
   detail::CommandQueue& queue = queue_for(ctx, target.layout());
-  ctx.refer(target);  // runs another context's pending frame on it first
+  ctx.refer(target, Context::Access::resolve);  // runs another context's pending frame on it first
   queue.push(std::make_unique<ResolveCommand>(target, image, alpha, region));
   ctx.flush();
 }
+
+void discard(Context& ctx, ColorTarget& target) { ctx.discard(target); }
+void discard(Context& ctx, DepthStencilTarget& target) { ctx.discard(target); }
 
 Image resolve(Context& ctx, const ColorTarget& target, ResolveAlpha alpha) {
   Image image(target.width(), target.height());

@@ -298,7 +298,7 @@ std::string Scene::describe() const {
   return o.str();
 }
 
-SceneOutput render_scene(Context& ctx, const Scene& scene) {
+SceneOutput render_scene(Context& ctx, const Scene& scene, SceneEnd end) {
   std::unique_ptr<ColorTarget> color;
   std::unique_ptr<DepthStencilTarget> ds;
   if (scene.has_color) color = std::make_unique<ColorTarget>(scene.width, scene.height, scene.samples);
@@ -325,9 +325,16 @@ SceneOutput render_scene(Context& ctx, const Scene& scene) {
   }
   if (active) ctx.end_query();
   SceneOutput out;
+  if (end == SceneEnd::discard) {
+    if (ds) discard(ctx, *ds);
+    if (color) discard(ctx, *color), out.resolved = resolve(ctx, *color).rgba;  // ends the frame
+    ctx.flush();
+    out.query = ctx.query_result(query);
+    return out;
+  }
   out.query = ctx.query_result(query);
   ctx.flush();
-  if (color) out.color = read_color(ctx, *color);
+  if (color) out.color = read_color(ctx, *color), out.resolved = resolve(ctx, *color).rgba;
   if (ds) {
     for (int y = 0; y < scene.height; ++y)
       for (int x = 0; x < scene.width; ++x)

@@ -66,13 +66,19 @@ struct Scene {
 Scene random_scene(uint32_t seed, int samples);
 
 struct SceneOutput {
-  std::vector<uint32_t> color;  ///< read_color order; empty without a color target
-  std::vector<float> depth;
+  std::vector<uint32_t> color;  ///< read_color order; empty without a color target or when discarded
+  std::vector<float> depth;     ///< empty when discarded
   std::vector<uint8_t> stencil;
+  std::vector<uint8_t> resolved;  ///< the color target resolved (RGBA8 rows); empty without one
   uint64_t query = 0;
 };
+/// How render_scene ends the frame.
+enum class SceneEnd {
+  keep,     ///< flush, read every sample back, resolve
+  discard,  ///< discard() both targets and resolve: their samples may live in tile memory
+};
 /// Renders with the library.
-SceneOutput render_scene(Context& ctx, const Scene& scene);
+SceneOutput render_scene(Context& ctx, const Scene& scene, SceneEnd end = SceneEnd::keep);
 
 struct SceneReference {
   std::vector<std::vector<uint32_t>> color;  ///< possible values per sample

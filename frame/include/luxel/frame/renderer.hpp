@@ -183,7 +183,9 @@ struct FrameSettings {
   /// off, a frame counts nothing.
   bool count_shading = false;
   /// Time each pass (Renderer::pass_times). The rasterizer then runs each pass over all tiles
-  /// before the next instead of all passes tile by tile, so a timed frame is a little slower.
+  /// before the next instead of all passes tile by tile, and the frame's samples travel through
+  /// the targets' memory between them instead of staying in tile memory, so a timed frame is
+  /// slower.
   bool time_passes = false;
   /// Set: the frame looks through this camera, not `camera` nor the camera path (a cube-map face).
   std::optional<scenes::Camera> view = std::nullopt;

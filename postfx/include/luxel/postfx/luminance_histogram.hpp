@@ -78,8 +78,9 @@ class LuminanceHistogram {
 
   /// One frame's update (above) on `frame`: the finished 8-bit image, sRGB-encoded. `target` is
   /// the depth-stencil target the range test draws into, the size of the frame, with the frame's
-  /// samples (the frame's own, whose depth and stencil it may overwrite, as the engine draws into
-  /// its back buffer's). The range test's shader goes to `tally` (its counting draw, the
+  /// samples (the frame's own, as the engine draws into its back buffer's). Each count clears it
+  /// whole first and discards it after (rasterizer::discard): clear it whole before using it
+  /// again. The range test's shader goes to `tally` (its counting draw, the
   /// stencil's dev/no_pixel_write, is no shader of the catalog).
   void update(rasterizer::Context& ctx, const rasterizer::Image& frame, rasterizer::DepthStencilTarget& target,
               const ShaderTally& tally = {});

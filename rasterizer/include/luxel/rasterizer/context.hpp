@@ -119,7 +119,10 @@ class Context {
   // once, so no frame keeps referring to an Image. Flushing from a destructor is flushing: it must
   // happen on the thread that drives the context.
 
-  /// Runs everything recorded so far.
+  /// Runs everything recorded so far. This and the flushes that resolve() and query_result()
+  /// make end a frame: they apply discard() (framebuffer.hpp). The flushes the context makes by
+  /// itself (a target of another size, the record budget, a target or query released) keep
+  /// every sample for the rest of the frame.
   void flush();
   /// How many flushes had work to run, the ones the queue made by itself included.
   uint64_t flush_count() const { return flush_count_; }
@@ -139,10 +142,22 @@ class Context {
 
   /// The frame being recorded (used by draw() and the clear/resolve commands).
   detail::CommandQueue& queue() { return *queue_; }
+  /// A flush the context makes by itself (see flush()): used by draw() and the commands.
+  void flush_within_frame();
+  /// What a recorded command does with a target.
+  enum class Access {
+    use,          ///< draws into it, or clears part of it
+    whole_clear,  ///< gives every sample a value (clear_color, clear_depth_stencil, load_image)
+    resolve,      ///< reads it for a resolve, which discard() allows before the flush
+  };
   /// Notes that the frame being recorded refers to `target` (used by the same), flushing the
-  /// context whose frame referred to it until now, if another.
-  void refer(const ColorTarget& target);
-  void refer(const DepthStencilTarget& target);
+  /// context whose frame referred to it until now, if another. Throws std::logic_error for a
+  /// use that discard() forbids.
+  void refer(const ColorTarget& target, Access access = Access::use);
+  void refer(const DepthStencilTarget& target, Access access = Access::use);
+  /// discard() (framebuffer.hpp).
+  void discard(const ColorTarget& target);
+  void discard(const DepthStencilTarget& target);
 
  private:
   friend class detail::PendingUse;
@@ -153,8 +168,14 @@ class Context {
   }
   void worker_main(int thread);
   void run_items(int thread);
-  void run_frame();
+  /// Runs the pending frame and forgets what it referred to; `ends_frame` for flush() (see there).
+  void flush_frame(bool ends_frame);
+  void run_frame(bool ends_frame);
   void refer(const detail::PendingUse& use);
+  template <class Target>
+  void refer_target(const Target& target, Access access);
+  template <class Target>
+  void discard_target(const Target& target);
   /// PendingUse::release: flushes, and the holder is no longer the active query.
   void release(const detail::PendingUse& use);
 

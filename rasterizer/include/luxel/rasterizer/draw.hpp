@@ -138,6 +138,7 @@ struct DrawStats {
   uint64_t stamps_partial = 0;     ///< stamps that needed per-sample edge tests
   uint64_t stamps_wide_edges = 0;  ///< of those, stamps evaluated with 64-bit edges
   uint64_t stamps_shaded = 0;      ///< pixel functor invocations (stamps)
+  uint64_t tile_memory_targets = 0;  ///< targets flushes kept in tile memory (FastPath::TileMemory)
 
   DrawStats& operator+=(const DrawStats& o);
 };

@@ -44,12 +44,17 @@ enum class FastPath : uint32_t {
   /// screen passes) test and write one depth, clamped once per triangle, instead of evaluating
   /// and clamping the plane per sample.
   ConstantDepth = 1u << 8,
+  /// A target that a frame (the commands between two flushes) clears whole first and discards
+  /// (discard()) lives in each thread's own tile memory while that frame runs: its samples stay
+  /// in the core's cache from the clear to the resolve and never travel to the target's memory
+  /// (DrawStats::tile_memory_targets). Off, they are kept in the target's memory as any other.
+  TileMemory = 1u << 9,
 };
 
 /// A set of fast paths (all of them by default).
 class FastPaths {
  public:
-  static constexpr uint32_t kAll = (1u << 9) - 1;
+  static constexpr uint32_t kAll = (1u << 10) - 1;
   constexpr FastPaths() = default;
   static constexpr FastPaths none() { return FastPaths(0); }
   static constexpr FastPaths all_but(FastPath p) { return FastPaths(kAll & ~uint32_t(p)); }
@@ -74,7 +79,7 @@ inline constexpr FastPathName kFastPathNames[] = {
     {FastPath::FullCoverage, "full_coverage"},   {FastPath::FixedDepthPaths, "fixed_depth"},
     {FastPath::TrivialShaders, "trivial"},       {FastPath::FlatRecords, "flat"},
     {FastPath::AffineRecords, "affine"},         {FastPath::VertexCache, "vertex_cache"},
-    {FastPath::ConstantDepth, "constant_depth"},
+    {FastPath::ConstantDepth, "constant_depth"}, {FastPath::TileMemory, "tile_memory"},
 };
 
 /// The fast paths left on when those named in `list` are turned off: comma-separated switch

@@ -8,6 +8,16 @@
 // (see simd.hpp). Surfaces are padded to whole tiles; padding is never written by draws.
 //
 // Color is packed as one uint32 per sample: r | g << 8 | b << 16 | a << 24.
+//
+// Tile memory (FastPath::TileMemory), as on tile-based GPUs: a frame (the commands between two
+// flushes, see Context) that clears a target whole before anything else uses it, and discards it
+// (discard()) before the flush, needs its samples only while each tile runs. Such a target's
+// tiles then live in the running thread's own tile memory, reused tile after tile, so they stay
+// in the core's cache: the clear, the draws and the resolve never touch the target's memory,
+// which a 4x MSAA frame otherwise reads and writes back whole every frame. The bytes are the
+// same either way; after discard() a target must be cleared whole (clear_color,
+// clear_depth_stencil or load_image, without a region) before any other use, in every build
+// and with the fast path on or off.
 
 #include "luxel/rasterizer/context.hpp"
 #include "luxel/rasterizer/image.hpp"
@@ -20,6 +30,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <memory>
+#include <utility>
 
 namespace luxel::rasterizer {
 
@@ -54,6 +65,28 @@ struct SurfaceLayout {
 };
 
 namespace detail {
+/// The running thread's tile memory during a flush (set by Context::run_frame).
+inline thread_local std::byte* tile_memory_base = nullptr;
+inline constexpr size_t kNoTileMemory = ~size_t(0);
+
+/// What the frame being recorded does with a target, and what the last one left of it.
+struct FrameUse {
+  bool referred = false;        ///< the pending frame uses it (listed in Context)
+  bool starts_cleared = false;  ///< its first command clears all of it
+  bool discard = false;         ///< discard() since its last whole clear in this frame
+  bool discarded = false;       ///< a finished frame discarded it; not cleared since
+  size_t tile_memory_offset = kNoTileMemory;  ///< where it sits in tile memory, while a flush runs
+  bool in_tile_memory() const { return tile_memory_offset != kNoTileMemory; }
+  /// Throws std::logic_error if the target's samples were discarded: `what` names the use.
+  void check_kept(const char* what) const;
+};
+
+/// The frame use of a target, for the context's flush.
+struct FrameUseAccess {
+  template <class Target>
+  static FrameUse& of(const Target& target) { return target.use_; }
+};
+
 struct FreeAligned {
   void operator()(void* p) const;
 };
@@ -91,16 +124,31 @@ class ColorTarget {
   int width() const { return layout_.width; }
   int height() const { return layout_.height; }
   int samples() const { return layout_.samples; }
-  uint32_t* tile(int t) { return texels_.data() + t * layout_.elements_per_tile(); }
-  const uint32_t* tile(int t) const { return texels_.data() + t * layout_.elements_per_tile(); }
-  uint32_t sample(int x, int y, int s) const { return texels_[layout_.index(x, y, s)]; }
-  void set_sample(int x, int y, int s, uint32_t rgba) { texels_[layout_.index(x, y, s)] = rgba; }
+  /// Tile t's samples, for the commands a flush runs (in tile memory, or in the target's own).
+  uint32_t* tile(int t) { return const_cast<uint32_t*>(std::as_const(*this).tile(t)); }
+  const uint32_t* tile(int t) const {
+    if (use_.in_tile_memory()) return reinterpret_cast<const uint32_t*>(detail::tile_memory_base + use_.tile_memory_offset);
+    return texels_.data() + t * layout_.elements_per_tile();
+  }
+  /// Bytes of one tile's samples.
+  size_t tile_bytes() const { return layout_.elements_per_tile() * sizeof(uint32_t); }
+  /// Read and written after a flush; std::logic_error after discard() until the next whole clear.
+  uint32_t sample(int x, int y, int s) const {
+    use_.check_kept("read");
+    return texels_[layout_.index(x, y, s)];
+  }
+  void set_sample(int x, int y, int s, uint32_t rgba) {
+    use_.check_kept("written");
+    texels_[layout_.index(x, y, s)] = rgba;
+  }
 
  private:
   friend class Context;
+  friend struct detail::FrameUseAccess;
   detail::PendingUse pending_;  // first: see PendingUse
   SurfaceLayout layout_;
   SurfaceBuffer<uint32_t> texels_;
+  mutable detail::FrameUse use_;  // kept by the context whose frame uses the target
 };
 
 /// Float depth in [0, 1] and an 8-bit stencil value per sample. Movable, with the same rule as
@@ -116,17 +164,37 @@ class DepthStencilTarget {
   int width() const { return layout_.width; }
   int height() const { return layout_.height; }
   int samples() const { return layout_.samples; }
-  float* depth_tile(int t) { return depth_.data() + t * layout_.elements_per_tile(); }
-  uint8_t* stencil_tile(int t) { return stencil_.data() + t * layout_.elements_per_tile(); }
-  float depth(int x, int y, int s) const { return depth_[layout_.index(x, y, s)]; }
-  uint8_t stencil(int x, int y, int s) const { return stencil_[layout_.index(x, y, s)]; }
+  /// Tile t's depth and stencil samples, for the commands a flush runs (in tile memory: depth,
+  /// then stencil).
+  float* depth_tile(int t) {
+    if (use_.in_tile_memory()) return reinterpret_cast<float*>(detail::tile_memory_base + use_.tile_memory_offset);
+    return depth_.data() + t * layout_.elements_per_tile();
+  }
+  uint8_t* stencil_tile(int t) {
+    if (use_.in_tile_memory())
+      return reinterpret_cast<uint8_t*>(detail::tile_memory_base + use_.tile_memory_offset) + layout_.elements_per_tile() * sizeof(float);
+    return stencil_.data() + t * layout_.elements_per_tile();
+  }
+  /// Bytes of one tile's samples, both planes.
+  size_t tile_bytes() const { return layout_.elements_per_tile() * (sizeof(float) + sizeof(uint8_t)); }
+  /// Read after a flush; std::logic_error after discard() until the next whole clear.
+  float depth(int x, int y, int s) const {
+    use_.check_kept("read");
+    return depth_[layout_.index(x, y, s)];
+  }
+  uint8_t stencil(int x, int y, int s) const {
+    use_.check_kept("read");
+    return stencil_[layout_.index(x, y, s)];
+  }
 
  private:
   friend class Context;
+  friend struct detail::FrameUseAccess;
   detail::PendingUse pending_;  // first: see PendingUse
   SurfaceLayout layout_;
   SurfaceBuffer<float> depth_;
   SurfaceBuffer<uint8_t> stencil_;
+  mutable detail::FrameUse use_;  // kept by the context whose frame uses the target
 };
 
 /// What a draw renders into. Either target may be absent; present targets must share size and
@@ -150,6 +218,15 @@ void clear_color(Context& ctx, ColorTarget& target, glm::vec4 color, const Sciss
 void clear_depth_stencil(Context& ctx, DepthStencilTarget& target, float depth, uint8_t stencil);
 /// Depth alone (D3DCLEAR_ZBUFFER without D3DCLEAR_STENCIL): stencil keeps its values.
 void clear_depth(Context& ctx, DepthStencilTarget& target, float depth, const Scissor& region = {});
+
+/// Declares that the target's samples are not needed after the frame being recorded
+/// (glInvalidateFramebuffer, Vulkan's store op DONT_CARE): record it before the frame's last use,
+/// a resolve, which flush()es and so ends the frame. A frame that cleared the target whole first then keeps it in tile
+/// memory (FastPath::TileMemory, above). Afterwards the target must be cleared whole before any
+/// other use: drawing into it, resolving it or reading its samples first throws std::logic_error.
+/// A whole clear recorded after discard() in the same frame starts new samples, which are kept.
+void discard(Context& ctx, ColorTarget& target);
+void discard(Context& ctx, DepthStencilTarget& target);
 
 /// Loads an image into every sample of a target of the same size (the reverse of a one-sample
 /// resolve): how a finished frame held as an Image comes back as a target that post-processing

@@ -60,6 +60,11 @@ class CommandQueue {
   std::vector<DrawStats>& tile_stats() { return tile_stats_; }
   DrawStats& front_end_stats() { return *front_end_stats_; }
 
+  /// The targets the pending frame refers to (Context::refer), for tile memory.
+  std::vector<const ColorTarget*>& color_targets() { return color_targets_; }
+  std::vector<const DepthStencilTarget*>& depth_targets() { return depth_targets_; }
+  /// Thread `thread`'s tile memory, at least `bytes` long (kept from flush to flush).
+  std::byte* tile_memory(int thread, size_t bytes);
   /// Forgets the executed frame, keeping the memory.
   void reset();
 
@@ -73,6 +78,9 @@ class CommandQueue {
   std::vector<TileCounters> tile_counters_;
   std::vector<DrawStats> tile_stats_;
   std::unique_ptr<DrawStats> front_end_stats_;
+  std::vector<const ColorTarget*> color_targets_;
+  std::vector<const DepthStencilTarget*> depth_targets_;
+  std::vector<SurfaceBuffer<std::byte>> tile_memory_;  ///< per thread
 };
 
 }  // namespace luxel::rasterizer::detail

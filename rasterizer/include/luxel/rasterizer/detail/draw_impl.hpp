@@ -848,8 +848,11 @@ void draw(Context& ctx, const Framebuffer& fb, const PipelineState& state, const
   const DrawPlan plan = plan_draw(fb, state, N, ctx.options().fast_paths);
   const uint32_t triangles = geometry.triangle_count();
   CommandQueue& queue = ctx.queue();
-  if (!queue.accepts(plan.layout)) ctx.flush();
+  if (!queue.accepts(plan.layout)) ctx.flush_within_frame();
   queue.set_layout(plan.layout);
+  // Before the front end: a draw into a discarded target fails whatever its triangles.
+  if (plan.color) ctx.refer(*plan.color);  // see Context, "The deferred frame"
+  if (plan.depth_stencil) ctx.refer(*plan.depth_stencil);
   queue.front_end_stats().triangles += triangles;
   if (triangles == 0 || plan.constants.clip_x0 >= plan.constants.clip_x1 ||
       plan.constants.clip_y0 >= plan.constants.clip_y1)
@@ -859,7 +862,7 @@ void draw(Context& ctx, const Framebuffer& fb, const PipelineState& state, const
   // A large draw is recorded in parts, and the queue flushes between them once its records take
   // more than the context's budget (ContextOptions::max_pending_record_bytes).
   for (uint32_t part_first = 0; part_first < triangles;) {
-    if (queue.pending_record_bytes() >= ctx.options().max_pending_record_bytes) ctx.flush();
+    if (queue.pending_record_bytes() >= ctx.options().max_pending_record_bytes) ctx.flush_within_frame();
     const uint32_t part = std::min<uint32_t>(triangles - part_first, kTrianglesPerPart);
     // Front end now, in parallel over chunks of triangles; each chunk bins into its own lists.
     const uint32_t threads = static_cast<uint32_t>(ctx.thread_count());
@@ -876,7 +879,7 @@ void draw(Context& ctx, const Framebuffer& fb, const PipelineState& state, const
     for (const DrawStats& s : chunk_stats) queue.front_end_stats() += s;
     for (const ChunkBins* c : chunks) queue.add_pending_record_bytes(c->bytes());
     const int slot = queue.query_slot(ctx.active_query());
-    if (plan.color) ctx.refer(*plan.color);  // see Context, "The deferred frame"
+    if (plan.color) ctx.refer(*plan.color);  // again: a flush above forgot them
     if (plan.depth_stencil) ctx.refer(*plan.depth_stencil);
     queue.push(make_draw_command<N>(plan, state, recorded_shader, std::move(chunks), slot));
     part_first += part;

@@ -1,0 +1,146 @@
+// Tile memory (FastPath::TileMemory, framebuffer.hpp): a frame that clears a target whole first
+// and discards it before its flush keeps the target's tiles in each thread's own memory. The
+// resolves and query counts are the bytes of the same frame kept in the target's memory, on any
+// thread count; a frame split by the queue's own flushes keeps every sample; and what discard()
+// forbids fails the same way with the fast path on or off.
+
+#include "pipeline_support.hpp"
+#include "raster_support.hpp"
+
+#include "luxel/rasterizer/fast_paths.hpp"
+
+#include <gtest/gtest.h>
+
+#include <stdexcept>
+
+namespace luxel::rasterizer::test {
+namespace {
+
+Context make_context(int threads, FastPaths paths = FastPaths(), size_t record_budget = ContextOptions{}.max_pending_record_bytes) {
+  ContextOptions options;
+  options.threads = threads;
+  options.fast_paths = paths;
+  options.max_pending_record_bytes = record_budget;
+  return Context(options);
+}
+
+/// The pipeline oracle's random scenes (depth functions, stencil, blending, discard in the
+/// shader, shader depth, queries; 1, 2, 4 and 8 samples), resolved and counted, ended the way
+/// `end` says.
+std::vector<SceneOutput> render_scenes(Context& ctx, SceneEnd end) {
+  std::vector<SceneOutput> out;
+  for (uint32_t seed = 0; seed < uint32_t(budget(32, 8)); ++seed)
+    out.push_back(render_scene(ctx, random_scene(5151 + seed, 1 << (seed % 4)), end));
+  return out;
+}
+
+void expect_same_resolves(const std::vector<SceneOutput>& a, const std::vector<SceneOutput>& b, const char* what) {
+  ASSERT_EQ(a.size(), b.size());
+  for (size_t i = 0; i < a.size(); ++i) {
+    EXPECT_TRUE(a[i].resolved == b[i].resolved) << what << ", scene " << i;
+    EXPECT_EQ(a[i].query, b[i].query) << what << ", scene " << i;
+  }
+}
+
+TEST(TileMemory, DiscardedFramesResolveAsFramesKeptInTheirTargets) {
+  Context kept_ctx = make_context(2);
+  const std::vector<SceneOutput> kept = render_scenes(kept_ctx, SceneEnd::keep);
+  EXPECT_EQ(kept_ctx.stats().tile_memory_targets, 0u);  // nothing discarded: nothing in tile memory
+
+  for (int threads : {1, 2, 3}) {
+    Context ctx = make_context(threads);
+    ctx.reset_stats();
+    expect_same_resolves(kept, render_scenes(ctx, SceneEnd::discard), "tile memory");
+    EXPECT_GT(ctx.stats().tile_memory_targets, 0u) << threads << " threads";
+  }
+  Context off = make_context(2, FastPaths::all_but(FastPath::TileMemory));
+  off.reset_stats();
+  expect_same_resolves(kept, render_scenes(off, SceneEnd::discard), "tile memory off");
+  EXPECT_EQ(off.stats().tile_memory_targets, 0u);
+}
+
+// A record budget of one byte makes the queue flush by itself between the parts of every draw:
+// those flushes keep the samples (and so leave them in the targets' memory), whatever discard()
+// said, and the frame still resolves to the same bytes.
+TEST(TileMemory, FramesTheQueueSplitsKeepTheirSamples) {
+  Context whole = make_context(2);
+  Context split = make_context(2, FastPaths(), 1);
+  const std::vector<SceneOutput> a = render_scenes(whole, SceneEnd::discard);
+  split.reset_stats();
+  const std::vector<SceneOutput> b = render_scenes(split, SceneEnd::discard);
+  expect_same_resolves(a, b, "split frames");
+  EXPECT_GT(split.flush_count(), whole.flush_count());
+}
+
+/// One triangle over the whole target.
+struct CoverVS {
+  static constexpr int kVaryings = 0;
+  void operator()(uint32_t i, VertexOutput<0>& out) const {
+    const float x[3] = {-1.0f, 3.0f, -1.0f}, y[3] = {-1.0f, -1.0f, 3.0f};
+    out.position = {x[i], y[i], 0.5f, 1.0f};
+  }
+};
+struct WhitePS {
+  static constexpr bool kCanDiscard = false, kWritesDepth = false;
+  void operator()(const PixelInput<0>&, PixelOutput& out) const {
+    const simd::Float one(1.0f);
+    out.color = {one, one, one, one};
+  }
+};
+
+void draw_cover(Context& ctx, ColorTarget& color, DepthStencilTarget& ds) {
+  PipelineState st;
+  st.rasterizer.cull = CullMode::None;
+  draw(ctx, Framebuffer{&color, &ds}, st, Geometry::non_indexed(3), CoverVS{}, WhitePS{});
+}
+
+// What discard() forbids throws std::logic_error with the fast path on and off alike, and a
+// whole clear makes the target usable again.
+TEST(TileMemory, DiscardedTargetsMustBeClearedWholeBeforeAnyUse) {
+  for (FastPaths paths : {FastPaths(), FastPaths::all_but(FastPath::TileMemory)}) {
+    SCOPED_TRACE(fast_paths_off_names(paths));
+    Context ctx = make_context(2, paths);
+    ColorTarget color(100, 70, 4);
+    DepthStencilTarget ds(100, 70, 4);
+    clear_color(ctx, color, glm::vec4(0.0f));
+    clear_depth_stencil(ctx, ds, 1.0f, 0);
+    draw_cover(ctx, color, ds);
+    discard(ctx, color);
+    discard(ctx, ds);
+    EXPECT_THROW(draw_cover(ctx, color, ds), std::logic_error);  // in the frame that discards
+    const Image first = resolve(ctx, color);                    // allowed: ends the frame
+    EXPECT_EQ(first.rgba[0], 255);
+
+    EXPECT_THROW(resolve(ctx, color), std::logic_error);
+    EXPECT_THROW(draw_cover(ctx, color, ds), std::logic_error);
+    EXPECT_THROW(color.sample(0, 0, 0), std::logic_error);
+    EXPECT_THROW(ds.depth(0, 0, 0), std::logic_error);
+    Scissor part;
+    part.enable = true, part.x0 = 0, part.y0 = 0, part.x1 = 10, part.y1 = 10;
+    EXPECT_THROW(clear_color(ctx, color, glm::vec4(0.0f), part), std::logic_error);
+    EXPECT_THROW(clear_depth(ctx, ds, 1.0f), std::logic_error);  // leaves the stencil undefined
+
+    clear_color(ctx, color, glm::vec4(0.0f));
+    clear_depth_stencil(ctx, ds, 1.0f, 0);
+    draw_cover(ctx, color, ds);
+    ctx.flush();
+    EXPECT_EQ(color.sample(50, 35, 3), 0xffffffffu);
+    EXPECT_EQ(ds.depth(50, 35, 3), 0.5f);
+
+    // A discard with nothing pending takes effect when the frame ends; a whole clear in the same
+    // frame after a discard starts samples that are kept.
+    discard(ctx, color);
+    EXPECT_EQ(color.sample(50, 35, 3), 0xffffffffu);
+    ctx.flush();
+    EXPECT_THROW(color.sample(0, 0, 0), std::logic_error);
+    clear_color(ctx, color, glm::vec4(0.0f));
+    clear_depth_stencil(ctx, ds, 1.0f, 0);
+    discard(ctx, color);
+    clear_color(ctx, color, glm::vec4(1.0f, 0.0f, 0.0f, 1.0f));
+    ctx.flush();
+    EXPECT_EQ(color.sample(3, 3, 0), 0xff0000ffu);
+  }
+}
+
+}  // namespace
+}  // namespace luxel::rasterizer::test
