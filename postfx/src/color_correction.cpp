@@ -82,15 +82,20 @@ std::vector<rasterizer::Texture> set_lookups(std::span<const WeightedLut> luts, 
 template <class Combo, template <Combo> class Shader, class Params>
 rasterizer::Image draw_pass(rasterizer::Context& ctx, int width, int height, size_t luts, const auto& rectangle,
                             const Params& params, const ShaderTally& tally, auto for_each_combo, auto measure) {
+  // Cleared (the draw covers it anyway) and discarded once resolved: the target lives in tile
+  // memory only (rasterizer/framebuffer.hpp).
   rasterizer::ColorTarget target(width, height);
+  rasterizer::Image out;
   for_each_combo([&]<Combo C>() {
     if (C.luts != int(luts)) return;
     counted_draw<Shader<C>>(tally, C.name(), measure.template operator()<C>(), [&](std::atomic<uint64_t>* pixels) {
+      rasterizer::clear_color(ctx, target, glm::vec4(0.0f));
       draw_screen_rectangle(ctx, target, post_pass_state(), rectangle, Shader<C>{&params, pixels});
-      ctx.flush();  // the draw reads `params` and `pixels`
+      rasterizer::discard(ctx, target);
+      rasterizer::resolve_into(ctx, target, out);  // flushes: the draw reads `params` and `pixels`
     });
   });
-  return rasterizer::resolve(ctx, target);
+  return out;
 }
 
 }  // namespace

@@ -172,6 +172,11 @@ void Context::run_frame(bool ends_frame) {
     tile_memory_bytes = place_in_tile_memory(q.color_targets(), ends_frame, tile_memory_bytes, in_tile_memory);
     tile_memory_bytes = place_in_tile_memory(q.depth_targets(), ends_frame, tile_memory_bytes, in_tile_memory);
   }
+  // The others run in their own memory, allocated here, before the threads touch it.
+  for (const ColorTarget* t : q.color_targets())
+    if (!detail::FrameUseAccess::of(*t).in_tile_memory()) t->allocate_memory();
+  for (const DepthStencilTarget* t : q.depth_targets())
+    if (!detail::FrameUseAccess::of(*t).in_tile_memory()) t->allocate_memory();
   std::vector<std::byte*> tile_memory(size_t(thread_count()), nullptr);
   if (tile_memory_bytes > 0)
     for (int t = 0; t < thread_count(); ++t) tile_memory[size_t(t)] = q.tile_memory(t, tile_memory_bytes);

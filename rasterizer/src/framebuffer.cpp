@@ -42,13 +42,20 @@ SurfaceLayout::SurfaceLayout(int w, int h, int s) : width(w), height(h), samples
   tiles_y = (h + kTileSize - 1) / kTileSize;
 }
 
-ColorTarget::ColorTarget(int width, int height, int samples)
-    : layout_(width, height, samples), texels_(layout_.element_count()) {
+ColorTarget::ColorTarget(int width, int height, int samples) : layout_(width, height, samples) {}
+
+void ColorTarget::allocate_memory() const {
+  if (texels_.size() != 0) return;
+  texels_ = SurfaceBuffer<uint32_t>(layout_.element_count());
   std::fill_n(texels_.data(), texels_.size(), 0u);
 }
 
-DepthStencilTarget::DepthStencilTarget(int width, int height, int samples)
-    : layout_(width, height, samples), depth_(layout_.element_count()), stencil_(layout_.element_count()) {
+DepthStencilTarget::DepthStencilTarget(int width, int height, int samples) : layout_(width, height, samples) {}
+
+void DepthStencilTarget::allocate_memory() const {
+  if (depth_.size() != 0) return;
+  depth_ = SurfaceBuffer<float>(layout_.element_count());
+  stencil_ = SurfaceBuffer<uint8_t>(layout_.element_count());
   std::fill_n(depth_.data(), depth_.size(), 1.0f);
   std::fill_n(stencil_.data(), stencil_.size(), uint8_t(0));
 }

@@ -128,26 +128,31 @@ class ColorTarget {
   uint32_t* tile(int t) { return const_cast<uint32_t*>(std::as_const(*this).tile(t)); }
   const uint32_t* tile(int t) const {
     if (use_.in_tile_memory()) return reinterpret_cast<const uint32_t*>(detail::tile_memory_base + use_.tile_memory_offset);
-    return texels_.data() + t * layout_.elements_per_tile();
+    return texels_.data() + t * layout_.elements_per_tile();  // allocated by the flush (allocate_memory)
   }
   /// Bytes of one tile's samples.
   size_t tile_bytes() const { return layout_.elements_per_tile() * sizeof(uint32_t); }
   /// Read and written after a flush; std::logic_error after discard() until the next whole clear.
   uint32_t sample(int x, int y, int s) const {
     use_.check_kept("read");
+    allocate_memory();
     return texels_[layout_.index(x, y, s)];
   }
   void set_sample(int x, int y, int s, uint32_t rgba) {
     use_.check_kept("written");
+    allocate_memory();
     texels_[layout_.index(x, y, s)] = rgba;
   }
+  /// The target's own memory, every sample 0, is allocated when first needed: a target that
+  /// only ever lives in tile memory never has it.
+  void allocate_memory() const;
 
  private:
   friend class Context;
   friend struct detail::FrameUseAccess;
   detail::PendingUse pending_;  // first: see PendingUse
   SurfaceLayout layout_;
-  SurfaceBuffer<uint32_t> texels_;
+  mutable SurfaceBuffer<uint32_t> texels_;
   mutable detail::FrameUse use_;  // kept by the context whose frame uses the target
 };
 
@@ -168,7 +173,7 @@ class DepthStencilTarget {
   /// then stencil).
   float* depth_tile(int t) {
     if (use_.in_tile_memory()) return reinterpret_cast<float*>(detail::tile_memory_base + use_.tile_memory_offset);
-    return depth_.data() + t * layout_.elements_per_tile();
+    return depth_.data() + t * layout_.elements_per_tile();  // allocated by the flush (allocate_memory)
   }
   uint8_t* stencil_tile(int t) {
     if (use_.in_tile_memory())
@@ -180,20 +185,25 @@ class DepthStencilTarget {
   /// Read after a flush; std::logic_error after discard() until the next whole clear.
   float depth(int x, int y, int s) const {
     use_.check_kept("read");
+    allocate_memory();
     return depth_[layout_.index(x, y, s)];
   }
   uint8_t stencil(int x, int y, int s) const {
     use_.check_kept("read");
+    allocate_memory();
     return stencil_[layout_.index(x, y, s)];
   }
+  /// The target's own memory, depth 1 and stencil 0 in every sample, is allocated when first
+  /// needed: a target that only ever lives in tile memory never has it.
+  void allocate_memory() const;
 
  private:
   friend class Context;
   friend struct detail::FrameUseAccess;
   detail::PendingUse pending_;  // first: see PendingUse
   SurfaceLayout layout_;
-  SurfaceBuffer<float> depth_;
-  SurfaceBuffer<uint8_t> stencil_;
+  mutable SurfaceBuffer<float> depth_;
+  mutable SurfaceBuffer<uint8_t> stencil_;
   mutable detail::FrameUse use_;  // kept by the context whose frame uses the target
 };
 
