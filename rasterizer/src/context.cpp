@@ -68,14 +68,15 @@ void Context::refer_target(const Target& target, Access access) {
   detail::FrameUse& use = target.use_;
   if (access == Access::whole_clear) {
     use.discarded = use.discard = false;  // new samples, to be kept unless discarded again
-    if (!use.referred) use.starts_cleared = true;
+    if (!use.recorded) use.starts_cleared = true;
   } else {
     use.check_kept(access == Access::resolve ? "resolved" : "drawn into");
     if (use.discard && access != Access::resolve)
       throw std::logic_error("a render target was drawn into after discard() in the same frame (only a resolve may follow it)");
   }
-  if (!use.referred) {
-    use.referred = true;
+  use.recorded = true;
+  if (!use.listed) {
+    use.listed = true;
     list(*queue_, target);
   }
 }
@@ -85,8 +86,8 @@ void Context::discard_target(const Target& target) {
   refer(target.pending_);
   detail::FrameUse& use = target.use_;
   use.discard = true;  // applies when the frame ends (flush)
-  if (!use.referred) {
-    use.referred = true;
+  if (!use.listed) {
+    use.listed = true;
     list(*queue_, target);
   }
 }
@@ -99,6 +100,19 @@ void Context::discard(const DepthStencilTarget& target) { discard_target(target)
 void Context::release(const detail::PendingUse& use) {
   if (active_query_ && &active_query_->use_ == &use) active_query_ = nullptr;
   flush_frame(false);
+  // A target whose discard() the frame carries on stays listed: not one that goes away (or to
+  // another context, which lists it anew).
+  auto drop = [&](auto& targets) {
+    std::erase_if(targets, [&](const auto* t) {
+      if (&t->pending_ != &use) return false;
+      detail::FrameUseAccess::of(*t).listed = false;
+      return true;
+    });
+  };
+  drop(queue_->color_targets());
+  drop(queue_->depth_targets());
+  std::erase(pending_uses_, &use);
+  use.context_ = nullptr;
 }
 
 void Context::begin_query(OcclusionQuery& query) {
@@ -123,21 +137,39 @@ void Context::flush_within_frame() { flush_frame(false); }
 
 void Context::flush_frame(bool ends_frame) {
   run_frame(ends_frame);
-  // Nothing pending refers to anything now; the active query stays referred to.
+  // Nothing pending refers to anything now; the active query stays referred to, and so do the
+  // targets whose discard() the frame carries on (run_frame left them listed).
   for (const detail::PendingUse* use : pending_uses_) use->context_ = nullptr;
   pending_uses_.clear();
   if (active_query_) refer(active_query_->use_);
+  for (const ColorTarget* t : queue_->color_targets()) refer(t->pending_);
+  for (const DepthStencilTarget* t : queue_->depth_targets()) refer(t->pending_);
 }
 
 namespace {
-/// Places in tile memory the targets a frame clears whole first and discards at its end, and
-/// returns the bytes a thread's tile memory needs; the frame's targets forget it afterwards
-/// (FrameEnd).
+/// Whether a frame keeps `target` in tile memory: it clears the target whole first and
+/// discards it at its end.
+bool in_tile_memory(const detail::FrameUse& use, bool tile_memory_ends_frame) {
+  return tile_memory_ends_frame && use.starts_cleared && use.discard;
+}
+
+/// Allocates the own memory of the targets the frame's commands use there, before the threads
+/// touch it.
 template <class Target>
-size_t place_in_tile_memory(const std::vector<const Target*>& targets, bool ends_frame, size_t bytes, uint64_t& count) {
+void allocate_outside_tile_memory(const std::vector<const Target*>& targets, bool tile_memory_ends_frame) {
+  for (const Target* t : targets) {
+    const detail::FrameUse& use = detail::FrameUseAccess::of(*t);
+    if (use.recorded && !in_tile_memory(use, tile_memory_ends_frame)) t->allocate_memory();
+  }
+}
+
+/// Places the frame's tile-memory targets one after another; returns a thread's bytes.
+template <class Target>
+size_t place_in_tile_memory(const std::vector<const Target*>& targets, bool tile_memory_ends_frame, size_t bytes,
+                            uint64_t& count) {
   for (const Target* t : targets) {
     detail::FrameUse& use = detail::FrameUseAccess::of(*t);
-    if (!(ends_frame && use.starts_cleared && use.discard)) continue;
+    if (!in_tile_memory(use, tile_memory_ends_frame)) continue;
     use.tile_memory_offset = bytes;
     bytes += (t->tile_bytes() + 63) / 64 * 64;
     ++count;
@@ -145,38 +177,43 @@ size_t place_in_tile_memory(const std::vector<const Target*>& targets, bool ends
   return bytes;
 }
 
-/// What a frame leaves of its targets: discarded ones when it ends the frame, and no tile memory.
+/// What a frame leaves of its targets: those it discarded when it ends the frame; no tile memory.
+/// A discard() that a frame the context flushed by itself carries on keeps its target listed
+/// (returned in `carried`), to be applied when the frame ends.
 template <class Target>
-void end_frame_use(const std::vector<const Target*>& targets, bool ends_frame) {
+void end_frame_use(const std::vector<const Target*>& targets, bool ends_frame, std::vector<const Target*>& carried) {
   for (const Target* t : targets) {
     detail::FrameUse& use = detail::FrameUseAccess::of(*t);
     if (ends_frame && use.discard) use.discarded = true, use.discard = false;
-    use.referred = use.starts_cleared = false;
+    use.recorded = use.starts_cleared = false;
     use.tile_memory_offset = detail::kNoTileMemory;
+    use.listed = use.discard;
+    if (use.listed) carried.push_back(t);
   }
 }
 }  // namespace
 
+void Context::end_frame(bool ends_frame) {
+  detail::CommandQueue& q = *queue_;
+  std::vector<const ColorTarget*> colors;
+  std::vector<const DepthStencilTarget*> depths;
+  end_frame_use(q.color_targets(), ends_frame, colors);
+  end_frame_use(q.depth_targets(), ends_frame, depths);
+  q.reset();
+  q.color_targets() = std::move(colors);
+  q.depth_targets() = std::move(depths);
+}
+
 void Context::run_frame(bool ends_frame) {
   detail::CommandQueue& q = *queue_;
-  if (q.empty()) {
-    end_frame_use(q.color_targets(), ends_frame);
-    end_frame_use(q.depth_targets(), ends_frame);
-    q.reset();
-    return;
-  }
+  if (q.empty()) return end_frame(ends_frame);
   ++flush_count_;
+  const bool tile_memory_ends_frame = ends_frame && options_.fast_paths.on(FastPath::TileMemory);
+  allocate_outside_tile_memory(q.color_targets(), tile_memory_ends_frame);
+  allocate_outside_tile_memory(q.depth_targets(), tile_memory_ends_frame);
   uint64_t in_tile_memory = 0;
-  size_t tile_memory_bytes = 0;
-  if (options_.fast_paths.on(FastPath::TileMemory)) {
-    tile_memory_bytes = place_in_tile_memory(q.color_targets(), ends_frame, tile_memory_bytes, in_tile_memory);
-    tile_memory_bytes = place_in_tile_memory(q.depth_targets(), ends_frame, tile_memory_bytes, in_tile_memory);
-  }
-  // The others run in their own memory, allocated here, before the threads touch it.
-  for (const ColorTarget* t : q.color_targets())
-    if (!detail::FrameUseAccess::of(*t).in_tile_memory()) t->allocate_memory();
-  for (const DepthStencilTarget* t : q.depth_targets())
-    if (!detail::FrameUseAccess::of(*t).in_tile_memory()) t->allocate_memory();
+  size_t tile_memory_bytes = place_in_tile_memory(q.color_targets(), tile_memory_ends_frame, 0, in_tile_memory);
+  tile_memory_bytes = place_in_tile_memory(q.depth_targets(), tile_memory_ends_frame, tile_memory_bytes, in_tile_memory);
   std::vector<std::byte*> tile_memory(size_t(thread_count()), nullptr);
   if (tile_memory_bytes > 0)
     for (int t = 0; t < thread_count(); ++t) tile_memory[size_t(t)] = q.tile_memory(t, tile_memory_bytes);
@@ -200,9 +237,7 @@ void Context::run_frame(bool ends_frame) {
   }
   *stats_ += q.front_end_stats();
   stats_->tile_memory_targets += in_tile_memory;
-  end_frame_use(q.color_targets(), ends_frame);
-  end_frame_use(q.depth_targets(), ends_frame);
-  q.reset();
+  end_frame(ends_frame);
 }
 
 void Context::run_items(int thread) {

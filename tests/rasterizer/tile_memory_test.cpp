@@ -59,9 +59,9 @@ TEST(TileMemory, DiscardedFramesResolveAsFramesKeptInTheirTargets) {
   EXPECT_EQ(off.stats().tile_memory_targets, 0u);
 }
 
-// A record budget of one byte makes the queue flush by itself between the parts of every draw:
-// those flushes keep the samples (and so leave them in the targets' memory), whatever discard()
-// said, and the frame still resolves to the same bytes.
+// A record budget of one byte makes the queue flush by itself before every draw part after the
+// first: those flushes keep the samples (in the targets' own memory), whatever discard() said,
+// and the frames still resolve to the same bytes.
 TEST(TileMemory, FramesTheQueueSplitsKeepTheirSamples) {
   Context whole = make_context(2);
   Context split = make_context(2, FastPaths(), 1);
@@ -140,6 +140,87 @@ TEST(TileMemory, DiscardedTargetsMustBeClearedWholeBeforeAnyUse) {
     ctx.flush();
     EXPECT_EQ(color.sample(3, 3, 0), 0xff0000ffu);
   }
+}
+
+// Frames that do not start with a whole clear run in the targets' own memory: a region clear,
+// a depth clear that leaves the stencil, a draw first. A load_image is a whole clear, and so is a
+// clear after a discard() at the start of a frame (the glInvalidateFramebuffer pattern).
+TEST(TileMemory, OnlyFramesThatStartWithAWholeClearLiveInTileMemory) {
+  struct Case {
+    const char* name;
+    uint64_t in_tile_memory;  // targets kept in tile memory
+    void (*start)(Context&, ColorTarget&, DepthStencilTarget&);
+  };
+  static const Image image = [] {
+    Image im(100, 70);
+    for (size_t i = 0; i < im.rgba.size(); ++i) im.rgba[i] = uint8_t(i * 37 % 251);
+    return im;
+  }();
+  const Case cases[] = {
+      {"whole clears", 2, [](Context& c, ColorTarget& t, DepthStencilTarget& d) {
+         clear_color(c, t, glm::vec4(0.25f)), clear_depth_stencil(c, d, 1.0f, 0);
+       }},
+      {"a region clear", 1, [](Context& c, ColorTarget& t, DepthStencilTarget& d) {
+         Scissor r;
+         r.enable = true, r.x0 = 0, r.y0 = 0, r.x1 = 100, r.y1 = 70;
+         clear_color(c, t, glm::vec4(0.25f), r), clear_depth_stencil(c, d, 1.0f, 0);
+       }},
+      {"depth without stencil", 1, [](Context& c, ColorTarget& t, DepthStencilTarget& d) {
+         clear_color(c, t, glm::vec4(0.25f)), clear_depth(c, d, 1.0f);
+       }},
+      {"a draw first", 0, [](Context& c, ColorTarget& t, DepthStencilTarget& d) { draw_cover(c, t, d); }},
+      {"load_image", 2, [](Context& c, ColorTarget& t, DepthStencilTarget& d) {
+         load_image(c, image, t), clear_depth_stencil(c, d, 0.75f, 3);
+       }},
+      {"discard, then clear", 2, [](Context& c, ColorTarget& t, DepthStencilTarget& d) {
+         discard(c, t), discard(c, d);
+         clear_color(c, t, glm::vec4(0.25f)), clear_depth_stencil(c, d, 1.0f, 0);
+       }},
+  };
+  for (const Case& k : cases) {
+    std::vector<uint8_t> resolved[2];
+    for (int end = 0; end < 2; ++end) {
+      Context ctx = make_context(2);
+      ColorTarget color(100, 70, 4);
+      DepthStencilTarget ds(100, 70, 4);
+      ctx.reset_stats();
+      k.start(ctx, color, ds);
+      PipelineState st;
+      st.rasterizer.cull = CullMode::None;
+      st.depth_stencil.depth_func = CompareFunc::Greater;  // reads what the start left
+      draw(ctx, Framebuffer{&color, &ds}, st, Geometry::non_indexed(3), CoverVS{}, WhitePS{});
+      if (end == 1) discard(ctx, color), discard(ctx, ds);
+      resolved[end] = resolve(ctx, color).rgba;
+      EXPECT_EQ(ctx.stats().tile_memory_targets, end == 1 ? k.in_tile_memory : 0u) << k.name;
+    }
+    EXPECT_TRUE(resolved[0] == resolved[1]) << k.name;
+  }
+}
+
+// A discard() that a frame split by the context (here: a target of another size) carries on is
+// applied when the frame ends; a target that goes away meanwhile leaves nothing behind.
+TEST(TileMemory, ADiscardOutlivesTheFlushesTheContextMakes) {
+  Context ctx = make_context(2);
+  ColorTarget a(100, 70, 4), b(30, 20, 1);
+  clear_color(ctx, a, glm::vec4(1.0f));
+  ctx.flush();
+  discard(ctx, a);
+  clear_color(ctx, b, glm::vec4(0.0f));  // another tiling: the context flushes a's frame
+  EXPECT_EQ(a.sample(1, 1, 0), 0xffffffffu);
+  resolve(ctx, b);  // ends the frame
+  EXPECT_THROW(a.sample(1, 1, 0), std::logic_error);
+  {
+    ColorTarget c(100, 70, 4);
+    discard(ctx, c);
+    clear_color(ctx, b, glm::vec4(0.0f));
+  }  // c goes while its discard is carried on
+  resolve(ctx, b);
+  ColorTarget d(100, 70, 4);
+  discard(ctx, d);
+  clear_color(ctx, b, glm::vec4(0.0f));
+  ColorTarget e = std::move(d);  // takes the discard along
+  resolve(ctx, e);               // a resolve may follow a discard
+  EXPECT_THROW(resolve(ctx, e), std::logic_error);
 }
 
 }  // namespace

@@ -171,6 +171,8 @@ class Context {
   /// Runs the pending frame and forgets what it referred to; `ends_frame` for flush() (see there).
   void flush_frame(bool ends_frame);
   void run_frame(bool ends_frame);
+  /// Forgets the frame that ran, keeping the discard()s a frame that does not end carries on.
+  void end_frame(bool ends_frame);
   void refer(const detail::PendingUse& use);
   template <class Target>
   void refer_target(const Target& target, Access access);

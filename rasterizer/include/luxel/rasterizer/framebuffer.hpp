@@ -71,7 +71,18 @@ inline constexpr size_t kNoTileMemory = ~size_t(0);
 
 /// What the frame being recorded does with a target, and what the last one left of it.
 struct FrameUse {
-  bool referred = false;        ///< the pending frame uses it (listed in Context)
+  FrameUse() = default;
+  /// A moved target takes its discard() along, not the frame's bookkeeping (a flush ran first,
+  /// see PendingUse); being listed belongs to the object, which a context's lists name.
+  FrameUse(const FrameUse& other) : discard(other.discard), discarded(other.discarded) {}
+  FrameUse& operator=(const FrameUse& other) {
+    discard = other.discard, discarded = other.discarded;
+    recorded = starts_cleared = false;
+    tile_memory_offset = kNoTileMemory;
+    return *this;
+  }
+  bool listed = false;          ///< in the context's lists: a command or discard() in this frame
+  bool recorded = false;        ///< a command of this frame uses it
   bool starts_cleared = false;  ///< its first command clears all of it
   bool discard = false;         ///< discard() since its last whole clear in this frame
   bool discarded = false;       ///< a finished frame discarded it; not cleared since
@@ -133,6 +144,8 @@ class ColorTarget {
   /// Bytes of one tile's samples.
   size_t tile_bytes() const { return layout_.elements_per_tile() * sizeof(uint32_t); }
   /// Read and written after a flush; std::logic_error after discard() until the next whole clear.
+  /// The first access may allocate the target's memory (allocate_memory): not from two threads
+  /// at once then.
   uint32_t sample(int x, int y, int s) const {
     use_.check_kept("read");
     allocate_memory();
@@ -182,7 +195,8 @@ class DepthStencilTarget {
   }
   /// Bytes of one tile's samples, both planes.
   size_t tile_bytes() const { return layout_.elements_per_tile() * (sizeof(float) + sizeof(uint8_t)); }
-  /// Read after a flush; std::logic_error after discard() until the next whole clear.
+  /// Read after a flush; std::logic_error after discard() until the next whole clear. The first
+  /// read may allocate the target's memory (allocate_memory): not from two threads at once then.
   float depth(int x, int y, int s) const {
     use_.check_kept("read");
     allocate_memory();
