@@ -244,11 +244,13 @@ void clear_depth_stencil(Context& ctx, DepthStencilTarget& target, float depth, 
 void clear_depth(Context& ctx, DepthStencilTarget& target, float depth, const Scissor& region = {});
 
 /// Declares that the target's samples are not needed after the frame being recorded
-/// (glInvalidateFramebuffer, Vulkan's store op DONT_CARE): record it before the frame's last use,
-/// a resolve, which flush()es and so ends the frame. A frame that cleared the target whole first then keeps it in tile
-/// memory (FastPath::TileMemory, above). Afterwards the target must be cleared whole before any
-/// other use: drawing into it, resolving it or reading its samples first throws std::logic_error.
-/// A whole clear recorded after discard() in the same frame starts new samples, which are kept.
+/// (glInvalidateFramebuffer, Vulkan's store op DONT_CARE). Record it before the frame's last use,
+/// a resolve, which flushes and so ends the frame; in that frame only a resolve may follow it (a
+/// draw throws std::logic_error). A frame that cleared the target whole first then keeps it in
+/// tile memory (FastPath::TileMemory, above). Once the frame has ended, the target must be
+/// cleared whole before any other use: drawing into it, resolving it or reading its samples first
+/// throws std::logic_error. A whole clear recorded after discard() in the same frame starts new
+/// samples, which are kept.
 void discard(Context& ctx, ColorTarget& target);
 void discard(Context& ctx, DepthStencilTarget& target);
 
