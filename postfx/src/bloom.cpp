@@ -59,8 +59,12 @@ void Bloom::require_copy(const char* pass) const {
   if (!frame_texture_) throw std::logic_error(std::string("bloom: ") + pass + " before any copy of a frame");
 }
 
-void Bloom::keep_small(rasterizer::Context& ctx, int index) {
-  rasterizer::discard(ctx, *small_target_);  // its frame lives in tile memory (see downsample)
+void Bloom::small_pass(rasterizer::Context& ctx, int index, const std::function<void()>& draw) {
+  // Cleared (each draw covers it anyway) and discarded once resolved: the small target lives in
+  // tile memory only (rasterizer/framebuffer.hpp).
+  rasterizer::clear_color(ctx, *small_target_, glm::vec4(0.0f));
+  draw();
+  rasterizer::discard(ctx, *small_target_);
   rasterizer::resolve_into(ctx, *small_target_, small_image_);
   small_texture_[index]->upload(0, std::span<const uint8_t>(small_image_.rgba));
 }
@@ -86,13 +90,11 @@ void Bloom::downsample(rasterizer::Context& ctx, const ShaderTally& tally) {
   std::copy(std::begin(src::kDownsampleTapOffsets), std::end(src::kDownsampleTapOffsets), taps.begin());
   const TexelRect rect{0.0f, 0.0f, static_cast<float>(W - 2), static_cast<float>(H - 2), W, H};
   counted_draw<src::DownsamplePixelShader>(tally, src::kSingleCombo, src::measure_downsample, [&](std::atomic<uint64_t>* pixels) {
-    // Cleared (the draw covers it anyway) and discarded once resolved (keep_small): the quarter
-    // target lives in tile memory only (rasterizer/framebuffer.hpp).
-    rasterizer::clear_color(ctx, *small_target_, glm::vec4(0.0f));
-    draw_screen_rectangle(ctx, *small_target_, post_pass_state(),
-                          screen_rectangle<4>(small_target_->width(), small_target_->height(), rect, taps),
-                          src::DownsamplePixelShader{&params, pixels});
-    keep_small(ctx, 0);
+    small_pass(ctx, 0, [&] {
+      draw_screen_rectangle(ctx, *small_target_, post_pass_state(),
+                            screen_rectangle<4>(small_target_->width(), small_target_->height(), rect, taps),
+                            src::DownsamplePixelShader{&params, pixels});
+    });
   });
 }
 
@@ -115,10 +117,10 @@ void Bloom::blur_y(rasterizer::Context& ctx, float amount, const ShaderTally& ta
 void Bloom::draw_blur(rasterizer::Context& ctx, const src::BlurParams& params, int into, const ShaderTally& tally) {
   const int w = small_target_->width(), h = small_target_->height();
   counted_draw<src::BlurPixelShader>(tally, src::kSingleCombo, src::measure_blur, [&](std::atomic<uint64_t>* pixels) {
-    rasterizer::clear_color(ctx, *small_target_, glm::vec4(0.0f));  // as in downsample
-    draw_screen_rectangle(ctx, *small_target_, post_pass_state(), screen_rectangle(w, h, whole_texture(w, h)),
-                          src::BlurPixelShader{&params, pixels});
-    keep_small(ctx, into);
+    small_pass(ctx, into, [&] {
+      draw_screen_rectangle(ctx, *small_target_, post_pass_state(), screen_rectangle(w, h, whole_texture(w, h)),
+                            src::BlurPixelShader{&params, pixels});
+    });
   });
 }
 

@@ -81,10 +81,7 @@ uint64_t count_in_range(rasterizer::Context& ctx, rasterizer::DepthStencilTarget
 const std::array<double, 256>& srgb_decoded() {
   static const std::array<double, 256> table = [] {
     std::array<double, 256> t{};
-    for (int code = 0; code < 256; ++code) {
-      const double s = code / 255.0;
-      t[size_t(code)] = s <= 0.04045 ? s / 12.92 : std::pow((s + 0.055) / 1.055, 2.4);
-    }
+    for (int code = 0; code < 256; ++code) t[size_t(code)] = rasterizer::srgb_to_linear(code / 255.0);
     return t;
   }();
   return table;

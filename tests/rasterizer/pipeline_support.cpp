@@ -327,9 +327,8 @@ SceneOutput render_scene(Context& ctx, const Scene& scene, SceneEnd end) {
   SceneOutput out;
   if (end == SceneEnd::discard) {
     if (ds) discard(ctx, *ds);
-    if (color) discard(ctx, *color), out.resolved = resolve(ctx, *color).rgba;  // ends the frame
-    ctx.flush();
-    out.query = ctx.query_result(query);
+    if (color) discard(ctx, *color), out.resolved = resolve(ctx, *color).rgba;
+    out.query = ctx.query_result(query);  // ends the frame (already ended by the resolve, if any)
     return out;
   }
   out.query = ctx.query_result(query);

@@ -37,6 +37,7 @@
 #include "luxel/rasterizer/texture.hpp"
 #include "luxel/shading/source/bloom_blur.hpp"
 
+#include <functional>
 #include <optional>
 
 namespace luxel::postfx {
@@ -93,9 +94,10 @@ class Bloom {
   void fit(int frame_width, int frame_height);
   /// Throws std::logic_error naming `pass` when no frame has been copied yet.
   void require_copy(const char* pass) const;
-  /// Reads the small target back (small_image_) into small texture `index`: a render target that
-  /// the next pass samples, as the SDK's targets are also textures.
-  void keep_small(rasterizer::Context& ctx, int index);
+  /// One pass on the small target: `draw` records its draw, and the result is read back
+  /// (small_image_) into small texture `index`, a render target that the next pass samples, as
+  /// the SDK's targets are also textures.
+  void small_pass(rasterizer::Context& ctx, int index, const std::function<void()>& draw);
   /// A blur with `params` drawn on the small target and kept in small texture `into`.
   void draw_blur(rasterizer::Context& ctx, const shading::source::BlurParams& params, int into, const ShaderTally& tally);
 
