@@ -10,6 +10,7 @@
 #include "luxel/frame/look.hpp"
 #include "luxel/frame/textures.hpp"
 #include "luxel/postfx/bloom_amount.hpp"
+#include "luxel/postfx/full_frame.hpp"
 #include "luxel/rasterizer/framebuffer.hpp"
 #include "luxel/rasterizer/msaa.hpp"
 #include "luxel/rasterizer/srgb.hpp"
@@ -212,6 +213,7 @@ struct FrameState {
   std::optional<postfx::Bloom> bloom;
   postfx::BloomAmount bloom_amount;                      // smoothed from frame to frame
   std::optional<postfx::FilmGrain> film_grain;
+  postfx::FullFrameTexture full_frame;  // _rt_FullFrameFB: the frame's one copy for the post passes
 
   FrameState(const scenes::Scene& s, const FrameSettings& f, std::shared_ptr<const SceneTextures> t)
       : scene(&s), settings(f), color(f.width, f.height, f.samples), depth(f.width, f.height, f.samples), prepared(std::move(t)) {}
@@ -839,29 +841,39 @@ void Renderer::render(Context& ctx) {
   }
   // The post passes add their shaders after the 3D draws'.
   const postfx::ShaderTally tally{st.settings.count_shading ? &st.shader_uses : nullptr, st.settings.model};
+  const glm::vec3 eye = frame_camera(*st.scene, st.settings).position;
+  const std::vector<postfx::WeightedLut> luts =
+      st.color_correction ? st.color_correction->weighted_at(st.settings.time) : std::vector<postfx::WeightedLut>{};
+  // INTEGER HDR: no LDR factor (bloom_amount.hpp). At 0 the bloom's passes do not run (Bloom).
+  const float bloom_amount =
+      st.bloom ? st.bloom_amount.advance(scenes::exposure_at(*st.scene, eye).bloom_scale, shading::source::HdrType::integer) : 0.0f;
+  const bool blooms = st.bloom && bloom_amount > 0.0f;
+  // UpdateScreenEffectTexture: one copy of the frame, which every pass below reads.
+  if (st.auto_exposure || blooms || !luts.empty()) clock.run("frame copy", 0, [&] { st.full_frame.update(st.image); });
   if (st.auto_exposure) {
-    clock.run("histogram", 1, [&] { st.auto_exposure->measure(ctx, st.image, st.depth, std::max(dt, 0.0f), tally); });
+    clock.run("histogram", 1, [&] {
+      st.auto_exposure->measure(ctx, st.full_frame.texture(), st.depth, std::max(dt, 0.0f), tally);
+    });
     if (st.auto_exposure->scale() != st.exposure) {
       st.exposure = st.auto_exposure->scale();
       st.views_current = false;  // the draws carry the scale in their constants
     }
   }
-  const glm::vec3 eye = frame_camera(*st.scene, st.settings).position;
-  const std::vector<postfx::WeightedLut> luts =
-      st.color_correction ? st.color_correction->weighted_at(st.settings.time) : std::vector<postfx::WeightedLut>{};
-  bool bloomed = false;  // blurred, for the color correction to add (Engine_Post, SOURCE_FACTS 8.3)
-  if (st.bloom) {
-    // INTEGER HDR: no LDR factor (bloom_amount.hpp).
-    const float amount = st.bloom_amount.advance(scenes::exposure_at(*st.scene, eye).bloom_scale, shading::source::HdrType::integer);
+  if (blooms) {
     if (luts.empty()) {
-      clock.run("bloom", 5, [&] { st.bloom->apply(ctx, st.image, amount, tally); });
+      clock.run("bloom", 5, [&] {
+        st.bloom->blur(ctx, st.full_frame.texture(), bloom_amount, tally);
+        st.bloom->add(ctx, st.image, tally);
+      });
     } else {
-      clock.run("bloom", 3, [&] { bloomed = st.bloom->blur(ctx, st.image, amount, tally); });
+      // Blurred only: the color correction adds it (Engine_Post, SOURCE_FACTS 8.3).
+      clock.run("bloom", 3, [&] { st.bloom->blur(ctx, st.full_frame.texture(), bloom_amount, tally); });
     }
   }
   if (!luts.empty()) {
     clock.run("color correction", 1, [&] {
-      st.image = bloomed ? postfx::color_correct(ctx, *st.bloom, luts, tally) : postfx::color_correct(ctx, st.image, luts, tally);
+      st.image = blooms ? postfx::color_correct(ctx, *st.bloom, luts, tally)
+                        : postfx::color_correct(ctx, st.full_frame.texture(), luts, tally);
     });
   }
   if (st.film_grain) {

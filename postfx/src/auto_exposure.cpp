@@ -153,9 +153,19 @@ void AutoExposure::set_controls(const AutoExposureSettings& controls) {
   settings_ = s;
 }
 
+void AutoExposure::measure(rasterizer::Context& ctx, const rasterizer::Texture& frame, rasterizer::DepthStencilTarget& target,
+                           float dt, const ShaderTally& tally) {
+  histogram_.update(ctx, frame, target, tally);
+  move_scale(dt);
+}
+
 void AutoExposure::measure(rasterizer::Context& ctx, const rasterizer::Image& frame, rasterizer::DepthStencilTarget& target,
                            float dt, const ShaderTally& tally) {
   histogram_.update(ctx, frame, target, tally);
+  move_scale(dt);
+}
+
+void AutoExposure::move_scale(float dt) {
   last_target_ = target_scale(histogram_.buckets(), settings_, scale_.current(), histogram_.viewport_pixels());
   scale_.push(last_target_, dt);
 }

@@ -46,9 +46,6 @@ BloomSize bloom_size(int frame_width, int frame_height) {
 
 void Bloom::fit(int frame_width, int frame_height) {
   const BloomSize small = bloom_size(frame_width, frame_height);
-  if (!frame_texture_ || frame_texture_->width() != frame_width || frame_texture_->height() != frame_height) {
-    frame_texture_ = gamma_texture(frame_width, frame_height);
-  }
   if (!small_target_ || small_target_->width() != small.width || small_target_->height() != small.height) {
     small_target_.emplace(small.width, small.height);
     for (auto& t : small_texture_) t = gamma_texture(small.width, small.height);
@@ -56,7 +53,7 @@ void Bloom::fit(int frame_width, int frame_height) {
 }
 
 void Bloom::require_copy(const char* pass) const {
-  if (!frame_texture_) throw std::logic_error(std::string("bloom: ") + pass + " before any copy of a frame");
+  if (!frame_) throw std::logic_error(std::string("bloom: ") + pass + " before any copy of a frame");
 }
 
 void Bloom::small_pass(rasterizer::Context& ctx, int index, const std::function<void()>& draw) {
@@ -70,21 +67,29 @@ void Bloom::small_pass(rasterizer::Context& ctx, int index, const std::function<
 }
 
 void Bloom::copy(rasterizer::Context& ctx, const rasterizer::ColorTarget& frame) {
-  fit(frame.width(), frame.height());
   rasterizer::resolve_into(ctx, frame, frame_image_);
-  frame_texture_->upload(0, std::span<const uint8_t>(frame_image_.rgba));
+  copy(frame_image_);
 }
 
 void Bloom::copy(const rasterizer::Image& frame) {
   fit(frame.width, frame.height);
-  frame_texture_->upload(0, std::span<const uint8_t>(frame.rgba));
+  copy_.update(frame);
+  frame_ = &copy_.texture();
+}
+
+void Bloom::read_frame(const rasterizer::Texture& frame) {
+  if (frame.kind() != rasterizer::TextureKind::Texture2D || frame.mip_levels() != 1 ||
+      (frame.format() != rasterizer::TextureFormat::RGBA8))
+    throw std::invalid_argument("bloom: the frame's copy is not an RGBA8 2D texture of one level");
+  fit(frame.width(), frame.height());
+  frame_ = &frame;
 }
 
 void Bloom::downsample(rasterizer::Context& ctx, const ShaderTally& tally) {
   require_copy("downsample");
-  const int W = frame_texture_->width(), H = frame_texture_->height();
+  const int W = frame_->width(), H = frame_->height();
   src::DownsampleParams params;
-  params.frame = {0, &*frame_texture_, bilinear_clamped()};
+  params.frame = {0, frame_, bilinear_clamped()};
   params.tint = src::downsample_constant(options_.tint);
   std::array<glm::vec2, 4> taps;
   std::copy(std::begin(src::kDownsampleTapOffsets), std::end(src::kDownsampleTapOffsets), taps.begin());
@@ -126,7 +131,7 @@ void Bloom::draw_blur(rasterizer::Context& ctx, const src::BlurParams& params, i
 
 const rasterizer::Texture& Bloom::frame_texture() const {
   require_copy("frame_texture");
-  return *frame_texture_;
+  return *frame_;
 }
 
 const rasterizer::Texture& Bloom::bloom_texture() const {
@@ -161,7 +166,10 @@ void Bloom::apply(rasterizer::Context& ctx, rasterizer::ColorTarget& frame, floa
 }
 
 void Bloom::apply(rasterizer::Context& ctx, rasterizer::Image& frame, float amount, const ShaderTally& tally) {
-  if (!blur(ctx, frame, amount, tally)) return;
+  if (blur(ctx, frame, amount, tally)) add(ctx, frame, tally);
+}
+
+void Bloom::add(rasterizer::Context& ctx, rasterizer::Image& frame, const ShaderTally& tally) {
   if (!image_target_ || image_target_->width() != frame.width || image_target_->height() != frame.height) {
     image_target_.emplace(frame.width, frame.height);
   }
@@ -173,10 +181,21 @@ void Bloom::apply(rasterizer::Context& ctx, rasterizer::Image& frame, float amou
 bool Bloom::blur(rasterizer::Context& ctx, const rasterizer::Image& frame, float amount, const ShaderTally& tally) {
   if (!(amount > 0.0f)) return false;
   copy(frame);
+  blur_passes(ctx, amount, tally);
+  return true;
+}
+
+bool Bloom::blur(rasterizer::Context& ctx, const rasterizer::Texture& frame, float amount, const ShaderTally& tally) {
+  if (!(amount > 0.0f)) return false;
+  read_frame(frame);
+  blur_passes(ctx, amount, tally);
+  return true;
+}
+
+void Bloom::blur_passes(rasterizer::Context& ctx, float amount, const ShaderTally& tally) {
   downsample(ctx, tally);
   blur_x(ctx, tally);
   blur_y(ctx, amount, tally);
-  return true;
 }
 
 }  // namespace luxel::postfx

@@ -6,6 +6,7 @@
 
 #include "luxel/rasterizer/draw.hpp"
 #include "luxel/rasterizer/framebuffer.hpp"
+#include "luxel/postfx/full_frame.hpp"
 #include "luxel/postfx/screen_rectangle.hpp"
 #include "luxel/shading/source/color_correction.hpp"
 #include "luxel/shading/source/engine_post.hpp"
@@ -102,16 +103,25 @@ rasterizer::Image draw_pass(rasterizer::Context& ctx, int width, int height, siz
 
 rasterizer::Image color_correct(rasterizer::Context& ctx, const rasterizer::Image& frame,
                                 std::span<const WeightedLut> luts, const ShaderTally& tally) {
+  checked_weights(luts);  // the argument errors before the frame's
+  check_frame(frame);
+  FullFrameTexture copy;
+  copy.update(frame);
+  return color_correct(ctx, copy.texture(), luts, tally);
+}
+
+rasterizer::Image color_correct(rasterizer::Context& ctx, const rasterizer::Texture& frame,
+                                std::span<const WeightedLut> luts, const ShaderTally& tally) {
   src::ColorCorrectionParams params;
   const std::vector<rasterizer::Texture> volumes = set_lookups(luts, params);
-  check_frame(frame);
-  rasterizer::Texture frame_texture =
-      rasterizer::Texture::create_2d(frame.width, frame.height, rasterizer::TextureFormat::RGBA8, 1);
-  frame_texture.upload(0, frame.rgba);
-  params.frame.texture = &frame_texture;
+  if (frame.kind() != rasterizer::TextureKind::Texture2D || frame.mip_levels() != 1 ||
+      frame.format() != rasterizer::TextureFormat::RGBA8)
+    throw std::invalid_argument("color correction: the frame's copy is not an RGBA8 2D texture of one level");
+  params.frame.texture = &frame;
+  const int w = frame.width(), h = frame.height();
   return draw_pass<src::ColorCorrectionCombo, src::ColorCorrectionPixelShader>(
-      ctx, frame.width, frame.height, luts.size(), screen_rectangle(frame.width, frame.height, whole_texture(frame.width, frame.height)),
-      params, tally, [](auto f) { src::for_each_color_correction_combo(f); },
+      ctx, w, h, luts.size(), screen_rectangle(w, h, whole_texture(w, h)), params, tally,
+      [](auto f) { src::for_each_color_correction_combo(f); },
       []<src::ColorCorrectionCombo C>() { return &src::measure_color_correction<C>; });
 }
 

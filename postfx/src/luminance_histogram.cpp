@@ -108,9 +108,18 @@ LuminanceHistogram::LuminanceHistogram(const HistogramSettings& settings) : sett
 
 void LuminanceHistogram::update(rasterizer::Context& ctx, const rasterizer::Image& frame, rasterizer::DepthStencilTarget& target,
                                 const ShaderTally& tally) {
-  if (target.width() != frame.width || target.height() != frame.height)
+  copy_.update(frame);
+  update(ctx, copy_.texture(), target, tally);
+}
+
+void LuminanceHistogram::update(rasterizer::Context& ctx, const rasterizer::Texture& frame,
+                                rasterizer::DepthStencilTarget& target, const ShaderTally& tally) {
+  if (frame.kind() != rasterizer::TextureKind::Texture2D || frame.mip_levels() != 1)
+    throw std::invalid_argument("histogram: the frame's copy is not a 2D texture of one level");
+  if (target.width() != frame.width() || target.height() != frame.height())
     throw std::invalid_argument("histogram: a " + std::to_string(target.width()) + "x" + std::to_string(target.height()) +
-                                " target for a " + std::to_string(frame.width) + "x" + std::to_string(frame.height) + " frame");
+                                " target for a " + std::to_string(frame.width()) + "x" + std::to_string(frame.height()) +
+                                " frame");
   ++frame_;
   last_issued_ = -1;
   bool issued = false;
@@ -136,18 +145,15 @@ void LuminanceHistogram::update(rasterizer::Context& ctx, const rasterizer::Imag
   if (oldest >= 0) issue(ctx, frame, target, oldest, tally);
 }
 
-void LuminanceHistogram::issue(rasterizer::Context& ctx, const rasterizer::Image& frame, rasterizer::DepthStencilTarget& target,
+void LuminanceHistogram::issue(rasterizer::Context& ctx, const rasterizer::Texture& frame, rasterizer::DepthStencilTarget& target,
                                int bucket, const ShaderTally& tally) {
-  const int w = frame.width, h = frame.height;
-  // UpdateScreenEffectTexture: the frame copied into a texture the range test reads.
-  if (!frame_texture_ || frame_texture_->width() != w || frame_texture_->height() != h)
-    frame_texture_ = rasterizer::Texture::create_2d(w, h, rasterizer::TextureFormat::RGBA8_sRGB, 1);
-  frame_texture_->upload(0, frame.rgba);
+  const int w = frame.width(), h = frame.height();
   viewport_pixels_ = uint64_t(w) * uint64_t(h);
 
   BucketCount& b = buckets_[size_t(bucket)];
   LuminanceRangeParams params;
-  params.frame.texture = &*frame_texture_;
+  params.frame.texture = &frame;
+  params.frame.state.srgb_read = true;  // dev/lumcompare's screenspace_general default (§7.1)
   params.frame.state.min = params.frame.state.mag = rasterizer::Filter::Point;
   params.frame.state.mip = rasterizer::MipFilter::None;
   params.frame.state.u = params.frame.state.v = rasterizer::Address::Clamp;

@@ -32,6 +32,11 @@ struct TextureAccess {
 
 namespace texture_detail {
 
+/// The format `sampler` reads `texture` as: RGBA8 read with Sampler::srgb_read is RGBA8_sRGB.
+inline TextureFormat read_format(const Texture& texture, const Sampler& sampler) {
+  return texture.format() == TextureFormat::RGBA8 && sampler.srgb_read ? TextureFormat::RGBA8_sRGB : texture.format();
+}
+
 /// IEEE half <-> float. Decoding is exact; encoding rounds to nearest even (overflow -> inf).
 float half_to_float(uint16_t h);
 uint16_t float_to_half(float f);

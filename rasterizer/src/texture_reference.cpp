@@ -61,7 +61,7 @@ struct Reference {
     const auto bytes = texture.level_bytes(level, face);
     const size_t index =
         (static_cast<size_t>(z) * texture.height(level) + y) * texture.width(level) + static_cast<size_t>(x);
-    return texture_detail::decode_texel(texture.format(),
+    return texture_detail::decode_texel(texture_detail::read_format(texture, sampler),
                                         bytes.data() + index * bytes_per_texel(texture.format()));
   }
 

@@ -616,8 +616,8 @@ bool reads_opaque(const Texture& texture, const Sampler& sampler) {
 }  // namespace
 
 Float4 sample_level(const Texture& texture, const Sampler& sampler, const TexCoord& coord, const Float& lod) {
-  return kSampleFns[reads_opaque(texture, sampler)][static_cast<int>(texture.format())][static_cast<int>(texture.kind())](
-      texture, sampler, coord, lod);
+  return kSampleFns[reads_opaque(texture, sampler)][static_cast<int>(texture_detail::read_format(texture, sampler))]
+                   [static_cast<int>(texture.kind())](texture, sampler, coord, lod);
 }
 
 Float compute_lod(const Texture& texture, const TexCoord& c, const TexCoord& dx, const TexCoord& dy) {

@@ -254,20 +254,22 @@ TEST(Renderer, TimesThePassesTheSceneHas) {
   f.time_passes = true;
   Renderer timed(s, f);
   timed.render(ctx);
-  // One opaque mesh, no sky, nothing translucent, an exposure range (auto exposure): three
-  // passes, the image the same bytes.
-  ASSERT_EQ(timed.pass_times().size(), 3u);
+  // One opaque mesh, no sky, nothing translucent, an exposure range (auto exposure): four
+  // passes (the histogram reads the frame's copy), the image the same bytes.
+  ASSERT_EQ(timed.pass_times().size(), 4u);
   EXPECT_EQ(timed.pass_times()[0].pass, "opaque");
   EXPECT_EQ(timed.pass_times()[0].draws, 1);
   EXPECT_EQ(timed.pass_times()[1].pass, "resolve");
-  EXPECT_EQ(timed.pass_times()[2].pass, "histogram");
+  EXPECT_EQ(timed.pass_times()[2].pass, "frame copy");
+  EXPECT_EQ(timed.pass_times()[2].draws, 0);
+  EXPECT_EQ(timed.pass_times()[3].pass, "histogram");
   for (const PassTime& p : timed.pass_times()) EXPECT_GE(p.ms, 0.0);
   EXPECT_TRUE(timed.image().rgba == untimed.image().rgba);
   // The clock moved: the views' draws are made anew first, a pass of their own (the first frame
   // took no time, so the exposure has not moved: the same bytes).
   timed.set_time(0.5f);
   timed.render(ctx);
-  ASSERT_EQ(timed.pass_times().size(), 4u);
+  ASSERT_EQ(timed.pass_times().size(), 5u);
   EXPECT_EQ(timed.pass_times()[0].pass, "views");
   EXPECT_EQ(timed.pass_times()[1].pass, "opaque");
   EXPECT_TRUE(timed.image().rgba == untimed.image().rgba);

@@ -9,6 +9,7 @@
 
 #include "luxel/postfx/bloom.hpp"
 #include "luxel/postfx/color_correction.hpp"
+#include "luxel/postfx/full_frame.hpp"
 #include "luxel/postfx/lut_source.hpp"
 
 #include <gtest/gtest.h>
@@ -122,6 +123,35 @@ TEST(EnginePost, SameBytesForAnyThreadCount) {
       }
     }
   }
+}
+
+TEST(EnginePost, TheFramesSharedCopyGivesTheSameBytes) {
+  // The renderer's post passes read one copy of the frame (full_frame.hpp) instead of each its
+  // own: bloom (with and without the add), color correction with and without the bloom.
+  const Lut warm = resolve_lut("builtin:warm");
+  const WeightedLut luts[] = {{&warm, 0.7f}};
+  const rasterizer::Image frame = bright_frame(96, 54, 11);
+  rasterizer::Context ctx(2);
+  FullFrameTexture copy;
+  copy.update(frame);
+
+  Bloom own, shared;
+  ASSERT_TRUE(own.blur(ctx, frame, 1.2f));
+  ASSERT_TRUE(shared.blur(ctx, copy.texture(), 1.2f));
+  EXPECT_EQ(&shared.frame_texture(), &copy.texture()) << "read, not copied";
+  EXPECT_EQ(shared.small_image().rgba, own.small_image().rgba);
+  EXPECT_EQ(color_correct(ctx, shared, luts).rgba, color_correct(ctx, own, luts).rgba);
+
+  rasterizer::Image added = frame, added_shared = frame;
+  Bloom().apply(ctx, added, 1.2f);
+  shared.add(ctx, added_shared);
+  EXPECT_EQ(added_shared.rgba, added.rgba);
+  EXPECT_NE(added.rgba, frame.rgba) << "test setup: the bloom shows";
+
+  EXPECT_EQ(color_correct(ctx, copy.texture(), luts).rgba, color_correct(ctx, frame, luts).rgba);
+  const rasterizer::Texture srgb = rasterizer::Texture::create_2d(96, 54, rasterizer::TextureFormat::RGBA8_sRGB, 1);
+  EXPECT_THROW(color_correct(ctx, srgb, luts), std::invalid_argument) << "the copy is read as gamma values";
+  EXPECT_THROW(Bloom().blur(ctx, srgb, 1.0f), std::invalid_argument);
 }
 
 TEST(EnginePost, ArgumentsAreChecked) {

@@ -122,6 +122,37 @@ TEST(LuminanceHistogram, CountsEqualTheExactHistogramOnceEveryBucketIsBack) {
   }
 }
 
+TEST(LuminanceHistogram, CountsTheSameFromTheFramesSharedCopy) {
+  // The renderer copies the frame once (full_frame.hpp) for every post pass: the histogram reads
+  // that RGBA8 copy with sRGB read on, and counts what it counts from the image.
+  const int w = 48, h = 30;
+  rasterizer::Context ctx(2);
+  rasterizer::DepthStencilTarget target(w, h, 4);
+  LuminanceHistogram from_image({}), from_copy({});
+  FullFrameTexture copy;
+  for (int f = 0; f < 24; ++f) {
+    const rasterizer::Image frame = random_frame(w, h, 100 + unsigned(f) / 6);  // the frame changes now and then
+    copy.update(frame);
+    from_image.update(ctx, frame, target);
+    from_copy.update(ctx, copy.texture(), target);
+    ASSERT_EQ(from_copy.last_issued(), from_image.last_issued());
+    for (size_t b = 0; b < from_image.buckets().size(); ++b) {
+      EXPECT_EQ(from_copy.buckets()[b].in_range, from_image.buckets()[b].in_range) << "frame " << f << " bucket " << b;
+      EXPECT_EQ(from_copy.buckets()[b].valid(), from_image.buckets()[b].valid());
+    }
+  }
+  EXPECT_GT(from_copy.buckets()[3].in_range, 0u) << "test setup: a bucket with pixels in it";
+  // A copy of another size than the target, or with mips, is refused.
+  rasterizer::DepthStencilTarget other(w + 1, h);
+  EXPECT_THROW(from_copy.update(ctx, copy.texture(), other), std::invalid_argument);
+  const rasterizer::Texture mipped = rasterizer::Texture::create_2d(w, h, rasterizer::TextureFormat::RGBA8);
+  EXPECT_THROW(from_copy.update(ctx, mipped, target), std::invalid_argument);
+  EXPECT_THROW(FullFrameTexture().texture(), std::logic_error);
+  rasterizer::Image bad(4, 4);
+  bad.rgba.pop_back();
+  EXPECT_THROW(copy.update(bad), std::invalid_argument);
+}
+
 TEST(LuminanceHistogram, WhiteIsInTheTopPercentileBucketAndInNoMeanBucket) {
   rasterizer::Image white(20, 20);
   std::fill(white.rgba.begin(), white.rgba.end(), uint8_t(255));

@@ -289,6 +289,36 @@ TEST(TextureFormat, SrgbDecodesKnownValues) {
   EXPECT_EQ(e[6], 255);
 }
 
+TEST(TextureFormat, SrgbReadSamplerStateDecodesAnRgba8TextureAsRgba8Srgb) {
+  // D3DSAMP_SRGBTEXTURE: the same bytes in an RGBA8 texture read with srgb_read give what the
+  // RGBA8_sRGB texture gives: the curve's values (SrgbDecodesKnownValues), filtered in linear.
+  const std::vector<uint8_t> bytes = {0, 10, 128, 128, 188, 255, 1, 255};
+  Texture plain = Texture::create_2d(2, 1, TextureFormat::RGBA8, 1);
+  plain.upload(0, bytes);
+  Sampler s = point_sampler();
+  s.srgb_read = true;
+  for (const glm::vec4 got : both_paths(plain, s, {0.25f, 0.5f, 0})) {
+    EXPECT_EQ(got.x, 0.0f);
+    EXPECT_FLOAT_EQ(got.y, 0.003035269835488375f);
+    EXPECT_FLOAT_EQ(got.z, 0.21586050011389926f);
+    EXPECT_FLOAT_EQ(got.w, 128 / 255.0f);  // alpha is linear
+  }
+  // Bilinear halfway between the two texels: the mean of the decoded values, not the decode of
+  // the mean code (0.5 (0.0030353 + 1) = 0.5015177, where decoding code 132.5 would give 0.2346).
+  Sampler linear = s;
+  linear.min = linear.mag = Filter::Linear;
+  linear.u = linear.v = Address::Clamp;
+  for (const glm::vec4 got : both_paths(plain, linear, {0.5f, 0.5f, 0})) EXPECT_NEAR(got.y, 0.5015176349f, 1e-6f);
+  // Read without it, the bytes are gamma values; an RGBA8_sRGB texture decodes either way.
+  Sampler gamma = s;
+  gamma.srgb_read = false;
+  for (const glm::vec4 got : both_paths(plain, gamma, {0.25f, 0.5f, 0})) EXPECT_EQ(got.y, 10 / 255.0f);
+  Texture srgb = Texture::create_2d(2, 1, TextureFormat::RGBA8_sRGB, 1);
+  srgb.upload(0, bytes);
+  for (const Sampler& any : {s, gamma})
+    for (const glm::vec4 got : both_paths(srgb, any, {0.75f, 0.5f, 0})) EXPECT_FLOAT_EQ(got.x, 0.5028864580325687f);
+}
+
 TEST(TextureFormat, Rgba16fRoundTrips) {
   const float denormal = std::ldexp(1.0f, -24), smallest_normal = std::ldexp(1.0f, -14);
   const std::vector<glm::vec4> in = {

@@ -54,6 +54,8 @@
 //    controls where the camera is (scenes::exposure_at: the zone holding it, else the scene's);
 //    a clock that goes back starts the exposure again. Without a range anywhere, the one scale,
 //    fixed, and no histogram pass.
+//  - The post passes read one copy of the finished frame (postfx/full_frame.hpp, the engine's
+//    _rt_FullFrameFB: the "frame copy" pass, before the histogram's), made when any of them runs.
 //  - After the histogram pass, on the finished 8-bit frame as Source's INTEGER HDR path runs them
 //    (SOURCE_FACTS 6.5): bloom (FrameSettings::bloom, frames of 4 x 4 and more, postfx/bloom.hpp: the quarter-size
 //    downsample, the two blurs, the additive combine in gamma space), its amount the exposure
@@ -224,7 +226,7 @@ struct ModelLightingState {
 struct PassTime {
   std::string pass;  ///< "views" (the draws made anew after the clock or the exposure moved), "water
                      ///< reflection", "water refraction", "opaque", "sky", "translucent", "resolve",
-                     ///< "histogram", "bloom", "color correction", "film grain"
+                     ///< "frame copy", "histogram", "bloom", "color correction", "film grain"
   double ms = 0.0;
   int draws = 0;
 };

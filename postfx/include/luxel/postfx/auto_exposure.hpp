@@ -96,14 +96,21 @@ class AutoExposure {
   /// the next measure() on, as an env_tonemap_controller input changes them in Source: the
   /// histogram, the history and the scale carry on.
   void set_controls(const AutoExposureSettings& controls);
-  /// After a frame drawn at scale(): measures it (LuminanceHistogram::update, into `target`, its
-  /// range test's shader to `tally`) and moves the scale for the frame's duration `dt` (seconds, >= 0).
+  /// After a frame drawn at scale(): measures it (LuminanceHistogram::update on the frame's copy,
+  /// into `target`, its range test's shader to `tally`) and moves the scale for the frame's
+  /// duration `dt` (seconds, >= 0).
+  void measure(rasterizer::Context& ctx, const rasterizer::Texture& frame, rasterizer::DepthStencilTarget& target,
+               float dt, const ShaderTally& tally = {});
+  /// The same on the frame's image (LuminanceHistogram::update copies it in).
   void measure(rasterizer::Context& ctx, const rasterizer::Image& frame, rasterizer::DepthStencilTarget& target, float dt,
                const ShaderTally& tally = {});
   const LuminanceHistogram& histogram() const { return histogram_; }
   const AutoExposureSettings& settings() const { return settings_; }
 
  private:
+  /// The target of the histogram as it now stands, and the scale moved toward it over `dt`.
+  void move_scale(float dt);
+
   AutoExposureSettings settings_;
   LuminanceHistogram histogram_;
   ToneMapScale scale_;

@@ -2,7 +2,8 @@
 // Bloom on the tone-mapped 8-bit frame, as Source's INTEGER/LDR path draws it
 // (SOURCE_FACTS §8.2, Generate8BitBloomTexture in viewpostprocess.cpp; §6.5 steps 3-5):
 //
-//   1. copy      the frame -> _rt_FullFrameFB (resolved when multisampled), read as gamma values;
+//   1. copy      the frame -> _rt_FullFrameFB (resolved when multisampled), read as gamma values,
+//                or the caller's copy of the frame (full_frame.hpp) read as it is;
 //   2. downsample _rt_FullFrameFB -> _rt_SmallFB0, a quarter of the frame each way, with the
 //                shaped 4-tap box (shading/source/bloom_downsample.hpp);
 //   3. blur x    _rt_SmallFB0 -> _rt_SmallFB1, 13 taps (shading/source/bloom_blur.hpp);
@@ -29,6 +30,7 @@
 // still from the first texel to the last; a small target one texel wide (W of 4 to 7) reads the
 // first footprint only. Smaller frames throw std::invalid_argument.
 
+#include "luxel/postfx/full_frame.hpp"
 #include "luxel/postfx/screen_rectangle.hpp"
 #include "luxel/postfx/shader_tally.hpp"
 #include "luxel/rasterizer/context.hpp"
@@ -67,18 +69,26 @@ class Bloom {
   /// The same on a resolved frame held as an image.
   void apply(rasterizer::Context& ctx, rasterizer::Image& frame, float amount, const ShaderTally& tally = {});
   /// Every pass but the add, for the combine that adds the bloom itself when color correction
-  /// runs (color_correction.hpp): afterwards frame_texture() and bloom_texture() hold what it
-  /// reads. Returns false, having run nothing, when `amount` is 0 or below.
+  /// runs (color_correction.hpp), or for add(Image&): afterwards frame_texture() and
+  /// bloom_texture() hold what they read. Returns false, having run nothing, when `amount` is 0
+  /// or below.
   bool blur(rasterizer::Context& ctx, const rasterizer::Image& frame, float amount, const ShaderTally& tally = {});
+  /// The same reading `frame`, the frame's copy that the caller keeps for every post pass
+  /// (full_frame.hpp), instead of a copy of its own; it must live as long as this Bloom reads it.
+  bool blur(rasterizer::Context& ctx, const rasterizer::Texture& frame, float amount, const ShaderTally& tally = {});
 
   // The passes one by one, in this order (benchmarks time them; tests look between them). A pass
   // before any copy throws std::logic_error.
   void copy(rasterizer::Context& ctx, const rasterizer::ColorTarget& frame);
   void copy(const rasterizer::Image& frame);
+  /// Instead of a copy: the passes read `frame` (see blur).
+  void read_frame(const rasterizer::Texture& frame);
   void downsample(rasterizer::Context& ctx, const ShaderTally& tally = {});
   void blur_x(rasterizer::Context& ctx, const ShaderTally& tally = {});
   void blur_y(rasterizer::Context& ctx, float amount, const ShaderTally& tally = {});
   void add(rasterizer::Context& ctx, rasterizer::ColorTarget& frame, const ShaderTally& tally = {});
+  /// The add onto a resolved frame held as an image.
+  void add(rasterizer::Context& ctx, rasterizer::Image& frame, const ShaderTally& tally = {});
 
   /// The small target as the last pass left it (after blur_y: the bloom texture that add reads).
   const rasterizer::Image& small_image() const { return small_image_; }
@@ -90,8 +100,10 @@ class Bloom {
   TexelRect bloom_rectangle() const;
 
  private:
-  /// Makes the frame copy, the small targets and textures fit a frame of this size.
+  /// Makes the small targets and textures fit a frame of this size.
   void fit(int frame_width, int frame_height);
+  /// The passes between the copy and the add.
+  void blur_passes(rasterizer::Context& ctx, float amount, const ShaderTally& tally);
   /// Throws std::logic_error naming `pass` when no frame has been copied yet.
   void require_copy(const char* pass) const;
   /// One pass on the small target: `draw` records its draw, and the result is read back
@@ -102,7 +114,8 @@ class Bloom {
   void draw_blur(rasterizer::Context& ctx, const shading::source::BlurParams& params, int into, const ShaderTally& tally);
 
   BloomOptions options_;
-  std::optional<rasterizer::Texture> frame_texture_;   ///< _rt_FullFrameFB
+  FullFrameTexture copy_;                          ///< _rt_FullFrameFB, when copied here
+  const rasterizer::Texture* frame_ = nullptr;     ///< what the passes read: copy_ or the caller's
   std::optional<rasterizer::Texture> small_texture_[2];  ///< _rt_SmallFB0, _rt_SmallFB1
   std::optional<rasterizer::ColorTarget> small_target_;  ///< where each small pass draws
   std::optional<rasterizer::ColorTarget> image_target_;  ///< apply(Image&)'s frame as a target

@@ -55,6 +55,9 @@ float default_weight(std::span<const float> weights);
 /// negative or not finite.
 rasterizer::Image color_correct(rasterizer::Context& ctx, const rasterizer::Image& frame,
                                 std::span<const WeightedLut> luts, const ShaderTally& tally = {});
+/// The same reading the frame's copy (full_frame.hpp: an RGBA8 2D texture of one level).
+rasterizer::Image color_correct(rasterizer::Context& ctx, const rasterizer::Texture& frame,
+                                std::span<const WeightedLut> luts, const ShaderTally& tally = {});
 
 /// The engine's pass when the frame also has a bloom (SOURCE_FACTS §8.3; Engine_Post,
 /// shading/source/engine_post.hpp): `bloom` has blurred the frame (Bloom::blur), and one draw adds

@@ -21,6 +21,7 @@
 // until its frame comes. exact_histogram() counts the same region of the same image directly,
 // without queries or latency: the reference the occlusion histogram converges to.
 
+#include "luxel/postfx/full_frame.hpp"
 #include "luxel/postfx/histogram_buckets.hpp"
 #include "luxel/postfx/shader_tally.hpp"
 #include "luxel/rasterizer/context.hpp"
@@ -76,12 +77,16 @@ class LuminanceHistogram {
   /// Throws std::invalid_argument for a latency below 1 or a region outside (0, 1].
   explicit LuminanceHistogram(const HistogramSettings& settings);
 
-  /// One frame's update (above) on `frame`: the finished 8-bit image, sRGB-encoded. `target` is
-  /// the depth-stencil target the range test draws into, the size of the frame, with the frame's
+  /// One frame's update (above) on `frame`: the frame's copy (full_frame.hpp), its finished 8-bit
+  /// image, sRGB-encoded, which the range test reads with sRGB read on. `target` is the
+  /// depth-stencil target the range test draws into, the size of the frame, with the frame's
   /// samples (the frame's own, as the engine draws into its back buffer's). Each count clears it
   /// whole first and discards it after (rasterizer::discard): clear it whole before using it
   /// again. The range test's shader goes to `tally` (its counting draw, the
   /// stencil's dev/no_pixel_write, is no shader of the catalog).
+  void update(rasterizer::Context& ctx, const rasterizer::Texture& frame, rasterizer::DepthStencilTarget& target,
+              const ShaderTally& tally = {});
+  /// The same on the frame's image, copied in first.
   void update(rasterizer::Context& ctx, const rasterizer::Image& frame, rasterizer::DepthStencilTarget& target,
               const ShaderTally& tally = {});
 
@@ -97,7 +102,7 @@ class LuminanceHistogram {
   uint64_t viewport_pixels() const { return viewport_pixels_; }
 
  private:
-  void issue(rasterizer::Context& ctx, const rasterizer::Image& frame, rasterizer::DepthStencilTarget& target, int bucket,
+  void issue(rasterizer::Context& ctx, const rasterizer::Texture& frame, rasterizer::DepthStencilTarget& target, int bucket,
              const ShaderTally& tally);
 
   HistogramSettings settings_;
@@ -106,7 +111,7 @@ class LuminanceHistogram {
   int64_t frame_ = 0;
   int last_issued_ = -1;
   uint64_t viewport_pixels_ = 0;
-  std::optional<rasterizer::Texture> frame_texture_;  ///< _rt_FullFrameFB
+  FullFrameTexture copy_;  ///< update(Image)'s copy of the frame
 };
 
 /// Per bucket of `algorithm`, the pixels of `region` whose luminance (in double from the sRGB

@@ -42,7 +42,8 @@
 // Formats (decoding happens before filtering)
 // - UNORM channels (RGBA8, RGBA16) decode to c / (2^n - 1), correctly rounded.
 // - RGBA8_sRGB decodes R, G, B with the exact sRGB curve (IEC 61966-2-1) *before* filtering, as
-//   D3D10 requires (some D3D9 parts decoded after); alpha is linear.
+//   D3D10 requires (some D3D9 parts decoded after); alpha is linear. An RGBA8 texture read with
+//   Sampler::srgb_read (D3D9's sampler state) decodes the same way.
 // - RGBA16F decodes exactly (denormals, infinities and NaNs included).
 // - R32F reads as (r, 1, 1, 1): D3D9's value for missing channels (Microsoft's "Recommended
 //   DirectX 9.0 driver support": unused channels of R16F, G16R16F, R32F, G32R32F read 1.0). D3D10
@@ -249,6 +250,12 @@ struct Sampler {
   float lod_bias = 0.0f;   ///< D3DSAMP_MIPMAPLODBIAS
   float min_lod = 0.0f;    ///< the most detailed LOD allowed (D3D9 MAXMIPLEVEL, as a float)
   float max_lod = std::numeric_limits<float>::max();
+  /// D3DSAMP_SRGBTEXTURE: an RGBA8 texture's R, G, B are decoded from sRGB on read, exactly as
+  /// RGBA8_sRGB's are. D3D9 made sRGB decode a sampler state, so one texture can be read both
+  /// ways (the engine's _rt_FullFrameFB: sRGB by the luminance histogram, gamma values by bloom
+  /// and color correction). An RGBA8_sRGB texture, whose mips were made in linear, is decoded
+  /// either way; other formats ignore it.
+  bool srgb_read = false;
 };
 
 /// Per-lane texture coordinates as the shader passes them: (u, v) for 2D textures (z unused),

@@ -1,0 +1,27 @@
+#pragma once
+// _rt_FullFrameFB: the finished frame copied once into a texture (UpdateScreenEffectTexture;
+// SOURCE_FACTS §6.5 step 3, §7.1, §8.2 step 1), which every post pass of the frame then reads:
+// the luminance histogram with sRGB read on (its luminance is linear, §7.1), bloom's downsample
+// and Engine_Post with it off (gamma values, §8.2, §8.3). D3D9 made sRGB decode a sampler state
+// (rasterizer::Sampler::srgb_read, D3DSAMP_SRGBTEXTURE), so one RGBA8 copy serves them all.
+
+#include "luxel/rasterizer/image.hpp"
+#include "luxel/rasterizer/texture.hpp"
+
+#include <optional>
+
+namespace luxel::postfx {
+
+class FullFrameTexture {
+ public:
+  /// Copies `frame` (the finished 8-bit image, sRGB-encoded) in: once per frame, before the
+  /// passes that read it. Throws std::invalid_argument when its pixels do not match its size.
+  void update(const rasterizer::Image& frame);
+  /// The copy: one RGBA8 level the frame's size. Throws std::logic_error before any update.
+  const rasterizer::Texture& texture() const;
+
+ private:
+  std::optional<rasterizer::Texture> texture_;
+};
+
+}  // namespace luxel::postfx
