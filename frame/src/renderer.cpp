@@ -740,7 +740,9 @@ namespace {
 
 /// The 3D frame at st.exposure, resolved into st.image (its draws' stats in st.stats): what
 /// the post passes start from.
-void draw_3d(FrameState& st, Context& ctx, PassClock& clock) {
+/// The water's views and the frame's 3D passes, resolved into the image, or into `copy` (the
+/// post passes' copy of the frame) when given.
+void draw_3d(FrameState& st, Context& ctx, PassClock& clock, postfx::FullFrameTexture* copy = nullptr) {
   ctx.reset_stats();
   // After the clock or the exposure moved: the views' draws made anew on the CPU (a sequence pays
   // it per frame).
@@ -758,7 +760,10 @@ void draw_3d(FrameState& st, Context& ctx, PassClock& clock) {
   discard(ctx, st.depth);
   // The target's alpha holds what the shaders wrote there (base alpha, blend results, the water's
   // fog factor), which a screen never shows: the image is what is shown, opaque.
-  clock.run("resolve", 0, [&] { resolve_into(ctx, st.color, st.image, rasterizer::ResolveAlpha::opaque); });
+  clock.run("resolve", 0, [&] {
+    if (copy) copy->resolve(ctx, st.color);
+    else resolve_into(ctx, st.color, st.image, rasterizer::ResolveAlpha::opaque);
+  });
   st.stats = ctx.stats();  // the 3D frame's draws, not the passes on the finished image
 }
 
@@ -833,14 +838,6 @@ void Renderer::render(Context& ctx) {
   st.last_frame_time = st.settings.time;
   st.pass_times.clear();
   PassClock clock(ctx, st.settings.time_passes ? &st.pass_times : nullptr);
-  draw_3d(st, ctx, clock);
-  st.shader_uses.clear();
-  if (st.settings.count_shading) {  // the 3D draws have run (the resolve flushed them)
-    if (st.water) st.water->add_shader_uses(st.shader_uses);
-    add_shader_uses(st.passes, st.shader_uses);
-  }
-  // The post passes add their shaders after the 3D draws'.
-  const postfx::ShaderTally tally{st.settings.count_shading ? &st.shader_uses : nullptr, st.settings.model};
   const glm::vec3 eye = frame_camera(*st.scene, st.settings).position;
   const std::vector<postfx::WeightedLut> luts =
       st.color_correction ? st.color_correction->weighted_at(st.settings.time) : std::vector<postfx::WeightedLut>{};
@@ -848,8 +845,19 @@ void Renderer::render(Context& ctx) {
   const float bloom_amount =
       st.bloom ? st.bloom_amount.advance(scenes::exposure_at(*st.scene, eye).bloom_scale, shading::source::HdrType::integer) : 0.0f;
   const bool blooms = st.bloom && bloom_amount > 0.0f;
-  // UpdateScreenEffectTexture: one copy of the frame, which every pass below reads.
-  if (st.auto_exposure || blooms || !luts.empty()) clock.run("frame copy", 0, [&] { st.full_frame.update(st.image); });
+  // UpdateScreenEffectTexture: the post passes read one copy of the frame (_rt_FullFrameFB),
+  // which the frame resolves into. The image is then the color correction's output, or the
+  // copy's pixels where no correction runs.
+  const bool post = st.auto_exposure || blooms || !luts.empty();
+  draw_3d(st, ctx, clock, post ? &st.full_frame : nullptr);
+  st.shader_uses.clear();
+  if (st.settings.count_shading) {  // the 3D draws have run (the resolve flushed them)
+    if (st.water) st.water->add_shader_uses(st.shader_uses);
+    add_shader_uses(st.passes, st.shader_uses);
+  }
+  // The post passes add their shaders after the 3D draws'.
+  const postfx::ShaderTally tally{st.settings.count_shading ? &st.shader_uses : nullptr, st.settings.model};
+  if (post && luts.empty()) clock.run("frame copy", 0, [&] { st.full_frame.read_into(st.image); });
   if (st.auto_exposure) {
     clock.run("histogram", 1, [&] {
       st.auto_exposure->measure(ctx, st.full_frame.texture(), st.depth, std::max(dt, 0.0f), tally);

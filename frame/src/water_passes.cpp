@@ -280,19 +280,16 @@ void WaterPasses::render(rasterizer::Context& ctx, rasterizer::ColorTarget& colo
   const rasterizer::Framebuffer fb{&color, &depth};
   auto draw_view = [&](const char* name, const Plane& plane, PassList& passes, const glm::vec4& clear,
                        std::optional<GpuTexture>& into) {
-    // Scissored views: only the scissor's tiles are cleared and resolved and only its rows
-    // uploaded. The texels around it are never read (the scissor holds every texel the water
-    // reads, with a nonzero weight), so whatever they hold changes no pixel.
+    // Scissored views: only the scissor's tiles are cleared and resolved, straight into the
+    // view's texture. The texels around the scissor are never read (it holds every texel the
+    // water reads, with a nonzero weight), so whatever they hold changes no pixel.
     const rasterizer::Scissor region = settings_.water_view_scissor ? plane.pixels_read : rasterizer::Scissor{};
     clock.run(name, draw_count(passes), [&] {
       rasterizer::clear_color(ctx, color, clear, region);
       rasterizer::clear_depth(ctx, depth, 1.0f, region);
       run_passes(ctx, fb, passes);
       // Flushes: the views' draws are done.
-      rasterizer::resolve_into(ctx, color, resolved_, rasterizer::ResolveAlpha::samples, region);
-      const int y0 = region.enable ? region.y0 : 0, y1 = region.enable ? std::max(y0, region.y1) : resolved_.height;
-      const size_t row_bytes = size_t(resolved_.width) * 4;
-      into->texture.upload_rows(0, y0, std::span<const uint8_t>(resolved_.rgba).subspan(size_t(y0) * row_bytes, size_t(y1 - y0) * row_bytes));
+      rasterizer::resolve_into(ctx, color, into->texture, rasterizer::ResolveAlpha::samples, region);
     });
   };
   for (auto& plane : planes_) {

@@ -89,7 +89,6 @@ class WaterPasses {
   FrameSettings settings_;
   std::vector<std::unique_ptr<Plane>> planes_;
   std::vector<int> plane_of_mesh_;  ///< per mesh: index into planes_, or -1
-  rasterizer::Image resolved_;      ///< a view's resolve, before it is uploaded
 };
 
 }  // namespace luxel::frame

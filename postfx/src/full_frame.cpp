@@ -2,17 +2,36 @@
 
 #include "luxel/postfx/full_frame.hpp"
 
+#include <algorithm>
 #include <span>
 #include <stdexcept>
 
 namespace luxel::postfx {
 
+namespace {
+void fit(std::optional<rasterizer::Texture>& texture, int width, int height) {
+  if (!texture || texture->width() != width || texture->height() != height)
+    texture = rasterizer::Texture::create_2d(width, height, rasterizer::TextureFormat::RGBA8, 1);
+}
+}  // namespace
+
 void FullFrameTexture::update(const rasterizer::Image& frame) {
   if (frame.width <= 0 || frame.height <= 0 || frame.rgba.size() != size_t(frame.width) * frame.height * 4)
     throw std::invalid_argument("full-frame copy: the frame's pixels do not match its size");
-  if (!texture_ || texture_->width() != frame.width || texture_->height() != frame.height)
-    texture_ = rasterizer::Texture::create_2d(frame.width, frame.height, rasterizer::TextureFormat::RGBA8, 1);
+  fit(texture_, frame.width, frame.height);
   texture_->upload(0, std::span<const uint8_t>(frame.rgba));
+}
+
+void FullFrameTexture::resolve(rasterizer::Context& ctx, const rasterizer::ColorTarget& frame) {
+  fit(texture_, frame.width(), frame.height());
+  rasterizer::resolve_into(ctx, frame, *texture_, rasterizer::ResolveAlpha::opaque);
+}
+
+void FullFrameTexture::read_into(rasterizer::Image& image) const {
+  const auto bytes = texture().level_bytes(0);
+  if (image.width != texture_->width() || image.height != texture_->height())
+    image = rasterizer::Image(texture_->width(), texture_->height());
+  std::copy(bytes.begin(), bytes.end(), image.rgba.begin());
 }
 
 const rasterizer::Texture& FullFrameTexture::texture() const {

@@ -3,6 +3,9 @@
 #include "luxel/rasterizer/context.hpp"
 #include "luxel/rasterizer/detail/command_queue.hpp"
 #include "luxel/rasterizer/msaa.hpp"
+#include "luxel/rasterizer/texture.hpp"
+
+#include "texture_internal.hpp"
 
 #include <algorithm>
 #include <bit>
@@ -143,11 +146,18 @@ class LoadImageCommand final : public detail::Command {
   ColorTarget& target_;
 };
 
-/// Box filter of one tile's samples into the image (a plain copy for one sample).
+/// Rows of RGBA8 pixels a resolve writes: an Image's, or level 0 of a 2D texture's.
+struct ResolvedPixels {
+  uint8_t* first;    ///< pixel (0, 0)
+  size_t row_bytes;  ///< from one row to the next
+  uint8_t* pixel(int x, int y) const { return first + size_t(y) * row_bytes + size_t(x) * 4; }
+};
+
+/// Box filter of one tile's samples into the pixels (a plain copy for one sample).
 class ResolveCommand final : public detail::Command {
  public:
-  ResolveCommand(const ColorTarget& target, Image& image, ResolveAlpha alpha, const Scissor& region)
-      : target_(target), image_(image), opaque_(alpha == ResolveAlpha::opaque ? int32_t(0xff000000u) : 0), region_(region) {}
+  ResolveCommand(const ColorTarget& target, ResolvedPixels pixels, ResolveAlpha alpha, const Scissor& region)
+      : target_(target), image_(pixels), opaque_(alpha == ResolveAlpha::opaque ? int32_t(0xff000000u) : 0), region_(region) {}
   void execute(int tile, detail::TileCounters&) override {
     using simd::Int;
     const SurfaceLayout& L = target_.layout();
@@ -188,7 +198,7 @@ class ResolveCommand final : public detail::Command {
 
  private:
   const ColorTarget& target_;
-  Image& image_;
+  ResolvedPixels image_;
   int32_t opaque_;  ///< or-ed into every pixel: alpha 255, or nothing
   Scissor region_;
 };
@@ -231,12 +241,35 @@ void load_image(Context& ctx, const Image& image, ColorTarget& target) {
   queue.push(std::make_unique<LoadImageCommand>(image, target));
 }
 
-void resolve_into(Context& ctx, const ColorTarget& target, Image& image, ResolveAlpha alpha, const Scissor& region) {
-  if (image.width != target.width() || image.height != target.height()) image = Image(target.width(), target.height());
+namespace {
+void record_resolve(Context& ctx, const ColorTarget& target, ResolvedPixels pixels, ResolveAlpha alpha, const Scissor& region) {
   detail::CommandQueue& queue = queue_for(ctx, target.layout());
   ctx.refer(target, Context::Access::resolve);  // runs another context's pending frame on it first
-  queue.push(std::make_unique<ResolveCommand>(target, image, alpha, region));
+  queue.push(std::make_unique<ResolveCommand>(target, pixels, alpha, region));
   ctx.flush();
+}
+}  // namespace
+
+void resolve_into(Context& ctx, const ColorTarget& target, Image& image, ResolveAlpha alpha, const Scissor& region) {
+  if (image.width != target.width() || image.height != target.height()) image = Image(target.width(), target.height());
+  record_resolve(ctx, target, {image.rgba.data(), size_t(image.width) * 4}, alpha, region);
+}
+
+void resolve_into(Context& ctx, const ColorTarget& target, Texture& texture, ResolveAlpha alpha, const Scissor& region) {
+  if (texture.kind() != TextureKind::Texture2D || texture.mip_levels() != 1 ||
+      (texture.format() != TextureFormat::RGBA8 && texture.format() != TextureFormat::RGBA8_sRGB) ||
+      texture.width() != target.width() || texture.height() != target.height()) {
+    throw std::invalid_argument("resolve_into: a " + std::to_string(target.width()) + "x" + std::to_string(target.height()) +
+                                " target resolves into an RGBA8 2D texture of one level and its size");
+  }
+  record_resolve(ctx, target, {TextureAccess::level0(texture).data(), size_t(texture.width()) * 4}, alpha, region);
+  // The rows the resolve wrote: those of the tiles holding the region (see tile_holds).
+  int y0 = 0, y1 = target.height();
+  if (region.enable) {
+    y0 = std::clamp(region.y0 / kTileSize * kTileSize, 0, y1);
+    y1 = std::clamp((std::max(region.y1, region.y0) + kTileSize - 1) / kTileSize * kTileSize, y0, y1);
+  }
+  TextureAccess::rows_written(texture, y0, y1, alpha == ResolveAlpha::opaque);
 }
 
 void discard(Context& ctx, ColorTarget& target) { ctx.discard(target); }

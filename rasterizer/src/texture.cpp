@@ -366,21 +366,6 @@ void Texture::set_level_opaque(int level, int face, bool opaque) {
   opaque_ = std::all_of(level_opaque_.begin(), level_opaque_.end(), [](uint8_t o) { return o != 0; });
 }
 
-void Texture::upload_rows(int level, int first_row, std::span<const uint8_t> rows, int face) {
-  const auto destination = level_span(level, face);
-  if (kind_ == TextureKind::Volume) invalid("rows are uploaded to 2D textures and cube maps, not volumes");
-  const size_t row_bytes = static_cast<size_t>(width(level)) * bytes_per_texel(format_);
-  const size_t n = rows.size() / row_bytes;
-  if (rows.size() % row_bytes != 0 || first_row < 0 || static_cast<size_t>(first_row) + n > static_cast<size_t>(height(level))) {
-    invalid("level " + std::to_string(level) + " has " + std::to_string(height(level)) + " rows of " +
-            std::to_string(row_bytes) + " bytes; " + std::to_string(rows.size()) + " bytes from row " +
-            std::to_string(first_row) + " are not whole rows within it");
-  }
-  std::memcpy(destination.data() + static_cast<size_t>(first_row) * row_bytes, rows.data(), rows.size());
-  refresh_cube_copy(level, face);
-  set_level_opaque(level, face, level_opaque_[static_cast<size_t>(face) * levels_ + level] && alpha_at_max(rows));
-}
-
 // --- The cube maps' sampling copy -------------------------------------------------------------
 
 namespace {

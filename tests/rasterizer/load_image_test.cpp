@@ -3,9 +3,11 @@
 
 #include "luxel/rasterizer/context.hpp"
 #include "luxel/rasterizer/framebuffer.hpp"
+#include "luxel/rasterizer/texture.hpp"
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cstring>
 #include <random>
 #include <stdexcept>
@@ -39,6 +41,56 @@ TEST(LoadImage, EverySampleTakesItsPixelAndResolveGivesTheImageBack) {
     EXPECT_EQ(wrong, 0) << samples << " samples";
     EXPECT_EQ(resolve(ctx, target).rgba, image.rgba) << samples << " samples";
   }
+}
+
+TEST(ResolveIntoTexture, WritesTheImagesBytesInPlaceAndKeepsOpaqueTrue) {
+  // A 4-sample target whose samples differ within each pixel (an image in sample 0's place, its
+  // bytes reversed in the others) resolves into a texture to the bytes it resolves to in an
+  // image; with a region, only the region's tiles' rows change, and opaque() follows the alpha
+  // (one row of them below 255 is enough to lose it).
+  Context ctx(2);
+  const int W = 2 * kTileSize + 9, H = kTileSize + 21;
+  Image image = random_image(W, H, 99);
+  ColorTarget target(W, H, 4);
+  load_image(ctx, image, target);
+  ctx.flush();
+  for (int y = 0; y < H; ++y)
+    for (int x = 0; x < W; ++x)
+      for (int s = 1; s < 4; ++s) target.set_sample(x, y, s, ~target.sample(x, y, 0));
+  for (ResolveAlpha alpha : {ResolveAlpha::samples, ResolveAlpha::opaque}) {
+    for (TextureFormat format : {TextureFormat::RGBA8, TextureFormat::RGBA8_sRGB}) {
+      Texture texture = Texture::create_2d(W, H, format, 1);
+      resolve_into(ctx, target, texture, alpha);
+      const Image expected = resolve(ctx, target, alpha);
+      ASSERT_TRUE(std::equal(expected.rgba.begin(), expected.rgba.end(), texture.level_bytes(0).begin()));
+      EXPECT_EQ(texture.opaque(), alpha == ResolveAlpha::opaque) << "random alpha is not opaque";
+    }
+  }
+  // A region: the tile holding it (row 0, column 1) is written whole,
+  // the other texels keep what an opaque upload left.
+  Image grey(W, H);
+  std::fill(grey.rgba.begin(), grey.rgba.end(), uint8_t(255));
+  Texture texture = Texture::create_2d(W, H, TextureFormat::RGBA8, 1);
+  texture.upload(0, grey.rgba);
+  ASSERT_TRUE(texture.opaque());
+  const Scissor region{true, kTileSize + 3, 5, kTileSize + 20, 30};
+  resolve_into(ctx, target, texture, ResolveAlpha::opaque, region);
+  const Image resolved = resolve(ctx, target, ResolveAlpha::opaque);
+  for (int y = 0; y < H; ++y)
+    for (int x = 0; x < W; ++x) {
+      const bool held = x >= kTileSize && x < 2 * kTileSize && y < kTileSize;
+      const uint8_t* got = texture.level_bytes(0).data() + (size_t(y) * W + x) * 4;
+      ASSERT_EQ(std::memcmp(got, held ? resolved.pixel(x, y) : grey.pixel(x, y), 4), 0) << x << ", " << y;
+    }
+  EXPECT_TRUE(texture.opaque()) << "opaque rows into an opaque level";
+  resolve_into(ctx, target, texture, ResolveAlpha::samples, region);
+  EXPECT_FALSE(texture.opaque());
+  // Only a one-level RGBA8 2D texture of the target's size.
+  Texture mipped = Texture::create_2d(W, H, TextureFormat::RGBA8);
+  Texture smaller = Texture::create_2d(W - 1, H, TextureFormat::RGBA8, 1);
+  Texture half = Texture::create_2d(W, H, TextureFormat::RGBA16F, 1);
+  Texture cube = Texture::create_cube(16, TextureFormat::RGBA8, 1);
+  for (Texture* bad : {&mipped, &smaller, &half, &cube}) EXPECT_THROW(resolve_into(ctx, target, *bad), std::invalid_argument);
 }
 
 TEST(LoadImage, RefusesAnImageOfAnotherSize) {

@@ -1151,35 +1151,6 @@ TEST(TextureCreate, OpaqueFollowsUploads) {
   }
 }
 
-TEST(TextureCreate, UploadRowsReplacesThoseRowsAndKeepsOpaqueOnlyWhereItCan) {
-  Texture t = Texture::create_2d(4, 5, TextureFormat::RGBA8, 1);
-  std::vector<uint8_t> level(4 * 5 * 4);
-  for (size_t i = 0; i < level.size(); ++i) level[i] = i % 4 == 3 ? 255 : uint8_t(i);
-  t.upload(0, level);
-  ASSERT_TRUE(t.opaque());
-  std::vector<uint8_t> rows(2 * 4 * 4, 200);  // rows 1 and 2, alpha 200
-  t.upload_rows(0, 1, rows);
-  const auto bytes = t.level_bytes(0);
-  for (size_t i = 0; i < bytes.size(); ++i) {
-    const bool replaced = i >= 16 && i < 48;
-    ASSERT_EQ(bytes[i], replaced ? 200 : level[i]) << "byte " << i;
-  }
-  EXPECT_FALSE(t.opaque());
-  for (size_t i = 3; i < rows.size(); i += 4) rows[i] = 255;
-  t.upload_rows(0, 1, rows);
-  EXPECT_FALSE(t.opaque()) << "opaque again only after a whole upload";
-  t.upload(0, level);
-  EXPECT_TRUE(t.opaque());
-  t.upload_rows(0, 3, std::span<const uint8_t>(rows).first(16));
-  EXPECT_TRUE(t.opaque()) << "opaque rows into an opaque level";
-  EXPECT_THROW(t.upload_rows(0, 4, rows), std::invalid_argument);  // past the last row
-  EXPECT_THROW(t.upload_rows(0, 0, std::span<const uint8_t>(rows).first(10)), std::invalid_argument);  // not whole rows
-  EXPECT_THROW(t.upload_rows(0, -1, std::span<const uint8_t>(rows).first(16)), std::invalid_argument);
-  EXPECT_THROW(t.upload_rows(1, 0, rows), std::out_of_range);
-  Texture v = Texture::create_volume(2, 2, 2, TextureFormat::RGBA8, 1);
-  EXPECT_THROW(v.upload_rows(0, 0, std::span<const uint8_t>(rows).first(8)), std::invalid_argument);
-}
-
 // An opaque texture is read through a path that filters the color channels alone and returns
 // alpha 1. Its colors must be bit for bit those of a twin whose alpha is one step lower (read
 // through the four-channel path: alpha takes no part in filtering the colors), and its alpha

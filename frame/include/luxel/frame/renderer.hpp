@@ -55,7 +55,8 @@
 //    a clock that goes back starts the exposure again. Without a range anywhere, the one scale,
 //    fixed, and no histogram pass.
 //  - The post passes read one copy of the finished frame (postfx/full_frame.hpp, the engine's
-//    _rt_FullFrameFB: the "frame copy" pass, before the histogram's), made when any of them runs.
+//    _rt_FullFrameFB), which the frame resolves into when any of them runs; the image is then
+//    the color correction's output, or, without it, the copy's pixels (the "frame copy" pass).
 //  - After the histogram pass, on the finished 8-bit frame as Source's INTEGER HDR path runs them
 //    (SOURCE_FACTS 6.5): bloom (FrameSettings::bloom, frames of 4 x 4 and more, postfx/bloom.hpp: the quarter-size
 //    downsample, the two blurs, the additive combine in gamma space), its amount the exposure

@@ -5,6 +5,8 @@
 // and Engine_Post with it off (gamma values, §8.2, §8.3). D3D9 made sRGB decode a sampler state
 // (rasterizer::Sampler::srgb_read, D3DSAMP_SRGBTEXTURE), so one RGBA8 copy serves them all.
 
+#include "luxel/rasterizer/context.hpp"
+#include "luxel/rasterizer/framebuffer.hpp"
 #include "luxel/rasterizer/image.hpp"
 #include "luxel/rasterizer/texture.hpp"
 
@@ -17,8 +19,13 @@ class FullFrameTexture {
   /// Copies `frame` (the finished 8-bit image, sRGB-encoded) in: once per frame, before the
   /// passes that read it. Throws std::invalid_argument when its pixels do not match its size.
   void update(const rasterizer::Image& frame);
+  /// Resolves `frame` (the finished frame's target) straight into the copy, alpha opaque as the
+  /// renderer's image (rasterizer::resolve_into): no image in between. Flushes the context.
+  void resolve(rasterizer::Context& ctx, const rasterizer::ColorTarget& frame);
   /// The copy: one RGBA8 level the frame's size. Throws std::logic_error before any update.
   const rasterizer::Texture& texture() const;
+  /// The copy's pixels into `image` (resized to fit).
+  void read_into(rasterizer::Image& image) const;
 
  private:
   std::optional<rasterizer::Texture> texture_;

@@ -34,6 +34,8 @@
 
 namespace luxel::rasterizer {
 
+class Texture;  // texture.hpp
+
 /// Where pixel (x, y), relative to its tile's origin, sits inside one sample plane of the tile.
 constexpr int pixel_offset_in_tile(int x, int y) {
   const int stamp = (y / simd::kStampHeight) * (kTileSize / simd::kStampWidth) + x / simd::kStampWidth;
@@ -272,6 +274,12 @@ Image resolve(Context& ctx, const ColorTarget& target, ResolveAlpha alpha = Reso
 /// The same into an existing image (reallocated only when its size differs). With an enabled
 /// `region`, only the tiles that hold some of it are resolved; the image keeps its other pixels.
 void resolve_into(Context& ctx, const ColorTarget& target, Image& image, ResolveAlpha alpha = ResolveAlpha::samples,
+                  const Scissor& region = {});
+/// The same into level 0 of `texture`, a 2D RGBA8 (or RGBA8_sRGB: the bytes as they are) texture
+/// of one level and the target's size, in place: the render target that is also a texture, or
+/// D3D9's StretchRect of a multisampled surface into one, with no copy through an image. Its
+/// opaque() follows. Throws std::invalid_argument for any other texture.
+void resolve_into(Context& ctx, const ColorTarget& target, Texture& texture, ResolveAlpha alpha = ResolveAlpha::samples,
                   const Scissor& region = {});
 
 }  // namespace luxel::rasterizer

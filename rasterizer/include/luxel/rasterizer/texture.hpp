@@ -178,13 +178,6 @@ class Texture {
   void upload(int level, std::span<const uint8_t> bytes, int face = 0);
   /// Same, from linear float RGBA texels (encoded as the header's conventions say; R32F keeps r).
   void upload(int level, std::span<const glm::vec4> texels, int face = 0);
-  /// Replaces rows [first_row, first_row + n) of one level of one face of a 2D texture or cube map
-  /// with `rows`, n whole rows laid out as level_bytes() lays them out; the other rows keep their
-  /// texels. The level stays opaque only if it was and the new rows are (opaque() may then say no
-  /// where every texel is in fact opaque: it reads the same, with a little more work). Throws
-  /// std::invalid_argument for a volume, or rows that are not whole or run past the level;
-  /// std::out_of_range for a bad level/face.
-  void upload_rows(int level, int first_row, std::span<const uint8_t> rows, int face = 0);
   /// Fills levels 1.. of every face from level 0 (box filter; see "Mip levels" above).
   void generate_mips();
 
