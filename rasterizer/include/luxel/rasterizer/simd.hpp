@@ -428,7 +428,22 @@ class ScopedFlushDenormals {
 /// Transposes kLanes float4 rows into four batches: lane l of x, y, z, w is rows[l][offset + 0..3]
 /// (vertex positions or varyings into the front end's lanes). Rows need no alignment.
 inline void transpose_rows(const float* const* rows, Float& x, Float& y, Float& z, Float& w, int offset = 0) {
-#if defined(__AVX__) && !defined(__AVX512F__)
+#if defined(__AVX512F__)
+  static_assert(kLanes == 16);
+  auto quad = [&](int l) {  // rows l, l + 4, l + 8, l + 12 in the four 128-bit lanes
+    __m512 v = _mm512_castps128_ps512(_mm_loadu_ps(rows[l] + offset));
+    v = _mm512_insertf32x4(v, _mm_loadu_ps(rows[l + 4] + offset), 1);
+    v = _mm512_insertf32x4(v, _mm_loadu_ps(rows[l + 8] + offset), 2);
+    return _mm512_insertf32x4(v, _mm_loadu_ps(rows[l + 12] + offset), 3);
+  };
+  const __m512 r0 = quad(0), r1 = quad(1), r2 = quad(2), r3 = quad(3);
+  const __m512 xy01 = _mm512_unpacklo_ps(r0, r1), zw01 = _mm512_unpackhi_ps(r0, r1);
+  const __m512 xy23 = _mm512_unpacklo_ps(r2, r3), zw23 = _mm512_unpackhi_ps(r2, r3);
+  x = _mm512_shuffle_ps(xy01, xy23, 0x44);
+  y = _mm512_shuffle_ps(xy01, xy23, 0xee);
+  z = _mm512_shuffle_ps(zw01, zw23, 0x44);
+  w = _mm512_shuffle_ps(zw01, zw23, 0xee);
+#elif defined(__AVX__)
   static_assert(kLanes == 8);
   auto pair = [&](int l) {  // rows l and l + 4 in the two 128-bit halves
     return _mm256_insertf128_ps(_mm256_castps128_ps256(_mm_loadu_ps(rows[l] + offset)),
@@ -449,13 +464,11 @@ inline void transpose_rows(const float* const* rows, Float& x, Float& y, Float& 
 #endif
 }
 
-/// The way back from lanes to records: rows[l][f] = lane l of fields[f], for eight 32-bit
-/// fields (triangle setup computes kLanes records side by side, a field per batch, and writes
-/// them out record by record). Rows are 32-byte aligned.
-inline void transpose_to_rows(const Int (&fields)[8], int32_t (*rows)[8]) {
-#if defined(__AVX2__) && !defined(__AVX512F__)
-  static_assert(kLanes == 8);
-  // An 8x8 transpose: pairs of fields, then fours, then the two 128-bit halves (lanes l, l + 4).
+#if defined(__AVX2__)
+namespace detail {
+/// An 8x8 transpose of 32-bit fields into eight 32-byte aligned rows: pairs of fields, then
+/// fours, then the two 128-bit halves (lanes l, l + 4).
+inline void transpose_8x8_to_rows(const __m256i (&fields)[8], int32_t (*rows)[8]) {
   __m256i pairs[8], fours[8];
   for (int f = 0; f < 8; f += 2) {
     pairs[f] = _mm256_unpacklo_epi32(fields[f], fields[f + 1]);      // lanes 0, 1 | 4, 5
@@ -469,9 +482,29 @@ inline void transpose_to_rows(const Int (&fields)[8], int32_t (*rows)[8]) {
   }
   for (int l = 0; l < 4; ++l) {
     _mm256_store_si256(reinterpret_cast<__m256i*>(rows[l]), _mm256_permute2x128_si256(fours[l], fours[l + 4], 0x20));
-    _mm256_store_si256(reinterpret_cast<__m256i*>(rows[l + 4]),
-                       _mm256_permute2x128_si256(fours[l], fours[l + 4], 0x31));
+    _mm256_store_si256(reinterpret_cast<__m256i*>(rows[l + 4]), _mm256_permute2x128_si256(fours[l], fours[l + 4], 0x31));
   }
+}
+}  // namespace detail
+#endif
+
+/// The way back from lanes to records: rows[l][f] = lane l of fields[f], for eight 32-bit
+/// fields (triangle setup computes kLanes records side by side, a field per batch, and writes
+/// them out record by record). Rows are 32-byte aligned.
+inline void transpose_to_rows(const Int (&fields)[8], int32_t (*rows)[8]) {
+#if defined(__AVX512F__)
+  static_assert(kLanes == 16);
+  __m256i low[8], high[8];  // lanes 0-7 and 8-15
+  for (int f = 0; f < 8; ++f) {
+    low[f] = _mm512_castsi512_si256(fields[f]);
+    high[f] = _mm512_extracti64x4_epi64(fields[f], 1);
+  }
+  detail::transpose_8x8_to_rows(low, rows);
+  detail::transpose_8x8_to_rows(high, rows + 8);
+#elif defined(__AVX2__)
+  static_assert(kLanes == 8);
+  const __m256i eight[8] = {fields[0], fields[1], fields[2], fields[3], fields[4], fields[5], fields[6], fields[7]};
+  detail::transpose_8x8_to_rows(eight, rows);
 #else
   for (int f = 0; f < 8; ++f) {
     alignas(64) int32_t lanes_of_field[kLanes];
