@@ -761,7 +761,7 @@ void draw_3d(FrameState& st, Context& ctx, PassClock& clock, postfx::FullFrameTe
   // The target's alpha holds what the shaders wrote there (base alpha, blend results, the water's
   // fog factor), which a screen never shows: the image is what is shown, opaque.
   clock.run("resolve", 0, [&] {
-    if (copy) copy->resolve(ctx, st.color);
+    if (copy) copy->resolve(ctx, st.color, rasterizer::ResolveAlpha::opaque);
     else resolve_into(ctx, st.color, st.image, rasterizer::ResolveAlpha::opaque);
   });
   st.stats = ctx.stats();  // the 3D frame's draws, not the passes on the finished image
@@ -857,7 +857,7 @@ void Renderer::render(Context& ctx) {
   }
   // The post passes add their shaders after the 3D draws'.
   const postfx::ShaderTally tally{st.settings.count_shading ? &st.shader_uses : nullptr, st.settings.model};
-  if (post && luts.empty()) clock.run("frame copy", 0, [&] { st.full_frame.read_into(st.image); });
+  if (post && luts.empty()) clock.run("frame copy", 0, [&] { postfx::read_into(st.full_frame.texture(), st.image); });
   if (st.auto_exposure) {
     clock.run("histogram", 1, [&] {
       st.auto_exposure->measure(ctx, st.full_frame.texture(), st.depth, std::max(dt, 0.0f), tally);

@@ -10,7 +10,6 @@
 
 #include <algorithm>
 #include <atomic>
-#include <span>
 #include <stdexcept>
 #include <string>
 
@@ -62,13 +61,20 @@ void Bloom::small_pass(rasterizer::Context& ctx, int index, const std::function<
   rasterizer::clear_color(ctx, *small_target_, glm::vec4(0.0f));
   draw();
   rasterizer::discard(ctx, *small_target_);
-  rasterizer::resolve_into(ctx, *small_target_, small_image_);
-  small_texture_[index]->upload(0, std::span<const uint8_t>(small_image_.rgba));
+  rasterizer::resolve_into(ctx, *small_target_, *small_texture_[index]);
+  last_small_ = index;
+}
+
+rasterizer::Image Bloom::small_image() const {
+  rasterizer::Image image;
+  if (small_texture_[last_small_]) read_into(*small_texture_[last_small_], image);
+  return image;
 }
 
 void Bloom::copy(rasterizer::Context& ctx, const rasterizer::ColorTarget& frame) {
-  rasterizer::resolve_into(ctx, frame, frame_image_);
-  copy(frame_image_);
+  fit(frame.width(), frame.height());
+  copy_.resolve(ctx, frame, rasterizer::ResolveAlpha::samples);
+  frame_ = &copy_.texture();
 }
 
 void Bloom::copy(const rasterizer::Image& frame) {
@@ -78,9 +84,7 @@ void Bloom::copy(const rasterizer::Image& frame) {
 }
 
 void Bloom::read_frame(const rasterizer::Texture& frame) {
-  if (frame.kind() != rasterizer::TextureKind::Texture2D || frame.mip_levels() != 1 ||
-      (frame.format() != rasterizer::TextureFormat::RGBA8))
-    throw std::invalid_argument("bloom: the frame's copy is not an RGBA8 2D texture of one level");
+  check_frame_copy(frame, "bloom");
   fit(frame.width(), frame.height());
   frame_ = &frame;
 }

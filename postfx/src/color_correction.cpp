@@ -103,7 +103,6 @@ rasterizer::Image draw_pass(rasterizer::Context& ctx, int width, int height, siz
 
 rasterizer::Image color_correct(rasterizer::Context& ctx, const rasterizer::Image& frame,
                                 std::span<const WeightedLut> luts, const ShaderTally& tally) {
-  checked_weights(luts);  // the argument errors before the frame's
   check_frame(frame);
   FullFrameTexture copy;
   copy.update(frame);
@@ -114,9 +113,7 @@ rasterizer::Image color_correct(rasterizer::Context& ctx, const rasterizer::Text
                                 std::span<const WeightedLut> luts, const ShaderTally& tally) {
   src::ColorCorrectionParams params;
   const std::vector<rasterizer::Texture> volumes = set_lookups(luts, params);
-  if (frame.kind() != rasterizer::TextureKind::Texture2D || frame.mip_levels() != 1 ||
-      frame.format() != rasterizer::TextureFormat::RGBA8)
-    throw std::invalid_argument("color correction: the frame's copy is not an RGBA8 2D texture of one level");
+  check_frame_copy(frame, "color correction");
   params.frame.texture = &frame;
   const int w = frame.width(), h = frame.height();
   return draw_pass<src::ColorCorrectionCombo, src::ColorCorrectionPixelShader>(

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <span>
 #include <stdexcept>
+#include <string>
 
 namespace luxel::postfx {
 
@@ -22,15 +23,21 @@ void FullFrameTexture::update(const rasterizer::Image& frame) {
   texture_->upload(0, std::span<const uint8_t>(frame.rgba));
 }
 
-void FullFrameTexture::resolve(rasterizer::Context& ctx, const rasterizer::ColorTarget& frame) {
+void FullFrameTexture::resolve(rasterizer::Context& ctx, const rasterizer::ColorTarget& frame, rasterizer::ResolveAlpha alpha) {
   fit(texture_, frame.width(), frame.height());
-  rasterizer::resolve_into(ctx, frame, *texture_, rasterizer::ResolveAlpha::opaque);
+  rasterizer::resolve_into(ctx, frame, *texture_, alpha);
 }
 
-void FullFrameTexture::read_into(rasterizer::Image& image) const {
-  const auto bytes = texture().level_bytes(0);
-  if (image.width != texture_->width() || image.height != texture_->height())
-    image = rasterizer::Image(texture_->width(), texture_->height());
+void check_frame_copy(const rasterizer::Texture& frame, const char* pass) {
+  if (frame.kind() != rasterizer::TextureKind::Texture2D || frame.mip_levels() != 1 ||
+      frame.format() != rasterizer::TextureFormat::RGBA8)
+    throw std::invalid_argument(std::string(pass) + ": the frame's copy is not an RGBA8 2D texture of one level");
+}
+
+void read_into(const rasterizer::Texture& texture, rasterizer::Image& image) {
+  const auto bytes = texture.level_bytes(0);
+  if (image.width != texture.width() || image.height != texture.height())
+    image = rasterizer::Image(texture.width(), texture.height());
   std::copy(bytes.begin(), bytes.end(), image.rgba.begin());
 }
 

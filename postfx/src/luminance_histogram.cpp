@@ -114,8 +114,7 @@ void LuminanceHistogram::update(rasterizer::Context& ctx, const rasterizer::Imag
 
 void LuminanceHistogram::update(rasterizer::Context& ctx, const rasterizer::Texture& frame,
                                 rasterizer::DepthStencilTarget& target, const ShaderTally& tally) {
-  if (frame.kind() != rasterizer::TextureKind::Texture2D || frame.mip_levels() != 1)
-    throw std::invalid_argument("histogram: the frame's copy is not a 2D texture of one level");
+  check_frame_copy(frame, "histogram");
   if (target.width() != frame.width() || target.height() != frame.height())
     throw std::invalid_argument("histogram: a " + std::to_string(target.width()) + "x" + std::to_string(target.height()) +
                                 " target for a " + std::to_string(frame.width()) + "x" + std::to_string(frame.height()) +

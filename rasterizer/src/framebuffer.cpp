@@ -157,7 +157,7 @@ struct ResolvedPixels {
 class ResolveCommand final : public detail::Command {
  public:
   ResolveCommand(const ColorTarget& target, ResolvedPixels pixels, ResolveAlpha alpha, const Scissor& region)
-      : target_(target), image_(pixels), opaque_(alpha == ResolveAlpha::opaque ? int32_t(0xff000000u) : 0), region_(region) {}
+      : target_(target), pixels_(pixels), opaque_(alpha == ResolveAlpha::opaque ? int32_t(0xff000000u) : 0), region_(region) {}
   void execute(int tile, detail::TileCounters&) override {
     using simd::Int;
     const SurfaceLayout& L = target_.layout();
@@ -185,20 +185,20 @@ class ResolveCommand final : public detail::Command {
         simd::to_row_major(rb | (ga << 8) | opaque).store_aligned(reinterpret_cast<int32_t*>(out));
         constexpr int kRowBytes = 4 * simd::kStampWidth;
         if (sx + simd::kStampWidth <= width && sy + simd::kStampHeight <= height) {
-          std::memcpy(image_.pixel(x0 + sx, y0 + sy), out, kRowBytes);
-          std::memcpy(image_.pixel(x0 + sx, y0 + sy + 1), out + simd::kStampWidth, kRowBytes);
+          std::memcpy(pixels_.pixel(x0 + sx, y0 + sy), out, kRowBytes);
+          std::memcpy(pixels_.pixel(x0 + sx, y0 + sy + 1), out + simd::kStampWidth, kRowBytes);
           continue;
         }
         for (int y = sy; y < std::min(sy + simd::kStampHeight, height); ++y)
           for (int x = sx; x < std::min(sx + simd::kStampWidth, width); ++x)
-            std::memcpy(image_.pixel(x0 + x, y0 + y), &out[(y - sy) * simd::kStampWidth + (x - sx)], 4);
+            std::memcpy(pixels_.pixel(x0 + x, y0 + y), &out[(y - sy) * simd::kStampWidth + (x - sx)], 4);
       }
     }
   }
 
  private:
   const ColorTarget& target_;
-  ResolvedPixels image_;
+  ResolvedPixels pixels_;
   int32_t opaque_;  ///< or-ed into every pixel: alpha 255, or nothing
   Scissor region_;
 };

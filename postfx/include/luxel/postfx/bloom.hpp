@@ -90,8 +90,9 @@ class Bloom {
   /// The add onto a resolved frame held as an image.
   void add(rasterizer::Context& ctx, rasterizer::Image& frame, const ShaderTally& tally = {});
 
-  /// The small target as the last pass left it (after blur_y: the bloom texture that add reads).
-  const rasterizer::Image& small_image() const { return small_image_; }
+  /// The small target as the last pass left it (after blur_y: the bloom texture that add reads);
+  /// empty before any.
+  rasterizer::Image small_image() const;
   /// After a copy: the frame as the passes read it (_rt_FullFrameFB).
   const rasterizer::Texture& frame_texture() const;
   /// After blur_y: the bloom (_rt_SmallFB0) and the texels of it that the add stretches over the
@@ -106,9 +107,9 @@ class Bloom {
   void blur_passes(rasterizer::Context& ctx, float amount, const ShaderTally& tally);
   /// Throws std::logic_error naming `pass` when no frame has been copied yet.
   void require_copy(const char* pass) const;
-  /// One pass on the small target: `draw` records its draw, and the result is read back
-  /// (small_image_) into small texture `index`, a render target that the next pass samples, as
-  /// the SDK's targets are also textures.
+  /// One pass on the small target: `draw` records its draw, and the result is resolved into
+  /// small texture `index`, a render target that the next pass samples, as the SDK's targets are
+  /// also textures.
   void small_pass(rasterizer::Context& ctx, int index, const std::function<void()>& draw);
   /// A blur with `params` drawn on the small target and kept in small texture `into`.
   void draw_blur(rasterizer::Context& ctx, const shading::source::BlurParams& params, int into, const ShaderTally& tally);
@@ -119,7 +120,7 @@ class Bloom {
   std::optional<rasterizer::Texture> small_texture_[2];  ///< _rt_SmallFB0, _rt_SmallFB1
   std::optional<rasterizer::ColorTarget> small_target_;  ///< where each small pass draws
   std::optional<rasterizer::ColorTarget> image_target_;  ///< apply(Image&)'s frame as a target
-  rasterizer::Image frame_image_, small_image_;
+  int last_small_ = 0;  ///< the small texture the last pass wrote
 };
 
 }  // namespace luxel::postfx

@@ -19,16 +19,21 @@ class FullFrameTexture {
   /// Copies `frame` (the finished 8-bit image, sRGB-encoded) in: once per frame, before the
   /// passes that read it. Throws std::invalid_argument when its pixels do not match its size.
   void update(const rasterizer::Image& frame);
-  /// Resolves `frame` (the finished frame's target) straight into the copy, alpha opaque as the
-  /// renderer's image (rasterizer::resolve_into): no image in between. Flushes the context.
-  void resolve(rasterizer::Context& ctx, const rasterizer::ColorTarget& frame);
+  /// Resolves `frame` (the finished frame's target) straight into the copy
+  /// (rasterizer::resolve_into): no image in between. Flushes the context.
+  void resolve(rasterizer::Context& ctx, const rasterizer::ColorTarget& frame, rasterizer::ResolveAlpha alpha);
   /// The copy: one RGBA8 level the frame's size. Throws std::logic_error before any update.
   const rasterizer::Texture& texture() const;
-  /// The copy's pixels into `image` (resized to fit).
-  void read_into(rasterizer::Image& image) const;
 
  private:
   std::optional<rasterizer::Texture> texture_;
 };
+
+/// Throws std::invalid_argument, naming `pass`, unless `frame` can be a frame's copy: an RGBA8 2D
+/// texture of one level.
+void check_frame_copy(const rasterizer::Texture& frame, const char* pass);
+
+/// Level 0 of a 2D RGBA8 texture into `image` (resized to fit): a copy read back.
+void read_into(const rasterizer::Texture& texture, rasterizer::Image& image);
 
 }  // namespace luxel::postfx
