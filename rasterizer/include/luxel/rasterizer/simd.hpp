@@ -5,7 +5,8 @@
 // kStampWidth x 2 pixels. Lane order is quad-major: lane 4q+0 is the quad's top-left pixel, 4q+1
 // top-right, 4q+2 bottom-left, 4q+3 bottom-right. Derivatives (ddx/ddy) are taken per quad.
 //
-// The default build (x86-64-v3) gives 8 float lanes (AVX2): a stamp is 4x2 pixels.
+// AVX2 gives 8 float lanes (a stamp is 4x2 pixels), AVX-512 16 (8x2): the build's LUXEL_ARCH
+// decides, the default being the build machine's own ISA.
 
 #include <xsimd/xsimd.hpp>
 
