@@ -376,7 +376,7 @@ LUXEL_INLINE void apply_border(const Context<Format>& ctx, const IntMask& outsid
 // --- 2D and volume ----------------------------------------------------------------------------
 
 template <class Format>
-TexelOf<Format> filter_2d(const Context<Format>& ctx, const Level& g, Filter filter, const Float& u, const Float& v) {
+LUXEL_INLINE TexelOf<Format> filter_2d(const Context<Format>& ctx, const Level& g, Filter filter, const Float& u, const Float& v) {
   const Sampler& s = ctx.sampler;
   if (filter == Filter::Point) {
     IntMask out_x(false), out_y(false);
@@ -403,8 +403,8 @@ TexelOf<Format> filter_2d(const Context<Format>& ctx, const Level& g, Filter fil
 }
 
 template <class Format>
-TexelOf<Format> filter_volume(const Context<Format>& ctx, const Level& g, Filter filter, const Float& u, const Float& v,
-                     const Float& w) {
+LUXEL_INLINE TexelOf<Format> filter_volume(const Context<Format>& ctx, const Level& g, Filter filter, const Float& u,
+                                           const Float& v, const Float& w) {
   const Sampler& s = ctx.sampler;
   const Int slice = g.width * g.height;
   if (filter == Filter::Point) {
@@ -513,7 +513,7 @@ struct Prepared {
 };
 
 template <class Format, TextureKind Kind>
-TexelOf<Format> filter_level(const Context<Format>& ctx, const Level& g, Filter filter, const Prepared& p) {
+LUXEL_INLINE TexelOf<Format> filter_level(const Context<Format>& ctx, const Level& g, Filter filter, const Prepared& p) {
   if constexpr (Kind == TextureKind::Cube) {
     return filter_cube<Format>(ctx, g, filter, p.cube);
   } else if constexpr (Kind == TextureKind::Volume) {
@@ -537,13 +537,17 @@ TexelOf<Format> filter_mip_level(const Context<Format>& ctx, const LevelIndex& l
   return select(mask, filter_level<Format, Kind>(ctx, g, s.mag, p), filter_level<Format, Kind>(ctx, g, s.min, p));
 }
 
+/// What every footprint of one call reads: the texture's storage and the border color.
 template <class Format, TextureKind Kind>
-Float4 sample_level_impl(const Texture& texture, const Sampler& s, const TexCoord& coord,
-                         const Float& lod_in) {
-  const Context<Format> ctx{texture, s, TextureAccess::sampled(texture),
-                    Format::raw_border(s.border),
-                    Kind != TextureKind::Cube && (s.u == Address::Border || s.v == Address::Border ||
-                                                  (Kind == TextureKind::Volume && s.w == Address::Border))};
+LUXEL_INLINE Context<Format> context_of(const Texture& texture, const Sampler& s) {
+  return {texture, s, TextureAccess::sampled(texture), Format::raw_border(s.border),
+          Kind != TextureKind::Cube &&
+              (s.u == Address::Border || s.v == Address::Border || (Kind == TextureKind::Volume && s.w == Address::Border))};
+}
+
+/// The coordinates projected onto cube faces or reduced to one period.
+template <TextureKind Kind>
+LUXEL_INLINE Prepared prepare(const Sampler& s, const TexCoord& coord) {
   Prepared p;
   if constexpr (Kind == TextureKind::Cube) {
     p.cube = project_to_faces(coord);
@@ -552,6 +556,14 @@ Float4 sample_level_impl(const Texture& texture, const Sampler& s, const TexCoor
     p.v = reduce(coord.y, s.v);
     if constexpr (Kind == TextureKind::Volume) p.w = reduce(coord.z, s.w);
   }
+  return p;
+}
+
+template <class Format, TextureKind Kind>
+Float4 sample_level_impl(const Texture& texture, const Sampler& s, const TexCoord& coord,
+                         const Float& lod_in) {
+  const Context<Format> ctx = context_of<Format, Kind>(texture, s);
+  const Prepared p = prepare<Kind>(s, coord);
 
   const Float zero(0.0f);
   Float lod = lod_in + Float(s.lod_bias);
@@ -590,7 +602,19 @@ Float4 sample_level_impl(const Texture& texture, const Sampler& s, const TexCoor
   return Format::finish(raw);
 }
 
+/// A sampler with MipFilter::None and filter F on both sides of the crossover (the
+/// post-processing passes', the color-correction volumes'): level 0 with one footprint at any
+/// LOD. The same texels and weights as sample_level_impl, in one function with the filter known
+/// at compile time: none of the general path's per-call branches and calls.
+template <class Format, TextureKind Kind, Filter F>
+Float4 sample_one_level_impl(const Texture& texture, const Sampler& s, const TexCoord& coord) {
+  const Context<Format> ctx = context_of<Format, Kind>(texture, s);
+  const Level g = level_geometry(texture, *ctx.storage.level_offsets, 0);
+  return Format::finish(filter_level<Format, Kind>(ctx, g, F, prepare<Kind>(s, coord)));
+}
+
 using SampleFn = Float4 (*)(const Texture&, const Sampler&, const TexCoord&, const Float&);
+using OneLevelFn = Float4 (*)(const Texture&, const Sampler&, const TexCoord&);
 
 template <class Format>
 constexpr std::array<SampleFn, 3> kinds_of() {
@@ -604,6 +628,23 @@ constexpr std::array<std::array<std::array<SampleFn, 3>, 5>, 2> kSampleFns = {{
     {kinds_of<Opaque<Rgba8>>(), kinds_of<Opaque<Rgba8Srgb>>(), kinds_of<Opaque<Rgba16f>>(), kinds_of<Opaque<Rgba16>>(),
      kinds_of<Opaque<R32f>>()}}};
 
+// [filter][kind], in enum order.
+template <class Format>
+constexpr std::array<std::array<OneLevelFn, 3>, 2> one_level_of() {
+  return {{{&sample_one_level_impl<Format, TextureKind::Texture2D, Filter::Point>,
+            &sample_one_level_impl<Format, TextureKind::Cube, Filter::Point>,
+            &sample_one_level_impl<Format, TextureKind::Volume, Filter::Point>},
+           {&sample_one_level_impl<Format, TextureKind::Texture2D, Filter::Linear>,
+            &sample_one_level_impl<Format, TextureKind::Cube, Filter::Linear>,
+            &sample_one_level_impl<Format, TextureKind::Volume, Filter::Linear>}}};
+}
+
+// [opaque][format][filter][kind], in enum order.
+constexpr std::array<std::array<std::array<std::array<OneLevelFn, 3>, 2>, 5>, 2> kOneLevelFns = {{
+    {one_level_of<Rgba8>(), one_level_of<Rgba8Srgb>(), one_level_of<Rgba16f>(), one_level_of<Rgba16>(), one_level_of<R32f>()},
+    {one_level_of<Opaque<Rgba8>>(), one_level_of<Opaque<Rgba8Srgb>>(), one_level_of<Opaque<Rgba16f>>(),
+     one_level_of<Opaque<Rgba16>>(), one_level_of<Opaque<R32f>>()}}};
+
 /// Whether `sampler` reads `texture` as Opaque: no border color can enter a footprint.
 bool reads_opaque(const Texture& texture, const Sampler& sampler) {
   if (!texture.opaque()) return false;
@@ -616,8 +657,11 @@ bool reads_opaque(const Texture& texture, const Sampler& sampler) {
 }  // namespace
 
 Float4 sample_level(const Texture& texture, const Sampler& sampler, const TexCoord& coord, const Float& lod) {
-  return kSampleFns[reads_opaque(texture, sampler)][static_cast<int>(texture_detail::read_format(texture, sampler))]
-                   [static_cast<int>(texture.kind())](texture, sampler, coord, lod);
+  const bool opaque = reads_opaque(texture, sampler);
+  const int format = static_cast<int>(texture_detail::read_format(texture, sampler)), kind = static_cast<int>(texture.kind());
+  if (sampler.mip == MipFilter::None && sampler.min == sampler.mag)
+    return kOneLevelFns[opaque][format][static_cast<int>(sampler.mag)][kind](texture, sampler, coord);
+  return kSampleFns[opaque][format][kind](texture, sampler, coord, lod);
 }
 
 Float compute_lod(const Texture& texture, const TexCoord& c, const TexCoord& dx, const TexCoord& dy) {

@@ -14,6 +14,7 @@
 
 #include <algorithm>
 #include <array>
+#include <bit>
 #include <cmath>
 #include <cstring>
 #include <limits>
@@ -1107,6 +1108,48 @@ TEST(TextureSimd, MatchesReference) {
   RecordProperty("samples", std::to_string(compared));
   RecordProperty("worst_error", std::to_string(worst));
   std::printf("[          ] %ld samples, worst |SIMD - reference| = %g\n", compared, worst);
+}
+
+// A sampler without mips and with one filter on both sides of the crossover has its own path
+// (texture_sample.cpp, sample_one_level_impl). It must read the very bits the general path reads
+// with the same filter: reached there through a sampler whose other filter no lane uses (all
+// lanes magnified at LOD -1, all minified at LOD +1; without mips level 0 either way).
+TEST(TextureSimd, OneLevelPathReadsWhatTheGeneralPathReads) {
+  std::mt19937 rng(13);
+  long compared = 0;
+  for (const TextureFormat format : kFormats) {
+    for (const TestTexture& tt : random_textures(format, rng)) {
+      const Texture& t = tt.texture;
+      for (Sampler s : sampler_configs(t.kind(), rng)) {
+        if (s.mip != MipFilter::None || s.min != s.mag) continue;
+        const Filter f = s.mag, other = f == Filter::Point ? Filter::Linear : Filter::Point;
+        Sampler magnified = s, minified = s;
+        magnified.min = other;
+        minified.mag = other;
+        for (int stamp = 0; stamp < 8; ++stamp) {
+          LaneValues x, y, z;
+          for (int l = 0; l < kLanes; ++l) {
+            const glm::vec3 c = random_coord(t, rng);
+            x[l] = c.x, y[l] = c.y, z[l] = c.z;
+          }
+          const TexCoord c{lanes_of(x), lanes_of(y), lanes_of(z)};
+          const auto one_level = unpack(sample_level(t, s, c, simd::Float(0.0f)));
+          const auto general_mag = unpack(sample_level(t, magnified, c, simd::Float(-1.0f)));
+          const auto general_min = unpack(sample_level(t, minified, c, simd::Float(1.0f)));
+          for (int l = 0; l < kLanes; ++l) {
+            for (int ch = 0; ch < 4; ++ch) {
+              ++compared;
+              ASSERT_EQ(std::bit_cast<uint32_t>(one_level[l][ch]), std::bit_cast<uint32_t>(general_mag[l][ch]))
+                  << tt.label << ", " << describe(s) << ", lane " << l << " channel " << ch;
+              ASSERT_EQ(std::bit_cast<uint32_t>(one_level[l][ch]), std::bit_cast<uint32_t>(general_min[l][ch]))
+                  << tt.label << ", " << describe(s) << ", lane " << l << " channel " << ch;
+            }
+          }
+        }
+      }
+    }
+  }
+  EXPECT_GT(compared, 10000);
 }
 
 /// Sets the alpha of every texel of every level and face: `step` steps below the format's
