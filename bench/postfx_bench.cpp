@@ -1,5 +1,6 @@
-// Post-processing passes on a 1280x720 frame: the bloom's five passes one by one and together,
-// the color correction that adds the bloom (Engine_Post, one LUT) and film grain, on a 1-sample
+// Post-processing passes on a 1280x720 frame: the luminance histogram's range test (one bucket
+// per frame, as auto exposure counts), the bloom's five passes one by one and together, the
+// color correction that adds the bloom (Engine_Post, one LUT) and film grain, on a 1-sample
 // frame and on a 4x MSAA one (Source draws bloomadd and the grain onto
 // the multisampled back buffer; the copy resolves it), on 1 and 2 threads. One iteration = one
 // pass over the whole frame; the passes run as the frame runs them (each flushes its draw, so on
@@ -10,6 +11,8 @@
 #include "luxel/postfx/color_correction.hpp"
 #include "luxel/postfx/grade.hpp"
 #include "luxel/postfx/film_grain.hpp"
+#include "luxel/postfx/full_frame.hpp"
+#include "luxel/postfx/luminance_histogram.hpp"
 
 #include <benchmark/benchmark.h>
 
@@ -57,6 +60,17 @@ void label(benchmark::State& state) {
                  ", " + std::to_string(state.range(1)) + " threads");
 }
 
+/// One histogram update: one bucket's range test over the center region of the frame's copy,
+/// counted in an occlusion query, into a depth-stencil target with the frame's samples.
+void BM_Histogram(benchmark::State& state) {
+  Setup s(state);
+  FullFrameTexture copy;
+  copy.update(s.image);
+  rasterizer::DepthStencilTarget target(kWidth, kHeight, static_cast<int>(state.range(0)));
+  LuminanceHistogram histogram(HistogramSettings{});
+  for (auto _ : state) histogram.update(s.ctx, copy.texture(), target);
+  label(state);
+}
 void BM_BloomCopy(benchmark::State& state) {
   Setup s(state);
   for (auto _ : state) s.bloom.copy(s.ctx, s.frame);
@@ -111,6 +125,7 @@ double minimum(const std::vector<double>& v) { return *std::min_element(v.begin(
 
 #define LUXEL_POSTFX_BENCH(name)                                                                  \
   BENCHMARK(name)->ArgsProduct({{1, 4}, {1, 2}})->Unit(benchmark::kMillisecond)->UseRealTime()->ComputeStatistics("min", minimum)
+LUXEL_POSTFX_BENCH(BM_Histogram);
 LUXEL_POSTFX_BENCH(BM_BloomCopy);
 LUXEL_POSTFX_BENCH(BM_BloomDownsample);
 LUXEL_POSTFX_BENCH(BM_BloomBlurX);
