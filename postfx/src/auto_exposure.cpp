@@ -153,13 +153,13 @@ void AutoExposure::set_controls(const AutoExposureSettings& controls) {
   settings_ = s;
 }
 
-void AutoExposure::measure(rasterizer::Context& ctx, const rasterizer::Texture& frame, rasterizer::DepthStencilTarget& target,
+void AutoExposure::measure(rasterizer::Context& ctx, const rasterizer::Texture& frame, const rasterizer::DepthStencilTarget& target,
                            float dt, const ShaderTally& tally) {
   histogram_.update(ctx, frame, target, tally);
   move_scale(dt);
 }
 
-void AutoExposure::measure(rasterizer::Context& ctx, const rasterizer::Image& frame, rasterizer::DepthStencilTarget& target,
+void AutoExposure::measure(rasterizer::Context& ctx, const rasterizer::Image& frame, const rasterizer::DepthStencilTarget& target,
                            float dt, const ShaderTally& tally) {
   histogram_.update(ctx, frame, target, tally);
   move_scale(dt);

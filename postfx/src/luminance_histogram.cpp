@@ -106,14 +106,14 @@ LuminanceHistogram::LuminanceHistogram(const HistogramSettings& settings) : sett
   pending_.resize(buckets_.size());
 }
 
-void LuminanceHistogram::update(rasterizer::Context& ctx, const rasterizer::Image& frame, rasterizer::DepthStencilTarget& target,
+void LuminanceHistogram::update(rasterizer::Context& ctx, const rasterizer::Image& frame, const rasterizer::DepthStencilTarget& target,
                                 const ShaderTally& tally) {
   copy_.update(frame);
   update(ctx, copy_.texture(), target, tally);
 }
 
 void LuminanceHistogram::update(rasterizer::Context& ctx, const rasterizer::Texture& frame,
-                                rasterizer::DepthStencilTarget& target, const ShaderTally& tally) {
+                                const rasterizer::DepthStencilTarget& target, const ShaderTally& tally) {
   check_frame_copy(frame, "histogram");
   if (target.width() != frame.width() || target.height() != frame.height())
     throw std::invalid_argument("histogram: a " + std::to_string(target.width()) + "x" + std::to_string(target.height()) +
@@ -126,7 +126,7 @@ void LuminanceHistogram::update(rasterizer::Context& ctx, const rasterizer::Text
     BucketCount& b = buckets_[i];
     if (b.state == BucketCount::State::initial) {
       if (!issued) {
-        issue(ctx, frame, target, int(i), tally);
+        issue(ctx, frame, target.samples(), int(i), tally);
         issued = true;
       }
     } else if (b.state != BucketCount::State::done && frame_ >= b.frame_queued + settings_.query_latency) {
@@ -141,13 +141,14 @@ void LuminanceHistogram::update(rasterizer::Context& ctx, const rasterizer::Text
     if (buckets_[i].state == BucketCount::State::done && (oldest < 0 || buckets_[i].frame_queued < buckets_[size_t(oldest)].frame_queued))
       oldest = int(i);
   }
-  if (oldest >= 0) issue(ctx, frame, target, oldest, tally);
+  if (oldest >= 0) issue(ctx, frame, target.samples(), oldest, tally);
 }
 
-void LuminanceHistogram::issue(rasterizer::Context& ctx, const rasterizer::Texture& frame, rasterizer::DepthStencilTarget& target,
-                               int bucket, const ShaderTally& tally) {
+void LuminanceHistogram::issue(rasterizer::Context& ctx, const rasterizer::Texture& frame, int samples, int bucket,
+                               const ShaderTally& tally) {
   const int w = frame.width(), h = frame.height();
   viewport_pixels_ = uint64_t(w) * uint64_t(h);
+  if (!pixel_target_ || pixel_target_->width() != w || pixel_target_->height() != h) pixel_target_.emplace(w, h);
 
   BucketCount& b = buckets_[size_t(bucket)];
   LuminanceRangeParams params;
@@ -159,10 +160,11 @@ void LuminanceHistogram::issue(rasterizer::Context& ctx, const rasterizer::Textu
   params.min_max_scale = shading::source::luminance_range_constant(b.range.min, b.range.max);
   const RegionDraw region(w, h, histogram_region(w, h, settings_.center_region_x, settings_.center_region_y));
 
-  pending_[size_t(bucket)] =
+  const uint64_t pixels =
       settings_.reject == LuminanceReject::alpha_test
-          ? count_in_range<LuminanceRangeCombo{LuminanceReject::alpha_test}>(ctx, target, settings_.count, region, params, tally)
-          : count_in_range<LuminanceRangeCombo{LuminanceReject::texkill}>(ctx, target, settings_.count, region, params, tally);
+          ? count_in_range<LuminanceRangeCombo{LuminanceReject::alpha_test}>(ctx, *pixel_target_, settings_.count, region, params, tally)
+          : count_in_range<LuminanceRangeCombo{LuminanceReject::texkill}>(ctx, *pixel_target_, settings_.count, region, params, tally);
+  pending_[size_t(bucket)] = pixels * uint64_t(samples);
   b.state = b.state == BucketCount::State::initial ? BucketCount::State::first_query_in_flight : BucketCount::State::query_in_flight;
   b.frame_queued = frame_;
   last_issued_ = bucket;

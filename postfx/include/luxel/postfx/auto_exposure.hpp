@@ -97,12 +97,12 @@ class AutoExposure {
   /// histogram, the history and the scale carry on.
   void set_controls(const AutoExposureSettings& controls);
   /// After a frame drawn at scale(): measures it (LuminanceHistogram::update on the frame's copy,
-  /// into `target`, its range test's shader to `tally`) and moves the scale for the frame's
-  /// duration `dt` (seconds, >= 0).
-  void measure(rasterizer::Context& ctx, const rasterizer::Texture& frame, rasterizer::DepthStencilTarget& target,
+  /// counting in the samples of the frame's depth-stencil `target`, its range test's shader to
+  /// `tally`) and moves the scale for the frame's duration `dt` (seconds, >= 0).
+  void measure(rasterizer::Context& ctx, const rasterizer::Texture& frame, const rasterizer::DepthStencilTarget& target,
                float dt, const ShaderTally& tally = {});
   /// The same on the frame's image (LuminanceHistogram::update copies it in).
-  void measure(rasterizer::Context& ctx, const rasterizer::Image& frame, rasterizer::DepthStencilTarget& target, float dt,
+  void measure(rasterizer::Context& ctx, const rasterizer::Image& frame, const rasterizer::DepthStencilTarget& target, float dt,
                const ShaderTally& tally = {});
   const LuminanceHistogram& histogram() const { return histogram_; }
   const AutoExposureSettings& settings() const { return settings_; }

@@ -8,9 +8,14 @@
 //    mat_exposure_center_region_x 0.9 and _y 0.85, computed in float and truncated to whole
 //    pixels as the SDK does (so 1280x720 keeps x 64..1215 and y 53..666).
 //  - How: one bucket's range test per frame (shading/source/luminance_range.hpp) drawn over that
-//    rectangle into a target with the frame's samples, inside an occlusion query; directly, or
-//    (mat_tonemapping_occlusion_use_stencil 1) marking the stencil first and counting where it
-//    is set. The query counts samples; the calibration bucket tells how many per pixel.
+//    rectangle inside an occlusion query; directly, or (mat_tonemapping_occlusion_use_stencil 1)
+//    marking the stencil first and counting where it is set. The query counts samples; the
+//    calibration bucket tells how many per pixel. The engine draws into its multisampled back
+//    buffer; luxel draws into a one-sample target of its own and counts each passing pixel as
+//    the frame's samples per pixel. That is the same count: the rectangle is whole pixels, and
+//    the test passes or fails a pixel as a whole (its shader runs once per pixel, and every
+//    sample of a pixel sees the same stencil), for a quarter of the coverage and stencil work at
+//    4x MSAA.
 //  - When (§7.4): each update, buckets never measured are issued first, in order, one per frame;
 //    a query is read back once it is `query_latency` frames old (the engine's 3: "current frame
 //    > queued frame + 2"); then, if nothing was issued, the bucket whose last count is oldest is
@@ -78,16 +83,15 @@ class LuminanceHistogram {
   explicit LuminanceHistogram(const HistogramSettings& settings);
 
   /// One frame's update (above) on `frame`: the frame's copy (full_frame.hpp), its finished 8-bit
-  /// image, sRGB-encoded, which the range test reads with sRGB read on. `target` is the
-  /// depth-stencil target the range test draws into, the size of the frame, with the frame's
-  /// samples (the frame's own, as the engine draws into its back buffer's). Each count clears it
-  /// whole first and discards it after (rasterizer::discard): clear it whole before using it
-  /// again. The range test's shader goes to `tally` (its counting draw, the
+  /// image, sRGB-encoded, which the range test reads with sRGB read on. `target` is the frame's
+  /// depth-stencil target, the size of the frame: the engine's range test draws into it, and the
+  /// counts are in its samples. luxel draws into a one-sample target of its own (above) and
+  /// leaves `target` untouched. The range test's shader goes to `tally` (its counting draw, the
   /// stencil's dev/no_pixel_write, is no shader of the catalog).
-  void update(rasterizer::Context& ctx, const rasterizer::Texture& frame, rasterizer::DepthStencilTarget& target,
+  void update(rasterizer::Context& ctx, const rasterizer::Texture& frame, const rasterizer::DepthStencilTarget& target,
               const ShaderTally& tally = {});
   /// The same on the frame's image, copied in first.
-  void update(rasterizer::Context& ctx, const rasterizer::Image& frame, rasterizer::DepthStencilTarget& target,
+  void update(rasterizer::Context& ctx, const rasterizer::Image& frame, const rasterizer::DepthStencilTarget& target,
               const ShaderTally& tally = {});
 
   const HistogramSettings& settings() const { return settings_; }
@@ -102,8 +106,7 @@ class LuminanceHistogram {
   uint64_t viewport_pixels() const { return viewport_pixels_; }
 
  private:
-  void issue(rasterizer::Context& ctx, const rasterizer::Texture& frame, rasterizer::DepthStencilTarget& target, int bucket,
-             const ShaderTally& tally);
+  void issue(rasterizer::Context& ctx, const rasterizer::Texture& frame, int samples, int bucket, const ShaderTally& tally);
 
   HistogramSettings settings_;
   std::vector<BucketCount> buckets_;
@@ -112,6 +115,9 @@ class LuminanceHistogram {
   int last_issued_ = -1;
   uint64_t viewport_pixels_ = 0;
   FullFrameTexture copy_;  ///< update(Image)'s copy of the frame
+  /// What the range test draws into: one sample per pixel, the frame's size; cleared whole before
+  /// each count and discarded after, so it lives in tile memory (rasterizer/framebuffer.hpp).
+  std::optional<rasterizer::DepthStencilTarget> pixel_target_;
 };
 
 /// Per bucket of `algorithm`, the pixels of `region` whose luminance (in double from the sRGB
