@@ -46,9 +46,9 @@ struct RegionDraw {
   }
 };
 
-/// The samples of the region in one bucket's range (§7.2), counted the way `count` says with the
-/// range test's combo C: the test inside the query, or the test marking the stencil and a
-/// counting draw inside the query.
+/// The samples of `target` in the region that fall in one bucket's range (§7.2), counted the way
+/// `count` says with the range test's combo C: the test inside the query, or the test marking the
+/// stencil and a counting draw inside the query.
 template <LuminanceRangeCombo C>
 uint64_t count_in_range(rasterizer::Context& ctx, rasterizer::DepthStencilTarget& target, HistogramCount count,
                         const RegionDraw& region, const LuminanceRangeParams& params, const ShaderTally& tally) {
@@ -57,7 +57,7 @@ uint64_t count_in_range(rasterizer::Context& ctx, rasterizer::DepthStencilTarget
   uint64_t in_range = 0;
   counted_draw<Test>(tally, C.name(), shading::source::measure_luminance_range<C>, [&](std::atomic<uint64_t>* pixels) {
     rasterizer::OcclusionQuery query;
-    // The engine clears the stencil at the start of each frame; the frame's samples are not
+    // The engine clears the stencil at the start of each frame; the target's samples are not
     // needed after the count, so they live in tile memory (rasterizer/framebuffer.hpp).
     rasterizer::clear_depth_stencil(ctx, target, 1.0f, 0);
     if (count == HistogramCount::direct_query) {
