@@ -6,6 +6,10 @@
 
 namespace luxel::rasterizer::detail {
 
+struct CommandQueue::ThreadStats {
+  alignas(64) DrawStats stats;  // alignas rounds the size up to whole lines too
+};
+
 CommandQueue::CommandQueue() : front_end_stats_(std::make_unique<DrawStats>()) {}
 CommandQueue::~CommandQueue() = default;
 
@@ -26,6 +30,17 @@ int CommandQueue::query_slot(OcclusionQuery* query) {
   if (it != queries_.end()) return static_cast<int>(it - queries_.begin());
   queries_.push_back(query);
   return static_cast<int>(queries_.size()) - 1;
+}
+
+std::span<ThreadCounters> CommandQueue::thread_counters(int threads) {
+  constexpr size_t kPerLine = 64 / sizeof(uint64_t);
+  const size_t stride = (queries_.size() + kPerLine - 1) / kPerLine * kPerLine;
+  query_samples_.assign(stride * size_t(threads), 0);
+  thread_stats_.assign(size_t(threads), {});
+  thread_counters_.resize(size_t(threads));
+  for (size_t t = 0; t < size_t(threads); ++t)
+    thread_counters_[t] = {query_samples_.data() + t * stride, &thread_stats_[t].stats};
+  return thread_counters_;
 }
 
 std::byte* CommandQueue::tile_memory(int thread, size_t bytes) {

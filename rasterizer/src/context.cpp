@@ -218,22 +218,14 @@ void Context::run_frame(bool ends_frame) {
   if (tile_memory_bytes > 0)
     for (int t = 0; t < thread_count(); ++t) tile_memory[size_t(t)] = q.tile_memory(t, tile_memory_bytes);
   const int tiles = q.layout().tile_count();
-  auto& counters = q.tile_counters();
-  auto& tile_stats = q.tile_stats();
-  counters.resize(tiles);
-  tile_stats.assign(tiles, {});
-  for (int t = 0; t < tiles; ++t) {
-    counters[t].query_samples.assign(q.queries().size(), 0);
-    counters[t].stats = &tile_stats[t];
-  }
+  const std::span<detail::ThreadCounters> counters = q.thread_counters(thread_count());
   parallel_for(tiles, [&](int tile, int thread) {
     detail::tile_memory_base = tile_memory[size_t(thread)];
-    for (const auto& command : q.commands()) command->execute(tile, counters[tile]);
+    for (const auto& command : q.commands()) command->execute(tile, counters[size_t(thread)]);
   });
-  // Sums in tile order: the totals do not depend on which thread ran which tile.
-  for (int t = 0; t < tiles; ++t) {
-    for (size_t slot = 0; slot < q.queries().size(); ++slot) q.queries()[slot]->samples_ += counters[t].query_samples[slot];
-    *stats_ += tile_stats[t];
+  for (const detail::ThreadCounters& c : counters) {
+    for (size_t slot = 0; slot < q.queries().size(); ++slot) q.queries()[slot]->samples_ += c.query_samples[slot];
+    *stats_ += *c.stats;
   }
   *stats_ += q.front_end_stats();
   stats_->tile_memory_targets += in_tile_memory;

@@ -92,7 +92,7 @@ class ClearColorCommand final : public detail::Command {
  public:
   ClearColorCommand(ColorTarget& target, uint32_t value, const Scissor& region)
       : target_(target), value_(value), region_(region) {}
-  void execute(int tile, detail::TileCounters&) override {
+  void execute(int tile, detail::ThreadCounters&) override {
     if (!tile_holds(target_.layout(), tile, region_)) return;
     simd::fill_u32(target_.tile(tile), value_, target_.layout().elements_per_tile());
   }
@@ -108,7 +108,7 @@ class ClearDepthStencilCommand final : public detail::Command {
  public:
   ClearDepthStencilCommand(DepthStencilTarget& target, float depth, std::optional<uint8_t> stencil, const Scissor& region)
       : target_(target), depth_(depth), stencil_(stencil), region_(region) {}
-  void execute(int tile, detail::TileCounters&) override {
+  void execute(int tile, detail::ThreadCounters&) override {
     if (!tile_holds(target_.layout(), tile, region_)) return;
     const size_t n = target_.layout().elements_per_tile();
     simd::fill_u32(reinterpret_cast<uint32_t*>(target_.depth_tile(tile)), std::bit_cast<uint32_t>(depth_), n);
@@ -126,7 +126,7 @@ class ClearDepthStencilCommand final : public detail::Command {
 class LoadImageCommand final : public detail::Command {
  public:
   LoadImageCommand(const Image& image, ColorTarget& target) : image_(image), target_(target) {}
-  void execute(int tile, detail::TileCounters&) override {
+  void execute(int tile, detail::ThreadCounters&) override {
     const SurfaceLayout& L = target_.layout();
     const int x0 = (tile % L.tiles_x) * kTileSize, y0 = (tile / L.tiles_x) * kTileSize;
     const int width = std::min(kTileSize, L.width - x0), height = std::min(kTileSize, L.height - y0);
@@ -158,7 +158,7 @@ class ResolveCommand final : public detail::Command {
  public:
   ResolveCommand(const ColorTarget& target, ResolvedPixels pixels, ResolveAlpha alpha, const Scissor& region)
       : target_(target), pixels_(pixels), opaque_(alpha == ResolveAlpha::opaque ? int32_t(0xff000000u) : 0), region_(region) {}
-  void execute(int tile, detail::TileCounters&) override {
+  void execute(int tile, detail::ThreadCounters&) override {
     using simd::Int;
     const SurfaceLayout& L = target_.layout();
     if (!tile_holds(L, tile, region_)) return;

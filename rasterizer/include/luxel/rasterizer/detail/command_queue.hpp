@@ -9,6 +9,7 @@
 #include "luxel/rasterizer/framebuffer.hpp"
 
 #include <memory>
+#include <span>
 #include <vector>
 
 namespace luxel::rasterizer {
@@ -18,17 +19,22 @@ class OcclusionQuery;
 
 namespace luxel::rasterizer::detail {
 
-/// What a tile accumulates while it runs its commands; summed in tile order after the flush.
-struct TileCounters {
-  std::vector<uint64_t> query_samples;  ///< per query slot
-  DrawStats* stats = nullptr;           ///< per-tile stats (owned by the queue)
+/// What the tiles one thread runs accumulate while they run their commands; summed over the
+/// threads after the flush (integer sums: the totals do not depend on which thread ran which tile).
+/// Each thread's counters lie on cache lines that no other thread writes: counters per tile, side
+/// by side and written tile after tile by every thread, made the threads wait on each other's
+/// lines (bench/README.md).
+struct ThreadCounters {
+  uint64_t* query_samples = nullptr;  ///< per query slot (owned by the queue)
+  DrawStats* stats = nullptr;         ///< owned by the queue
 };
 
 class Command {
  public:
   virtual ~Command() = default;
-  /// Runs the command on one tile. Called once per tile, from any thread.
-  virtual void execute(int tile, TileCounters& counters) = 0;
+  /// Runs the command on one tile. Called once per tile, from any thread, with that thread's
+  /// counters.
+  virtual void execute(int tile, ThreadCounters& counters) = 0;
 };
 
 class CommandQueue {
@@ -56,8 +62,8 @@ class CommandQueue {
 
   std::vector<std::unique_ptr<Command>>& commands() { return commands_; }
   std::vector<OcclusionQuery*>& queries() { return queries_; }
-  std::vector<TileCounters>& tile_counters() { return tile_counters_; }
-  std::vector<DrawStats>& tile_stats() { return tile_stats_; }
+  /// Zeroed counters for each of `threads` threads, with a slot for each of queries().
+  std::span<ThreadCounters> thread_counters(int threads);
   DrawStats& front_end_stats() { return *front_end_stats_; }
 
   /// The targets the pending frame refers to (Context::refer), for tile memory.
@@ -75,8 +81,10 @@ class CommandQueue {
   size_t chunks_used_ = 0;
   size_t pending_record_bytes_ = 0;
   std::vector<OcclusionQuery*> queries_;
-  std::vector<TileCounters> tile_counters_;
-  std::vector<DrawStats> tile_stats_;
+  struct ThreadStats;  // a DrawStats on cache lines of its own
+  std::vector<ThreadCounters> thread_counters_;
+  std::vector<ThreadStats> thread_stats_;
+  std::vector<uint64_t, xsimd::aligned_allocator<uint64_t, 64>> query_samples_;  ///< a line-aligned run per thread
   std::unique_ptr<DrawStats> front_end_stats_;
   std::vector<const ColorTarget*> color_targets_;
   std::vector<const DepthStencilTarget*> depth_targets_;

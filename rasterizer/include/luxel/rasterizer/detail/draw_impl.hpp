@@ -766,7 +766,7 @@ class DrawCommand final : public Command {
       for (uint32_t t : c->touched_tiles) tile_active_[t] = 1;
   }
 
-  void execute(int tile, TileCounters& counters) override {
+  void execute(int tile, ThreadCounters& counters) override {
     if (!tile_active_[tile]) return;
     switch (plan_.layout.samples) {
       case 1: return execute_with<1>(tile, counters);
@@ -778,7 +778,7 @@ class DrawCommand final : public Command {
 
  private:
   template <int S>
-  void execute_with(int tile, TileCounters& counters) {
+  void execute_with(int tile, ThreadCounters& counters) {
     const bool count = query_slot_ >= 0;
     if constexpr ((PS::kCanDiscard || PS::kWritesDepth) && !kCalledPixelShader<PS>) {  // only the late path
       run(TileRasterizer<PS, N, DepthPath::Late, S>(plan_, ps_, tile, count), tile, counters);
@@ -801,7 +801,7 @@ class DrawCommand final : public Command {
   }
 
   template <class Rasterizer>
-  void run(Rasterizer rasterizer, int tile, TileCounters& counters) {
+  void run(Rasterizer rasterizer, int tile, ThreadCounters& counters) {
     for (const ChunkBins* bins : chunks_) {
       const RecordStream& records = bins->tile_records[tile];
       const auto* end = reinterpret_cast<const TriangleSetup*>(records.data() + records.size());
