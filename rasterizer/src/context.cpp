@@ -21,11 +21,37 @@ ScopedFlushDenormals::ScopedFlushDenormals() : saved_(_mm_getcsr()) {
 ScopedFlushDenormals::~ScopedFlushDenormals() { _mm_setcsr(saved_); }
 }  // namespace simd
 
+/// The items of one thread's home block not yet taken: [front, back), packed into one word so that
+/// the owner (taking the front) and the others (taking the back) claim items with one CAS each.
+/// On a line of its own: every claim writes it.
+struct Context::ItemBlock {
+  alignas(64) std::atomic<uint64_t> range{0};
+
+  static uint64_t pack(uint32_t front, uint32_t back) { return uint64_t(back) << 32 | front; }
+  void set(int front, int back) { range.store(pack(uint32_t(front), uint32_t(back)), std::memory_order_relaxed); }
+  /// The next item from the front (the owner's end), or -1 when none is left.
+  int take_front() { return take(true); }
+  /// The next item from the back (the other threads' end), or -1 when none is left.
+  int take_back() { return take(false); }
+
+ private:
+  int take(bool front_end) {
+    uint64_t r = range.load(std::memory_order_relaxed);
+    for (;;) {
+      const uint32_t front = uint32_t(r), back = uint32_t(r >> 32);
+      if (front >= back) return -1;
+      const uint64_t next = front_end ? pack(front + 1, back) : pack(front, back - 1);
+      if (range.compare_exchange_weak(r, next, std::memory_order_relaxed)) return int(front_end ? front : back - 1);
+    }
+  }
+};
+
 Context::Context(const ContextOptions& options)
     : options_(options), queue_(std::make_unique<detail::CommandQueue>()), stats_(std::make_unique<DrawStats>()) {
   int threads = options.threads;
   if (threads <= 0) threads = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
   options_.threads = threads;
+  item_blocks_ = std::make_unique<ItemBlock[]>(size_t(threads));
   workers_.reserve(threads - 1);
   for (int t = 1; t < threads; ++t) workers_.emplace_back([this, t] { worker_main(t); });
 }
@@ -234,10 +260,11 @@ void Context::run_frame(bool ends_frame) {
 
 void Context::run_items(int thread) {
   simd::ScopedFlushDenormals ftz;
-  for (;;) {
-    const int item = next_item_.fetch_add(1, std::memory_order_relaxed);
-    if (item >= job_count_) break;
-    (*job_)(item, thread);
+  const int threads = thread_count();
+  for (int item; (item = item_blocks_[size_t(thread)].take_front()) >= 0;) (*job_)(item, thread);
+  for (int k = 1; k < threads; ++k) {
+    ItemBlock& other = item_blocks_[size_t((thread + k) % threads)];
+    for (int item; (item = other.take_back()) >= 0;) (*job_)(item, thread);
   }
 }
 
@@ -289,8 +316,9 @@ void Context::parallel_for(int count, const std::function<void(int, int)>& fn) {
   {
     std::lock_guard lock(mutex_);
     job_ = &fn;
-    job_count_ = count;
-    next_item_.store(0, std::memory_order_relaxed);
+    const int threads = thread_count();
+    for (int t = 0; t < threads; ++t)
+      item_blocks_[size_t(t)].set(int(int64_t(count) * t / threads), int(int64_t(count) * (t + 1) / threads));
     busy_workers_ = static_cast<int>(workers_.size());
     ++generation_;
   }

@@ -101,7 +101,11 @@ class Context {
 
   /// Runs fn(item, thread) for item in [0, count), spread over all threads, and returns when all
   /// are done. `thread` in [0, thread_count()) names the thread (for per-thread scratch memory).
-  /// Denormals are flushed to zero on every thread while fn runs. Not reentrant.
+  /// Each thread starts on a home block of consecutive items (thread t on the t-th of
+  /// thread_count() equal blocks) and, that done, takes items from the far ends of the others':
+  /// a thread meets the same items from call to call, and the data they write stays in its caches
+  /// (the tiles of a flush, the chunks of a draw). Denormals are flushed to zero on every thread
+  /// while fn runs. Not reentrant.
   void parallel_for(int count, const std::function<void(int item, int thread)>& fn);
 
   // --- The deferred frame ------------------------------------------------------------------
@@ -187,12 +191,12 @@ class Context {
   std::condition_variable wake_;
   std::condition_variable done_;
   const std::function<void(int, int)>* job_ = nullptr;
-  int job_count_ = 0;
   // Written under mutex_; atomic so that threads can spin on them before blocking.
   std::atomic<uint64_t> generation_{0};
   std::atomic<int> busy_workers_{0};
   bool stopping_ = false;
-  alignas(64) std::atomic<int> next_item_{0};
+  struct ItemBlock;  // a home block of parallel_for's items (context.cpp)
+  std::unique_ptr<ItemBlock[]> item_blocks_;  ///< one per thread
   OcclusionQuery* active_query_ = nullptr;
   uint64_t flush_count_ = 0;
   std::unique_ptr<detail::CommandQueue> queue_;
