@@ -16,7 +16,7 @@ using simd::IntMask;
 using simd::LaneBits;
 
 template <class T>
-inline auto compare(CompareFunc func, const T& a, const T& b) {
+LUXEL_INLINE auto compare(CompareFunc func, const T& a, const T& b) {
   using M = decltype(a < b);
   switch (func) {
     case CompareFunc::Never: return M(false);
