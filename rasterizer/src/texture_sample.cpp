@@ -244,6 +244,8 @@ struct Context {
   SampledStorage storage;
   TexelOf<Format> border;  ///< in the format's raw domain
   bool any_border;
+  /// Point reads of a 2D level: ask for the texels this many words below the stamp's (0: none).
+  int32_t prefetch_words_below = 0;
 };
 
 /// Geometry of the level each lane reads.
@@ -367,6 +369,19 @@ LUXEL_INLINE Int word_index(const Int& offset, const Int& texel) {
   return Format::kWords == 1 ? offset + texel : offset + (texel << 1);
 }
 
+/// Asks for the cache lines `words_below` words past the texels of lanes 0 and 2: the left end of
+/// the stamp's two rows (simd.hpp's lane order).
+LUXEL_INLINE void prefetch_below(const int32_t* words, const Int& index, int32_t words_below) {
+  // In integers: the lines asked for may lie past the texture, which a hint may name but a
+  // pointer may not.
+  const auto at = [&](int lane) {
+    return reinterpret_cast<const void*>(reinterpret_cast<uintptr_t>(words) +
+                                         sizeof(int32_t) * static_cast<uintptr_t>(int64_t{index.get(lane)} + words_below));
+  };
+  simd::prefetch(at(0));
+  simd::prefetch(at(2));
+}
+
 /// Replaces the lanes of `t` outside the level with the border color.
 template <class Format>
 LUXEL_INLINE void apply_border(const Context<Format>& ctx, const IntMask& outside, TexelOf<Format>& t) {
@@ -382,7 +397,9 @@ LUXEL_INLINE TexelOf<Format> filter_2d(const Context<Format>& ctx, const Level& 
     IntMask out_x(false), out_y(false);
     const Int i = point_axis(u, g.width, g.fwidth, s.u, out_x);
     const Int j = point_axis(v, g.height, g.fheight, s.v, out_y);
-    TexelOf<Format> t = Format::fetch(ctx.storage.words, word_index<Format>(g.offset, row_start(j, g.width) + i));
+    const Int index = word_index<Format>(g.offset, row_start(j, g.width) + i);
+    if (ctx.prefetch_words_below != 0) prefetch_below(ctx.storage.words, index, ctx.prefetch_words_below);
+    TexelOf<Format> t = Format::fetch(ctx.storage.words, index);
     if (ctx.any_border) apply_border(ctx, out_x | out_y, t);
     return t;
   }
@@ -608,7 +625,14 @@ Float4 sample_level_impl(const Texture& texture, const Sampler& s, const TexCoor
 /// at compile time: none of the general path's per-call branches and calls.
 template <class Format, TextureKind Kind, Filter F>
 Float4 sample_one_level_impl(const Texture& texture, const Sampler& s, const TexCoord& coord) {
-  const Context<Format> ctx = context_of<Format, Kind>(texture, s);
+  Context<Format> ctx = context_of<Format, Kind>(texture, s);
+  if constexpr (Kind == TextureKind::Texture2D && F == Filter::Point) {
+    // These are the post-processing passes' reads of a screen-aligned copy, a texel per pixel:
+    // within a tile, the row of stamps after the next reads two stamp heights lower. A tile reads
+    // only a few lines of each texel row, each row in another page: too short a run for the
+    // hardware prefetchers to follow, so without the hint every line is a miss the shader waits for.
+    ctx.prefetch_words_below = 2 * simd::kStampHeight * Format::kWords * texture.width();
+  }
   const Level g = level_geometry(texture, *ctx.storage.level_offsets, 0);
   return Format::finish(filter_level<Format, Kind>(ctx, g, F, prepare<Kind>(s, coord)));
 }
