@@ -2,10 +2,10 @@
 //
 // Per call: project cube directions / reduce coordinates (once), turn the LOD into one or two
 // levels per lane, then per level: texel positions and addressing in integer lanes, one gather per
-// footprint texel (two for 8-byte formats), decode, lerp. Filtering happens in each format's
-// "raw" domain (UNORM channels as 0..2^n-1 integers in float, sRGB already decoded to linear) and
-// the UNORM scale is applied once at the end, rounded like a division so that a point sample of c
-// is exactly c / (2^n - 1).
+// footprint texel (both words of an 8-byte one: simd::gather_pairs), decode, lerp. Filtering
+// happens in each format's "raw" domain (UNORM channels as 0..2^n-1 integers in float, sRGB
+// already decoded to linear) and the UNORM scale is applied once at the end, rounded like a
+// division so that a point sample of c is exactly c / (2^n - 1).
 //
 // A texture whose alpha is at its maximum everywhere (Texture::opaque) is read as Opaque<Format>:
 // the color channels alone are filtered, and alpha is 1 (the same result, a quarter less work).
@@ -111,6 +111,17 @@ LUXEL_INLINE Float gather(const float* base, const Int& index) {
 #endif
 }
 
+/// The 8-byte texels at base[index[l]] and base[index[l] + 1]: the low words into `low`, the high
+/// ones into `high`.
+LUXEL_INLINE void gather_pairs(const int32_t* base, const Int& index, Int& low, Int& high) {
+#if defined(__SANITIZE_ADDRESS__)
+  low = gather(base, index);
+  high = gather(base, index + Int(1));
+#else
+  simd::gather_pairs(base, index, low, high);
+#endif
+}
+
 /// log2(x) for the LOD: for normal x > 0 within 1e-7 plus the float rounding of the result
 /// (exponent plus a degree-8 polynomial in the mantissa around 1, interpolating at Chebyshev
 /// nodes), -inf for 0, x itself for +inf and NaN. No division and no branch, unlike xsimd::log2;
@@ -170,9 +181,11 @@ struct Rgba8Srgb {
 struct Rgba16f {
   static constexpr int kWords = 2;
   LUXEL_INLINE static Float4 fetch(const int32_t* words, const Int& index) {
+    Int rg, ba;
+    gather_pairs(words, index, rg, ba);
     Float4 t;
-    simd::unpack_halves(gather(words, index), t.x, t.y);
-    simd::unpack_halves(gather(words, index + Int(1)), t.z, t.w);
+    simd::unpack_halves(rg, t.x, t.y);
+    simd::unpack_halves(ba, t.z, t.w);
     return t;
   }
   static Float4 raw_border(const glm::vec4& b) { return broadcast(b); }
@@ -182,7 +195,9 @@ struct Rgba16f {
 struct Rgba16 {
   static constexpr int kWords = 2;
   LUXEL_INLINE static Float4 fetch(const int32_t* words, const Int& index) {
-    const Int rg = gather(words, index), ba = gather(words, index + Int(1)), low(0xffff);
+    Int rg, ba;
+    gather_pairs(words, index, rg, ba);
+    const Int low(0xffff);
     return {to_float(rg & low), to_float((rg >> 16) & low), to_float(ba & low), to_float((ba >> 16) & low)};
   }
   static Float4 raw_border(const glm::vec4& b) { return broadcast(b * 65535.0f); }

@@ -309,6 +309,25 @@ inline Float gather(const float* base, const Int& index) {
 #endif
 }
 
+/// The 8 bytes at base + index[l] (index in 32-bit words) in each lane l: `low` gets
+/// base[index[l]], `high` base[index[l] + 1].
+inline void gather_pairs(const int32_t* base, const Int& index, Int& low, Int& high) {
+#if defined(__AVX512F__)
+  // Two gathers of eight 64-bit elements, not two of sixteen 32-bit ones: a gather costs about a
+  // load per element on AMD and Intel cores alike, and two permutes put the halves back in lane
+  // order (bench/README.md, 2026-12-05 session 29).
+  const __m512i first = _mm512_i32gather_epi64(_mm512_castsi512_si256(index), base, 4);
+  const __m512i second = _mm512_i32gather_epi64(_mm512_extracti64x4_epi64(index, 1), base, 4);
+  const __m512i even = _mm512_setr_epi32(0, 2, 4, 6, 8, 10, 12, 14, 16, 18, 20, 22, 24, 26, 28, 30);
+  low = Int(_mm512_permutex2var_epi32(first, even, second));
+  high = Int(_mm512_permutex2var_epi32(first, _mm512_add_epi32(even, _mm512_set1_epi32(1)), second));
+#else
+  // (At 8 lanes the two 32-bit gathers measured faster than 64-bit ones and their shuffles.)
+  low = gather(base, index);
+  high = gather(base, index + Int(1));
+#endif
+}
+
 /// Each lane of `packed` holds two IEEE halves; returns them as floats (exactly, denormals, inf
 /// and NaN included, whatever the FTZ/DAZ mode): `low` from bits 0-15, `high` from bits 16-31.
 /// (Texture sampling of RGBA16F; F16C is part of x86-64-v3.)
