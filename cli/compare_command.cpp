@@ -121,14 +121,15 @@ void print_table(const std::vector<Pair>& pairs) {
 }
 
 /// Renders the scene as `model`, measured as frame_measurement.hpp says: the frame compared is the
-/// first, as `luxel render --model` writes it, its auto exposure starting at `start` (the first
-/// model's settled scale, so that the images differ by their shaders alone).
+/// first, as `luxel render --model` writes it; the models share the scene's textures and their
+/// auto exposure's start (the first model's settled scale, so that the images differ by their
+/// shaders alone).
 std::optional<ModelRun> run_model(const FrameOptions& options, const scenes::Scene& scene, frame::FrameSettings settings,
                                   shading::ShaderModel model, int frames, rasterizer::Context& ctx, int& code,
-                                  std::optional<float>& start) {
+                                  SharedRendering& shared) {
   settings.model = model;
   std::optional<FrameMeasurement> m = measure_frame(
-      [&](const frame::FrameSettings& s) { return options.make_renderer("compare", scene, s, ctx, code, &start); }, settings,
+      [&](const frame::FrameSettings& s) { return options.make_renderer("compare", scene, s, ctx, code, &shared); }, settings,
       frames, ctx);
   if (!m) return std::nullopt;
   return ModelRun{std::move(*m), std::string(shading::caps(model).name)};
@@ -160,9 +161,9 @@ Runner add_compare_command(CLI::App& app) {
 
     rasterizer::Context ctx(*context_options);
     std::vector<ModelRun> runs;
-    std::optional<float> exposure_start;  // every model's auto exposure starts where the first one's settles
+    SharedRendering shared;  // the models' textures, and where their auto exposure starts
     for (shading::ShaderModel m : *models) {
-      std::optional<ModelRun> run = run_model(o->frame, *scene, settings, m, o->frames, ctx, code, exposure_start);
+      std::optional<ModelRun> run = run_model(o->frame, *scene, settings, m, o->frames, ctx, code, shared);
       if (!run) return code;
       runs.push_back(std::move(*run));
     }

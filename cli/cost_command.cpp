@@ -145,11 +145,11 @@ int run_frame_costs(CostOptions& o) {
   if (!scene) return code;
   rasterizer::Context ctx(*context_options);
   std::vector<FrameCost> costs;
-  std::optional<float> start;  // every model's auto exposure starts where the first one's settles
+  SharedRendering shared;  // the models' textures, and where their auto exposure starts
   for (ShaderModel model : *models) {
     settings.model = model;
     std::optional<FrameMeasurement> m = measure_frame(
-        [&](const frame::FrameSettings& s) { return o.frame.make_renderer("cost", *scene, s, ctx, code, &start); }, settings,
+        [&](const frame::FrameSettings& s) { return o.frame.make_renderer("cost", *scene, s, ctx, code, &shared); }, settings,
         o.repeats, ctx, true);
     if (!m) return code;
     costs.push_back({std::string(shading::caps(model).name), std::move(*m)});

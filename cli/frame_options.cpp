@@ -199,7 +199,7 @@ std::optional<scenes::Scene> FrameOptions::prepare_scene(const std::string& comm
 
 std::unique_ptr<frame::Renderer> FrameOptions::make_renderer(const std::string& command, const scenes::Scene& scene,
                                                              const frame::FrameSettings& settings, rasterizer::Context& ctx,
-                                                             int& code, std::optional<float>* start) const {
+                                                             int& code, SharedRendering* shared) const {
   try {
     frame::FrameSettings first = settings;
     first.time = 0.0f;
@@ -209,18 +209,19 @@ std::unique_ptr<frame::Renderer> FrameOptions::make_renderer(const std::string& 
       if (bloom_true_height) first.bloom->vertical_step = shading::source::BlurStep::true_height;
     }
     if (film_grain_seed) first.film_grain = postfx::FilmGrainOptions{*film_grain_seed};
-    auto renderer = std::make_unique<frame::Renderer>(scene, first);
+    if (shared && !shared->textures) shared->textures = std::make_shared<const frame::SceneTextures>(scene);
+    auto renderer = std::make_unique<frame::Renderer>(scene, first, shared ? shared->textures : nullptr);
     const bool carried = renderer->auto_exposure() != nullptr;
     const bool terminal = isatty(STDERR_FILENO);
     if (carried && !unsettled) {
-      if (start && *start) {
-        renderer->start_exposure_at(**start);
+      if (shared && shared->exposure_start) {
+        renderer->start_exposure_at(*shared->exposure_start);
       } else {
         const frame::SettledExposure settled = renderer->settle_exposure(ctx);
         std::fprintf(stderr, "luxel %s: auto exposure %s at %.4g after %d draws of the first frame\n", command.c_str(),
                      settled.settled ? "starts settled" : "starts (not settled within its draws)", settled.scale,
                      settled.draws);
-        if (start) *start = settled.scale;
+        if (shared) shared->exposure_start = settled.scale;
       }
     }
     for (int n = 0; n < frame; ++n) {

@@ -7,6 +7,7 @@
 // 1 for a file that cannot be read or written.
 
 #include "luxel/frame/renderer.hpp"
+#include "luxel/frame/textures.hpp"
 #include "luxel/rasterizer/context.hpp"
 #include "luxel/scenes/scene.hpp"
 #include "luxel/shading/shader_model.hpp"
@@ -26,6 +27,16 @@ namespace luxel::cli {
 /// `command` and `option` (exit 2).
 std::optional<std::vector<shading::ShaderModel>> parse_models(const std::string& command, const std::string& option,
                                                               const std::string& list, size_t at_least);
+
+/// What the renderers of one command's scene share (compare's and cost's models, each measured by
+/// a counted and a timed renderer): the scene's textures, which the first prepares (most of what
+/// constructing a renderer costs, frame/textures.hpp), and the scale auto exposure starts at.
+struct SharedRendering {
+  std::shared_ptr<const frame::SceneTextures> textures;
+  /// The first renderer's settled scale: every later one starts there, so that they differ by
+  /// their settings alone.
+  std::optional<float> exposure_start;
+};
 
 struct FrameOptions {
   std::string scene = "builtin:demo";
@@ -64,14 +75,14 @@ struct FrameOptions {
   /// at frame 0 and moved through every frame before, so that the models' lighting is averaged
   /// as in the sequence (frame/renderer.hpp); with auto exposure those frames are rendered on
   /// `ctx`, since each one's exposure comes from the frames before it (progress on a terminal).
-  /// Auto exposure starts at frame 0 settled unless --unsettled: at `*start` when it holds a
-  /// scale (several renderers of one command start alike: compare's and cost's models), else at
-  /// the scale it comes to rest at on frame 0's view (Renderer::settle_exposure, one line on
-  /// stderr saying which), kept in `*start` when `start` is given.
+  /// Auto exposure starts at frame 0 settled unless --unsettled: at `shared->exposure_start` when
+  /// it holds a scale, else at the scale it comes to rest at on frame 0's view
+  /// (Renderer::settle_exposure, one line on stderr saying which), kept there when `shared` is
+  /// given. The renderer reads `shared->textures`, prepared by the first call, when given.
   /// nullptr after printing one line for settings the renderer refuses, exit code 2 in `code`.
   std::unique_ptr<frame::Renderer> make_renderer(const std::string& command, const scenes::Scene& scene,
                                                  const frame::FrameSettings& settings, rasterizer::Context& ctx,
-                                                 int& code, std::optional<float>* start = nullptr) const;
+                                                 int& code, SharedRendering* shared = nullptr) const;
 };
 
 }  // namespace luxel::cli

@@ -1,6 +1,7 @@
 #include "frame/frame_support.hpp"
 
 #include "luxel/bake/bake.hpp"
+#include "luxel/frame/textures.hpp"
 
 #include <gtest/gtest.h>
 
@@ -86,17 +87,26 @@ rasterizer::Image render_frame(const scenes::Scene& scene, const FrameSettings& 
   return r.image();
 }
 
-std::shared_ptr<const scenes::Scene> builtin_scene(std::string_view name, int width, int height) {
+namespace {
+
+/// The last built-in scene built, and its textures once a render asked for them.
+struct BuiltScene {
+  std::string key;
+  std::shared_ptr<const scenes::Scene> scene;
+  std::shared_ptr<const SceneTextures> textures;
+};
+
+std::mutex built_mutex;
+BuiltScene built;
+
+/// builtin_scene's work, with built_mutex held.
+const BuiltScene& build_scene(std::string_view name, int width, int height) {
   // Tests render one scene many times over (per thread count, shader model, fast path), and
   // building tris's million triangles costs more than drawing them small; keeping only the last
   // scene bounds the memory.
-  static std::mutex mutex;
-  static std::string built_key;
-  static std::shared_ptr<const scenes::Scene> built;
   const std::string key = std::string(name) + " " + std::to_string(width) + "x" + std::to_string(height);
-  std::lock_guard lock(mutex);
-  if (key != built_key || !built) {
-    built.reset();
+  if (key != built.key || !built.scene) {
+    built = {};
     auto fresh = std::make_shared<scenes::Scene>(scenes::make_builtin_scene(name, {width, height}));
     if (name == "demo" || name == "courtyard") attach_test_bake(*fresh);
     if (name == "tris" && kReduced) {
@@ -104,16 +114,32 @@ std::shared_ptr<const scenes::Scene> builtin_scene(std::string_view name, int wi
       m.positions.resize(std::min(m.positions.size(), 3 * kReducedTrisTriangles));
       m.colors.resize(m.positions.size());
     }
-    built = std::move(fresh);
-    built_key = key;
+    built = {key, std::move(fresh), nullptr};
   }
   return built;
 }
 
+}  // namespace
+
+std::shared_ptr<const scenes::Scene> builtin_scene(std::string_view name, int width, int height) {
+  std::lock_guard lock(built_mutex);
+  return build_scene(name, width, height).scene;
+}
+
 RenderedFrame render_builtin(std::string_view name, const FrameSettings& settings,
                              const rasterizer::ContextOptions& options, int frames) {
-  const std::shared_ptr<const scenes::Scene> scene = builtin_scene(name, settings.width, settings.height);
-  Renderer renderer(*scene, settings);
+  std::shared_ptr<const scenes::Scene> scene;
+  std::shared_ptr<const SceneTextures> textures;
+  {
+    // The scene's textures are shared by its renders as the scene is: preparing them is most of
+    // what constructing a Renderer costs (textures.hpp), and most of a small frame's test.
+    std::lock_guard lock(built_mutex);
+    build_scene(name, settings.width, settings.height);
+    if (!built.textures) built.textures = std::make_shared<const SceneTextures>(*built.scene);
+    scene = built.scene;
+    textures = built.textures;
+  }
+  Renderer renderer(*scene, settings, textures);
   rasterizer::Context ctx(options);
   RenderedFrame f;
   for (int i = 0; i < frames; ++i) {
