@@ -6,6 +6,7 @@
 #include "frame/frame_support.hpp"
 
 #include "luxel/frame/renderer.hpp"
+#include "luxel/frame/textures.hpp"
 #include "luxel/scenes/paths.hpp"
 
 #include <gtest/gtest.h>
@@ -153,7 +154,8 @@ TEST(FrameAutoExposure, SettlingStopsAtTheRange) {
 TEST(FrameAutoExposure, CourtyardSettlesAlikeOnOneAndTwoThreads) {
   scenes::Scene scene = scenes::make_builtin_scene("courtyard", {96, 54});
   attach_test_bake(scene);
-  Renderer one(scene, {96, 54, 4}), two(scene, {96, 54, 4});
+  const auto textures = std::make_shared<const SceneTextures>(scene);
+  Renderer one(scene, {96, 54, 4}, textures), two(scene, {96, 54, 4}, textures);
   rasterizer::Context ctx1(1), ctx2(2);
   const SettledExposure a = one.settle_exposure(ctx1), b = two.settle_exposure(ctx2);
   EXPECT_EQ(a.scale, b.scale);
@@ -173,7 +175,8 @@ TEST(FrameAutoExposure, CourtyardSequenceWithEveryPassIsTheSameOnOneAndTwoThread
   settings.histogram.count = postfx::HistogramCount::stencil;
   settings.bloom = postfx::BloomOptions{};
   settings.film_grain = postfx::FilmGrainOptions{42};  // and the courtyard's color-correction nodes
-  Renderer one(scene, settings), two(scene, settings);
+  const auto textures = std::make_shared<const SceneTextures>(scene);
+  Renderer one(scene, settings, textures), two(scene, settings, textures);
   ASSERT_NE(one.auto_exposure(), nullptr) << "the courtyard has an exposure range";
   rasterizer::Context ctx1(1), ctx2(2);
   for (int f = 0; f < 30; ++f) {

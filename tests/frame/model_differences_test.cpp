@@ -12,12 +12,14 @@
 #include "frame/frame_support.hpp"
 
 #include "luxel/frame/renderer.hpp"
+#include "luxel/frame/textures.hpp"
 #include "luxel/scenes/builtin.hpp"
 
 #include <gtest/gtest.h>
 
 #include <cstdint>
 #include <cstdio>
+#include <memory>
 #include <set>
 #include <string>
 
@@ -26,11 +28,13 @@ namespace {
 
 constexpr int kWidth = 192, kHeight = 108;
 
-rasterizer::Image render(const scenes::Scene& scene, shading::ShaderModel model, int camera) {
+/// `textures`: the scene's (frame/textures.hpp), shared by its renders.
+rasterizer::Image render(const scenes::Scene& scene, const std::shared_ptr<const SceneTextures>& textures,
+                         shading::ShaderModel model, int camera) {
   FrameSettings f{kWidth, kHeight, 4, camera};
   f.color_correction = false;  // a pass over the finished image would tint the masks' kind colors
   f.model = model;
-  Renderer r(scene, f);
+  Renderer r(scene, f, textures);
   rasterizer::Context ctx(2);
   r.render(ctx);
   return r.image();
@@ -78,11 +82,14 @@ struct Counts {
 /// The courtyard through `camera` on the three models: which pixels of each kind differ between
 /// ps_2_0 and ps_2_b.
 Counts compare_models(const scenes::Scene& scene, int camera) {
-  const rasterizer::Image ps20 = render(scene, shading::ShaderModel::ps_2_0, camera);
-  const rasterizer::Image ps2b = render(scene, shading::ShaderModel::ps_2_b, camera);
-  const rasterizer::Image ps30 = render(scene, shading::ShaderModel::ps_3_0, camera);
+  const auto textures = std::make_shared<const SceneTextures>(scene);
+  const rasterizer::Image ps20 = render(scene, textures, shading::ShaderModel::ps_2_0, camera);
+  const rasterizer::Image ps2b = render(scene, textures, shading::ShaderModel::ps_2_b, camera);
+  const rasterizer::Image ps30 = render(scene, textures, shading::ShaderModel::ps_3_0, camera);
   EXPECT_TRUE(ps2b.rgba == ps30.rgba) << "ps_2_b and ps_3_0 run the same combos; camera " << camera;
-  const rasterizer::Image masks = render(kind_masks(scene), shading::ShaderModel::ps_3_0, camera);
+  const scenes::Scene masks_scene = kind_masks(scene);
+  const rasterizer::Image masks =
+      render(masks_scene, std::make_shared<const SceneTextures>(masks_scene), shading::ShaderModel::ps_3_0, camera);
   Counts c;
   for (int y = 0; y < kHeight; ++y)
     for (int x = 0; x < kWidth; ++x) {
