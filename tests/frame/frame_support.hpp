@@ -54,7 +54,8 @@ void attach_test_bake(scenes::Scene& scene);
 std::shared_ptr<const scenes::Scene> builtin_scene(std::string_view name, int width, int height);
 
 /// Renders builtin_scene(`name`) at the settings' size `frames` times with `options`, and
-/// returns the last (checking that every frame gave the same bytes).
+/// returns the last (checking that every frame gave the same bytes). The scene's textures are
+/// prepared once and kept with it, for every render of it.
 RenderedFrame render_builtin(std::string_view name, const FrameSettings& settings,
                              const rasterizer::ContextOptions& options, int frames = 1);
 
