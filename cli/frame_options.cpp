@@ -4,6 +4,7 @@
 #include "scene_argument.hpp"
 
 #include "luxel/frame/look.hpp"
+#include "luxel/frame/textures.hpp"
 #include "luxel/rasterizer/fast_paths.hpp"
 #include "luxel/scenes/builtin.hpp"
 

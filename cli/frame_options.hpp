@@ -7,7 +7,6 @@
 // 1 for a file that cannot be read or written.
 
 #include "luxel/frame/renderer.hpp"
-#include "luxel/frame/textures.hpp"
 #include "luxel/rasterizer/context.hpp"
 #include "luxel/scenes/scene.hpp"
 #include "luxel/shading/shader_model.hpp"

@@ -100,7 +100,7 @@ std::mutex built_mutex;
 BuiltScene built;
 
 /// builtin_scene's work, with built_mutex held.
-const BuiltScene& build_scene(std::string_view name, int width, int height) {
+BuiltScene& build_scene(std::string_view name, int width, int height) {
   // Tests render one scene many times over (per thread count, shader model, fast path), and
   // building tris's million triangles costs more than drawing them small; keeping only the last
   // scene bounds the memory.
@@ -134,10 +134,10 @@ RenderedFrame render_builtin(std::string_view name, const FrameSettings& setting
     // The scene's textures are shared by its renders as the scene is: preparing them is most of
     // what constructing a Renderer costs (textures.hpp), and most of a small frame's test.
     std::lock_guard lock(built_mutex);
-    build_scene(name, settings.width, settings.height);
-    if (!built.textures) built.textures = std::make_shared<const SceneTextures>(*built.scene);
-    scene = built.scene;
-    textures = built.textures;
+    BuiltScene& b = build_scene(name, settings.width, settings.height);
+    if (!b.textures) b.textures = std::make_shared<const SceneTextures>(*b.scene);
+    scene = b.scene;
+    textures = b.textures;
   }
   Renderer renderer(*scene, settings, textures);
   rasterizer::Context ctx(options);
