@@ -261,7 +261,8 @@ Texture Texture::create(const TextureDesc& desc) {
     invalid("a " + size_text(desc) + " " + kind_name(desc.kind) + " needs more than 8 GiB");
   }
   t.face_words_ = static_cast<int32_t>(offset);
-  t.words_.assign(static_cast<size_t>(total), 0u);
+  // Past the last texel, the words a sampling read of a stamp row may load (simd::gather_stamp_rows).
+  t.words_.assign(static_cast<size_t>(total) + simd::kStampRowWindowWords, 0u);
   if (t.kind_ == TextureKind::Cube) {
     int64_t bordered = 0;
     for (int l = 0; l < t.levels_; ++l) {

@@ -2,7 +2,8 @@
 //
 // Per call: project cube directions / reduce coordinates (once), turn the LOD into one or two
 // levels per lane, then per level: texel positions and addressing in integer lanes, one gather per
-// footprint texel (both words of an 8-byte one: simd::gather_pairs), decode, lerp. Filtering
+// footprint texel (both words of an 8-byte one: simd::gather_pairs; or, in the one-level reads of
+// the post passes, windows along the stamp's rows: simd::gather_stamp_rows), decode, lerp. Filtering
 // happens in each format's "raw" domain (UNORM channels as 0..2^n-1 integers in float, sRGB
 // already decoded to linear) and the UNORM scale is applied once at the end, rounded like a
 // division so that a point sample of c is exactly c / (2^n - 1).
@@ -111,6 +112,14 @@ LUXEL_INLINE Float gather(const float* base, const Int& index) {
 #endif
 }
 
+/// base[index[l]], read as windows along the stamp's rows where the indices allow it
+/// (simd::gather_stamp_rows), gathered where they do not.
+LUXEL_INLINE Int gather_stamp_rows(const int32_t* base, const Int& index) {
+  Int words;
+  if (simd::gather_stamp_rows(base, index, words)) return words;
+  return gather(base, index);
+}
+
 /// The 8-byte texels at base[index[l]] and base[index[l] + 1]: the low words into `low`, the high
 /// ones into `high`.
 LUXEL_INLINE void gather_pairs(const int32_t* base, const Int& index, Int& low, Int& high) {
@@ -151,12 +160,13 @@ LUXEL_INLINE Float lod_log2(const Float& x) {
 
 // --- Formats ----------------------------------------------------------------------------------
 // Each format: kWords per texel, fetch() to the raw domain, the border color in that domain, and
-// finish() from raw to the returned linear RGBA.
+// finish() from raw to the returned linear RGBA. A one-word format's fetch is decode() of the
+// gathered word.
 
 struct Rgba8 {
   static constexpr int kWords = 1;
-  LUXEL_INLINE static Float4 fetch(const int32_t* words, const Int& index) {
-    const Int w = gather(words, index);
+  LUXEL_INLINE static Float4 fetch(const int32_t* words, const Int& index) { return decode(gather(words, index)); }
+  LUXEL_INLINE static Float4 decode(const Int& w) {
     return {to_float(simd::byte_of<0>(w)), to_float(simd::byte_of<1>(w)), to_float(simd::byte_of<2>(w)),
             to_float(simd::byte_of<3>(w))};
   }
@@ -168,9 +178,9 @@ struct Rgba8 {
 
 struct Rgba8Srgb {
   static constexpr int kWords = 1;
-  LUXEL_INLINE static Float4 fetch(const int32_t* words, const Int& index) {
+  LUXEL_INLINE static Float4 fetch(const int32_t* words, const Int& index) { return decode(gather(words, index)); }
+  LUXEL_INLINE static Float4 decode(const Int& w) {
     const float* table = kSrgbToLinear.data();
-    const Int w = gather(words, index);
     return {gather(table, simd::byte_of<0>(w)), gather(table, simd::byte_of<1>(w)), gather(table, simd::byte_of<2>(w)),
             to_float(simd::byte_of<3>(w))};
   }
@@ -209,9 +219,10 @@ struct Rgba16 {
 
 struct R32f {
   static constexpr int kWords = 1;
-  LUXEL_INLINE static Float4 fetch(const int32_t* words, const Int& index) {
+  LUXEL_INLINE static Float4 fetch(const int32_t* words, const Int& index) { return decode(gather(words, index)); }
+  LUXEL_INLINE static Float4 decode(const Int& w) {
     const Float one(1.0f);
-    return {gather(reinterpret_cast<const float*>(words), index), one, one, one};
+    return {xsimd::bitwise_cast<Float>(w), one, one, one};
   }
   static Float4 raw_border(const glm::vec4& b) { return broadcast(b); }
   LUXEL_INLINE static Float4 finish(const Float4& raw) { return raw; }
@@ -226,6 +237,12 @@ struct Opaque {
   static constexpr int kWords = Format::kWords;
   LUXEL_INLINE static Float3 fetch(const int32_t* words, const Int& index) {
     const Float4 t = Format::fetch(words, index);
+    return {t.x, t.y, t.z};
+  }
+  LUXEL_INLINE static Float3 decode(const Int& w)
+    requires(kWords == 1)
+  {
+    const Float4 t = Format::decode(w);
     return {t.x, t.y, t.z};
   }
   static Float3 raw_border(const glm::vec4& b) {
@@ -261,7 +278,19 @@ struct Context {
   bool any_border;
   /// Point reads of a 2D level: ask for the texels this many words below the stamp's (0: none).
   int32_t prefetch_words_below = 0;
+  /// One-word formats: read each footprint texel's words as windows along the stamp's rows where
+  /// they lie close enough (gather_stamp_rows).
+  bool reads_stamp_rows = false;
 };
+
+/// The texel at `index` of each lane, in the format's raw domain.
+template <class Format>
+LUXEL_INLINE TexelOf<Format> fetch(const Context<Format>& ctx, const Int& index) {
+  if constexpr (Format::kWords == 1) {
+    if (ctx.reads_stamp_rows) return Format::decode(gather_stamp_rows(ctx.storage.words, index));
+  }
+  return Format::fetch(ctx.storage.words, index);
+}
 
 /// Geometry of the level each lane reads.
 struct Level {
@@ -414,17 +443,17 @@ LUXEL_INLINE TexelOf<Format> filter_2d(const Context<Format>& ctx, const Level& 
     const Int j = point_axis(v, g.height, g.fheight, s.v, out_y);
     const Int index = word_index<Format>(g.offset, row_start(j, g.width) + i);
     if (ctx.prefetch_words_below != 0) prefetch_below(ctx.storage.words, index, ctx.prefetch_words_below);
-    TexelOf<Format> t = Format::fetch(ctx.storage.words, index);
+    TexelOf<Format> t = fetch(ctx, index);
     if (ctx.any_border) apply_border(ctx, out_x | out_y, t);
     return t;
   }
   const LinearAxis x = linear_axis(u, g.width, g.fwidth, s.u);
   const LinearAxis y = linear_axis(v, g.height, g.fheight, s.v);
   const Int row0 = row_start(y.i0, g.width), row1 = row_start(y.i1, g.width);
-  TexelOf<Format> t00 = Format::fetch(ctx.storage.words, word_index<Format>(g.offset, row0 + x.i0));
-  TexelOf<Format> t10 = Format::fetch(ctx.storage.words, word_index<Format>(g.offset, row0 + x.i1));
-  TexelOf<Format> t01 = Format::fetch(ctx.storage.words, word_index<Format>(g.offset, row1 + x.i0));
-  TexelOf<Format> t11 = Format::fetch(ctx.storage.words, word_index<Format>(g.offset, row1 + x.i1));
+  TexelOf<Format> t00 = fetch(ctx, word_index<Format>(g.offset, row0 + x.i0));
+  TexelOf<Format> t10 = fetch(ctx, word_index<Format>(g.offset, row0 + x.i1));
+  TexelOf<Format> t01 = fetch(ctx, word_index<Format>(g.offset, row1 + x.i0));
+  TexelOf<Format> t11 = fetch(ctx, word_index<Format>(g.offset, row1 + x.i1));
   if (ctx.any_border) {
     apply_border(ctx, x.outside0 | y.outside0, t00);
     apply_border(ctx, x.outside1 | y.outside0, t10);
@@ -444,7 +473,7 @@ LUXEL_INLINE TexelOf<Format> filter_volume(const Context<Format>& ctx, const Lev
     const Int i = point_axis(u, g.width, g.fwidth, s.u, out_x);
     const Int j = point_axis(v, g.height, g.fheight, s.v, out_y);
     const Int k = point_axis(w, g.depth, g.fdepth, s.w, out_z);
-    TexelOf<Format> t = Format::fetch(ctx.storage.words, word_index<Format>(g.offset, k * slice + row_start(j, g.width) + i));
+    TexelOf<Format> t = fetch(ctx, word_index<Format>(g.offset, k * slice + row_start(j, g.width) + i));
     if (ctx.any_border) apply_border(ctx, out_x | out_y | out_z, t);
     return t;
   }
@@ -454,10 +483,10 @@ LUXEL_INLINE TexelOf<Format> filter_volume(const Context<Format>& ctx, const Lev
   auto filter_slice = [&](const Int& k, const IntMask& out_z) {
     const Int plane = k * slice;
     const Int row0 = plane + row_start(y.i0, g.width), row1 = plane + row_start(y.i1, g.width);
-    TexelOf<Format> t00 = Format::fetch(ctx.storage.words, word_index<Format>(g.offset, row0 + x.i0));
-    TexelOf<Format> t10 = Format::fetch(ctx.storage.words, word_index<Format>(g.offset, row0 + x.i1));
-    TexelOf<Format> t01 = Format::fetch(ctx.storage.words, word_index<Format>(g.offset, row1 + x.i0));
-    TexelOf<Format> t11 = Format::fetch(ctx.storage.words, word_index<Format>(g.offset, row1 + x.i1));
+    TexelOf<Format> t00 = fetch(ctx, word_index<Format>(g.offset, row0 + x.i0));
+    TexelOf<Format> t10 = fetch(ctx, word_index<Format>(g.offset, row0 + x.i1));
+    TexelOf<Format> t01 = fetch(ctx, word_index<Format>(g.offset, row1 + x.i0));
+    TexelOf<Format> t11 = fetch(ctx, word_index<Format>(g.offset, row1 + x.i1));
     if (ctx.any_border) {
       apply_border(ctx, x.outside0 | y.outside0 | out_z, t00);
       apply_border(ctx, x.outside1 | y.outside0 | out_z, t10);
@@ -648,6 +677,11 @@ Float4 sample_one_level_impl(const Texture& texture, const Sampler& s, const Tex
     // hardware prefetchers to follow, so without the hint every line is a miss the shader waits for.
     ctx.prefetch_words_below = 2 * simd::kStampHeight * Format::kWords * texture.width();
   }
+  // The same reads, and the color-correction volumes' (neighbouring pixels, neighbouring colors),
+  // find a stamp row's texels within a few words of each other. The mip-mapped path does not try
+  // the windows: its footprints turn with the surface and its stamps straddle levels, and the
+  // check cost the 3D passes as much as the windows saved (bench/README.md, session 31).
+  if constexpr (Kind != TextureKind::Cube) ctx.reads_stamp_rows = true;
   const Level g = level_geometry(texture, *ctx.storage.level_offsets, 0);
   return Format::finish(filter_level<Format, Kind>(ctx, g, F, prepare<Kind>(s, coord)));
 }

@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdint>
 #include <cstring>
@@ -219,6 +220,68 @@ TEST(Simd, FmaRoundsOnce) {
     for (int l = 0; l < kLanes; ++l) x[l] = u(rng), y[l] = u(rng), z[l] = u(rng);
     simd::fma(Float::load_unaligned(x), Float::load_unaligned(y), Float::load_unaligned(z)).store_unaligned(got);
     for (int l = 0; l < kLanes; ++l) ASSERT_EQ(got[l], std::fma(x[l], y[l], z[l])) << "lane " << l;
+  }
+}
+
+// gather_stamp_rows reads windows exactly when every lane lies within kStampRowWindowWords words
+// past its row's first lane, and then returns what a gather returns; otherwise it leaves `out`.
+TEST(Simd, GatherStampRowsReadsWindowsExactlyWhenTheRowsAllowIt) {
+  constexpr int kWindow = simd::kStampRowWindowWords;
+  constexpr int kWords = 4096;
+  std::vector<int32_t> words(kWords + kWindow);
+  std::mt19937 rng(12);
+  for (int32_t& w : words) w = static_cast<int32_t>(rng());
+  const auto first_of_row = [](int l) { return simd::lane_y(l) == 0 ? 0 : 2; };
+  const auto check = [&](const int32_t (&index)[kLanes], const char* what) {
+    bool near = kWindow > 0;
+    for (int l = 0; l < kLanes; ++l) {
+      const int64_t offset = int64_t{index[l]} - index[first_of_row(l)];
+      near = near && offset >= 0 && offset < kWindow;
+    }
+    Int out(-7);
+    const bool read = simd::gather_stamp_rows(words.data(), load(index), out);
+    ASSERT_EQ(read, near) << what;
+    int32_t got[kLanes];
+    out.store_unaligned(got);
+    for (int l = 0; l < kLanes; ++l) ASSERT_EQ(got[l], read ? words[size_t(index[l])] : -7) << what << ", lane " << l;
+  };
+  const auto at = [&](auto offset_of_pixel, int32_t top, int32_t bottom) {
+    int32_t index[kLanes];
+    for (int l = 0; l < kLanes; ++l) index[l] = (simd::lane_y(l) == 0 ? top : bottom) + offset_of_pixel(simd::lane_x(l));
+    return std::to_array(index);
+  };
+  const auto run = [&](const std::array<int32_t, kLanes>& a, const char* what) {
+    int32_t index[kLanes];
+    std::copy(a.begin(), a.end(), index);
+    check(index, what);
+  };
+  // A texel per pixel, a texel per four pixels, and rows in either order in memory.
+  run(at([](int x) { return x; }, 100, 1380), "a texel per pixel");
+  run(at([](int x) { return x / 4; }, 2000, 37), "stretched four times");
+  run(at([](int x) { return 0 * x; }, kWords - 1, kWords - 1), "the last word");
+  // The window's edge: the last pixel of the top row at offset kWindow - 1, then kWindow; the
+  // AVX-512 path's narrower window's edge (15, 16) inside it.
+  for (int last : {15, 16, kWindow - 1, kWindow}) {
+    auto index = at([](int x) { return x; }, 500, 900);
+    for (int l = 0; l < kLanes; ++l)
+      if (simd::lane_y(l) == 0 && simd::lane_x(l) == simd::kStampWidth - 1) index[size_t(l)] = 500 + last;
+    run(index, "the window's edge");
+  }
+  // A lane before its row's first: no window.
+  auto before = at([](int x) { return x; }, 500, 900);
+  before[1] = 499;
+  run(before, "a lane before its row's first");
+  // Random rows: clustered (offsets within the window, sometimes one past it) and scattered.
+  for (int round = 0; round < kRounds; ++round) {
+    const int32_t top = int32_t(rng() % kWords), bottom = int32_t(rng() % kWords);
+    std::array<int32_t, kLanes> index{};
+    for (int l = 0; l < kLanes; ++l) {
+      const int32_t first = simd::lane_y(l) == 0 ? top : bottom;
+      const int32_t spread = round % 3 == 0 ? kWords : kWindow + (round % 3 == 1 ? 0 : 1);
+      index[size_t(l)] = std::min<int32_t>(first + int32_t(rng() % uint32_t(std::max(spread, 1))), kWords - 1);
+    }
+    index[0] = top, index[2] = bottom;
+    run(index, "random rows");
   }
 }
 

@@ -328,6 +328,66 @@ inline void gather_pairs(const int32_t* base, const Int& index, Int& low, Int& h
 #endif
 }
 
+/// How many words past its first lane's index gather_stamp_rows may read for a stamp row (0: it
+/// never reads windows). Memory it reads through must extend this far past the last index.
+inline constexpr int kStampRowWindowWords =
+#if defined(__AVX512F__)
+    32;
+#elif defined(__AVX2__)
+    8;
+#else
+    0;
+#endif
+
+/// base[index[l]] in each lane l, as gather() returns it, read without a gather when the indices
+/// of each stamp row lie close together: when every lane's index is at most kStampRowWindowWords
+/// - 1 words past the index of its row's first lane (lane 0 for the top row, lane 2 for the
+/// bottom one), the words are loaded as one window per row and permuted into the lanes; returns
+/// false, with `out` untouched, otherwise. Reads of a screen-aligned copy (a texel or less per
+/// pixel) are such: a gather costs about a load per lane on AMD and Intel cores alike, a window
+/// of 16 words one load and its share of a permute. Memory must be readable up to
+/// kStampRowWindowWords words past each row's first index.
+inline bool gather_stamp_rows(const int32_t* base, const Int& index, Int& out) {
+#if defined(__AVX512F__)
+  static_assert(kLanes == 16);
+  const __m512i first = _mm512_permutexvar_epi32(_mm512_setr_epi32(0, 0, 2, 2, 0, 0, 2, 2, 0, 0, 2, 2, 0, 0, 2, 2), index);
+  const __m512i offset = _mm512_sub_epi32(index, first);  // below the row's first: huge unsigned
+  constexpr __mmask16 kBottomRow = 0xcccc;
+  const __m128i firsts = _mm512_castsi512_si128(index);
+  const int32_t* top = base + _mm_cvtsi128_si32(firsts);
+  const int32_t* bottom = base + _mm_extract_epi32(firsts, 2);
+  if (_mm512_cmplt_epu32_mask(offset, _mm512_set1_epi32(16)) == 0xffff) {
+    // Windows of 16: the bottom row's words are the permute's second source.
+    const __m512i pick = _mm512_mask_add_epi32(offset, kBottomRow, offset, _mm512_set1_epi32(16));
+    out = Int(_mm512_permutex2var_epi32(_mm512_loadu_si512(top), pick, _mm512_loadu_si512(bottom)));
+    return true;
+  }
+  if (_mm512_cmplt_epu32_mask(offset, _mm512_set1_epi32(32)) == 0xffff) {
+    // Windows of 32 (a stamp row over a footprint up to four texels per pixel): a permute per row.
+    const __m512i t = _mm512_permutex2var_epi32(_mm512_loadu_si512(top), offset, _mm512_loadu_si512(top + 16));
+    const __m512i b = _mm512_permutex2var_epi32(_mm512_loadu_si512(bottom), offset, _mm512_loadu_si512(bottom + 16));
+    out = Int(_mm512_mask_blend_epi32(kBottomRow, t, b));
+    return true;
+  }
+  return false;
+#elif defined(__AVX2__)
+  static_assert(kLanes == 8);
+  const __m256i first = _mm256_permutevar8x32_epi32(index, _mm256_setr_epi32(0, 0, 2, 2, 0, 0, 2, 2));
+  const __m256i offset = _mm256_sub_epi32(index, first);
+  const __m256i seven = _mm256_set1_epi32(7);  // offset <= 7 unsigned: AVX2 compares only signed
+  if (_mm256_movemask_ps(_mm256_castsi256_ps(_mm256_cmpeq_epi32(_mm256_min_epu32(offset, seven), offset))) != 0xff)
+    return false;
+  const __m128i firsts = _mm256_castsi256_si128(index);
+  const __m256i t = _mm256_permutevar8x32_epi32(_mm256_loadu_si256(reinterpret_cast<const __m256i*>(base + _mm_cvtsi128_si32(firsts))), offset);
+  const __m256i b = _mm256_permutevar8x32_epi32(_mm256_loadu_si256(reinterpret_cast<const __m256i*>(base + _mm_extract_epi32(firsts, 2))), offset);
+  out = Int(_mm256_blend_epi32(t, b, 0xcc));
+  return true;
+#else
+  (void)base, (void)index, (void)out;
+  return false;
+#endif
+}
+
 /// Each lane of `packed` holds two IEEE halves; returns them as floats (exactly, denormals, inf
 /// and NaN included, whatever the FTZ/DAZ mode): `low` from bits 0-15, `high` from bits 16-31.
 /// (Texture sampling of RGBA16F; F16C is part of x86-64-v3.)

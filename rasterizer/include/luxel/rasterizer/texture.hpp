@@ -170,7 +170,8 @@ class Texture {
   /// to back, each texel as bytes_per_texel(format()) bytes in the format's channel order.
   /// Throws std::out_of_range for a level or face that does not exist.
   std::span<const uint8_t> level_bytes(int level, int face = 0) const;
-  /// Bytes of all levels of all faces, with a cube map's second copy for sampling (below).
+  /// Bytes held: all levels of all faces, the padding after them (words_), and a cube map's second
+  /// copy for sampling (below).
   size_t storage_bytes() const { return (words_.size() + cube_words_.size()) * sizeof(uint32_t); }
 
   /// Replaces one level of one face with `bytes`, laid out as level_bytes() describes. Throws
@@ -211,7 +212,8 @@ class Texture {
   int words_per_texel_ = 1;
   /// Storage is face-major: face f, level l starts at word f * face_words_ + level_offset_[l].
   /// Offsets are in 32-bit words and fit int32 (checked at creation), so SIMD gathers can index
-  /// any texel of any level from one base pointer.
+  /// any texel of any level from one base pointer. words_ ends with simd::kStampRowWindowWords
+  /// words of padding past the last face.
   int32_t face_words_ = 0;
   std::array<int32_t, kMaxMipLevels> level_offset_{};
   std::vector<uint32_t> words_;
