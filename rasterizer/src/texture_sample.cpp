@@ -181,8 +181,8 @@ struct Rgba8Srgb {
   LUXEL_INLINE static Float4 fetch(const int32_t* words, const Int& index) { return decode(gather(words, index)); }
   LUXEL_INLINE static Float4 decode(const Int& w) {
     const float* table = kSrgbToLinear.data();
-    return {gather(table, simd::byte_of<0>(w)), gather(table, simd::byte_of<1>(w)), gather(table, simd::byte_of<2>(w)),
-            to_float(simd::byte_of<3>(w))};
+    return {simd::lookup_byte(table, simd::byte_of<0>(w)), simd::lookup_byte(table, simd::byte_of<1>(w)),
+            simd::lookup_byte(table, simd::byte_of<2>(w)), to_float(simd::byte_of<3>(w))};
   }
   static Float4 raw_border(const glm::vec4& b) { return broadcast({b.x, b.y, b.z, b.w * 255.0f}); }
   LUXEL_INLINE static Float4 finish(const Float4& raw) { return {raw.x, raw.y, raw.z, divide_by<255>(raw.w)}; }

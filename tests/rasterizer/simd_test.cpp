@@ -285,5 +285,23 @@ TEST(Simd, GatherStampRowsReadsWindowsExactlyWhenTheRowsAllowIt) {
   }
 }
 
+// lookup_byte returns the table's entry for every index in every lane, bit for bit.
+TEST(Simd, LookupByteIsTheTablesEntryInEveryLane) {
+  std::mt19937 rng(13);
+  std::array<float, 256> table{};
+  for (float& t : table) {
+    const uint32_t bits = static_cast<uint32_t>(rng());
+    std::memcpy(&t, &bits, 4);  // any bits, NaN payloads included
+  }
+  for (int round = 0; round < 256 + kRounds; ++round) {
+    int32_t index[kLanes];
+    // First every index in every lane (a rotation per round), then random ones.
+    for (int l = 0; l < kLanes; ++l) index[l] = round < 256 ? (round + 37 * l) & 255 : int32_t(rng() & 255);
+    float got[kLanes];
+    simd::lookup_byte(table.data(), load(index)).store_unaligned(got);
+    for (int l = 0; l < kLanes; ++l) ASSERT_EQ(std::memcmp(&got[l], &table[size_t(index[l])], 4), 0) << "index " << index[l];
+  }
+}
+
 }  // namespace
 }  // namespace luxel::rasterizer

@@ -328,6 +328,30 @@ inline void gather_pairs(const int32_t* base, const Int& index, Int& low, Int& h
 #endif
 }
 
+/// table[index[l]] in each lane l, for a table of 256 floats and indices in [0, 255]: the decode of
+/// a byte through a curve (texture sampling's sRGB). At 16 lanes the table is read as eight
+/// two-register halves of 32 entries, each permuted by the index's low five bits, and merged by its
+/// top three bits: eight permutes and seven blends in place of a gather, which costs about a load
+/// per lane on AMD and Intel cores alike (bench/README.md, session 31).
+inline Float lookup_byte(const float* table, const Int& index) {
+#if defined(__AVX512F__)
+  static_assert(kLanes == 16);
+  __m512 part[8];
+  for (int k = 0; k < 8; ++k)
+    part[k] = _mm512_permutex2var_ps(_mm512_loadu_ps(table + 32 * k), index, _mm512_loadu_ps(table + 32 * k + 16));
+  const __mmask16 bit5 = _mm512_test_epi32_mask(index, _mm512_set1_epi32(32));
+  const __mmask16 bit6 = _mm512_test_epi32_mask(index, _mm512_set1_epi32(64));
+  const __mmask16 bit7 = _mm512_test_epi32_mask(index, _mm512_set1_epi32(128));
+  __m512 quarter[4];
+  for (int k = 0; k < 4; ++k) quarter[k] = _mm512_mask_blend_ps(bit5, part[2 * k], part[2 * k + 1]);
+  const __m512 low = _mm512_mask_blend_ps(bit6, quarter[0], quarter[1]);
+  const __m512 high = _mm512_mask_blend_ps(bit6, quarter[2], quarter[3]);
+  return Float(_mm512_mask_blend_ps(bit7, low, high));
+#else
+  return gather(table, index);
+#endif
+}
+
 /// How many words past its first lane's index gather_stamp_rows may read for a stamp row (0: it
 /// never reads windows). Memory it reads through must extend this far past the last index.
 inline constexpr int kStampRowWindowWords =
