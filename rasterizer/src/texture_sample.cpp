@@ -100,18 +100,6 @@ LUXEL_INLINE Int gather(const int32_t* base, const Int& index) {
 #endif
 }
 
-LUXEL_INLINE Float gather(const float* base, const Int& index) {
-#if defined(__SANITIZE_ADDRESS__)
-  alignas(64) int32_t i[kLanes];
-  alignas(64) float out[kLanes];
-  index.store_aligned(i);
-  for (int l = 0; l < kLanes; ++l) out[l] = base[i[l]];
-  return Float::load_aligned(out);
-#else
-  return simd::gather(base, index);
-#endif
-}
-
 /// base[index[l]], read as windows along the stamp's rows where the indices allow it
 /// (simd::gather_stamp_rows), gathered where they do not.
 LUXEL_INLINE Int gather_stamp_rows(const int32_t* base, const Int& index) {
