@@ -717,11 +717,36 @@ bool reads_opaque(const Texture& texture, const Sampler& sampler) {
 
 }  // namespace
 
-Float4 sample_level(const Texture& texture, const Sampler& sampler, const TexCoord& coord, const Float& lod) {
+namespace {
+
+/// Whether no LOD changes what `sampler` returns: one filter on both sides of the crossover and
+/// level 0 only.
+bool reads_one_level(const Sampler& sampler) { return sampler.mip == MipFilter::None && sampler.min == sampler.mag; }
+
+/// The read of a sampler that reads_one_level, dispatched on the texture and sampler.
+Float4 sample_one_level(const Texture& texture, const Sampler& sampler, const TexCoord& coord) {
   const bool opaque = reads_opaque(texture, sampler);
   const int format = static_cast<int>(texture_detail::read_format(texture, sampler)), kind = static_cast<int>(texture.kind());
-  if (sampler.mip == MipFilter::None && sampler.min == sampler.mag)
-    return kOneLevelFns[opaque][format][static_cast<int>(sampler.mag)][kind](texture, sampler, coord);
+  return kOneLevelFns[opaque][format][static_cast<int>(sampler.mag)][kind](texture, sampler, coord);
+}
+
+/// sample() of a sampler with a LOD to compute: out of line, so that the one-level reads of
+/// sample() need none of its stack (the post passes' reads, several per pixel).
+[[gnu::noinline]] Float4 sample_at_computed_lod(const Texture& texture, const Sampler& sampler, const TexCoord& coord,
+                                                const Float& bias) {
+  const bool has_w = texture.kind() != TextureKind::Texture2D;
+  const Float zero(0.0f);
+  const TexCoord dx{simd::ddx(coord.x), simd::ddx(coord.y), has_w ? simd::ddx(coord.z) : zero};
+  const TexCoord dy{simd::ddy(coord.x), simd::ddy(coord.y), has_w ? simd::ddy(coord.z) : zero};
+  return sample_level(texture, sampler, coord, compute_lod(texture, coord, dx, dy) + bias);
+}
+
+}  // namespace
+
+Float4 sample_level(const Texture& texture, const Sampler& sampler, const TexCoord& coord, const Float& lod) {
+  if (reads_one_level(sampler)) return sample_one_level(texture, sampler, coord);
+  const bool opaque = reads_opaque(texture, sampler);
+  const int format = static_cast<int>(texture_detail::read_format(texture, sampler)), kind = static_cast<int>(texture.kind());
   return kSampleFns[opaque][format][kind](texture, sampler, coord, lod);
 }
 
@@ -771,13 +796,8 @@ Float4 sample_grad(const Texture& texture, const Sampler& sampler, const TexCoor
 }
 
 Float4 sample(const Texture& texture, const Sampler& sampler, const TexCoord& coord, const Float& bias) {
-  // One filter on both sides of the crossover and level 0 only: no LOD changes the result.
-  if (sampler.mip == MipFilter::None && sampler.min == sampler.mag) return sample_level(texture, sampler, coord, Float(0.0f));
-  const bool has_w = texture.kind() != TextureKind::Texture2D;
-  const Float zero(0.0f);
-  const TexCoord dx{simd::ddx(coord.x), simd::ddx(coord.y), has_w ? simd::ddx(coord.z) : zero};
-  const TexCoord dy{simd::ddy(coord.x), simd::ddy(coord.y), has_w ? simd::ddy(coord.z) : zero};
-  return sample_level(texture, sampler, coord, compute_lod(texture, coord, dx, dy) + bias);
+  if (reads_one_level(sampler)) return sample_one_level(texture, sampler, coord);
+  return sample_at_computed_lod(texture, sampler, coord, bias);
 }
 
 }  // namespace luxel::rasterizer
