@@ -668,7 +668,8 @@ Float4 sample_one_level_impl(const Texture& texture, const Sampler& s, const Tex
   // The same reads, and the color-correction volumes' (neighbouring pixels, neighbouring colors),
   // find a stamp row's texels within a few words of each other. The mip-mapped path does not try
   // the windows: its footprints turn with the surface and its stamps straddle levels, and the
-  // check cost the 3D passes as much as the windows saved (bench/README.md, session 31).
+  // check cost the 3D passes as much as the windows saved (bench/README.md, session 31). Cube maps
+  // are read from their bordered copy, which keeps no padding for a window.
   if constexpr (Kind != TextureKind::Cube) ctx.reads_stamp_rows = true;
   const Level g = level_geometry(texture, *ctx.storage.level_offsets, 0);
   return Format::finish(filter_level<Format, Kind>(ctx, g, F, prepare<Kind>(s, coord)));
@@ -714,10 +715,6 @@ bool reads_opaque(const Texture& texture, const Sampler& sampler) {
                       (texture.kind() == TextureKind::Volume && sampler.w == Address::Border);
   return !border;
 }
-
-}  // namespace
-
-namespace {
 
 /// Whether no LOD changes what `sampler` returns: one filter on both sides of the crossover and
 /// level 0 only.
