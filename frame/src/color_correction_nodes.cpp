@@ -74,11 +74,14 @@ ColorCorrectionNodes::ColorCorrectionNodes(const scenes::Scene& scene, EyePath e
     grade = postfx::color_transform_named(*look);
     look_ = postfx::sample_lut(*grade);
   }
-  if (!scene_nodes) return;
-  for (size_t i = 0; i < scene.color_corrections.size(); ++i)
-    luts_.push_back(scene_lut(scene, scene.color_corrections[i].lut, "color correction " + std::to_string(i), grade));
-  for (size_t i = 0; i < scene.color_correction_volumes.size(); ++i)
-    luts_.push_back(scene_lut(scene, scene.color_correction_volumes[i].lut, "color correction volume " + std::to_string(i), grade));
+  if (scene_nodes) {
+    for (size_t i = 0; i < scene.color_corrections.size(); ++i)
+      luts_.push_back(scene_lut(scene, scene.color_corrections[i].lut, "color correction " + std::to_string(i), grade));
+    for (size_t i = 0; i < scene.color_correction_volumes.size(); ++i)
+      luts_.push_back(scene_lut(scene, scene.color_correction_volumes[i].lut, "color correction volume " + std::to_string(i), grade));
+  }
+  for (const postfx::Lut& lut : luts_) volumes_.push_back(postfx::lut_volume(lut));
+  if (look_) volumes_.push_back(postfx::lut_volume(*look_));
 }
 
 std::vector<float> ColorCorrectionNodes::scene_weights(float time) {
@@ -103,11 +106,11 @@ std::vector<postfx::WeightedLut> ColorCorrectionNodes::weighted_at(float time) {
   std::vector<postfx::WeightedLut> out;
   std::vector<float> chosen_weights;
   for (int i : chosen) {
-    out.push_back({&luts_[size_t(i)], weights[size_t(i)]});
+    out.push_back({&luts_[size_t(i)], weights[size_t(i)], &volumes_[size_t(i)]});
     chosen_weights.push_back(weights[size_t(i)]);
   }
   if (look_) {
-    if (const float own = postfx::default_weight(chosen_weights); own > 0.0f) out.push_back({&*look_, own});
+    if (const float own = postfx::default_weight(chosen_weights); own > 0.0f) out.push_back({&*look_, own, &volumes_.back()});
   }
   return out;
 }

@@ -55,8 +55,8 @@ float default_weight(std::span<const float> weights) {
 namespace {
 
 /// The LUTs as the engine's volumes, and their weights, set into a pass's parameters (`Params`:
-/// ColorCorrectionParams or EnginePostParams); the volumes live in the returned vector, which the
-/// parameters point into.
+/// ColorCorrectionParams or EnginePostParams); the volumes the caller did not keep live in the
+/// returned vector, which the parameters point into.
 template <class Params>
 std::vector<rasterizer::Texture> set_lookups(std::span<const WeightedLut> luts, Params& params) {
   const std::vector<float> weights = checked_weights(luts);
@@ -69,8 +69,8 @@ std::vector<rasterizer::Texture> set_lookups(std::span<const WeightedLut> luts, 
   std::vector<rasterizer::Texture> volumes;
   volumes.reserve(luts.size());
   for (size_t k = 0; k < luts.size(); ++k) {
-    volumes.push_back(lut_volume(*luts[k].lut));
-    params.luts[k].texture = &volumes.back();
+    if (!luts[k].volume) volumes.push_back(lut_volume(*luts[k].lut));
+    params.luts[k].texture = luts[k].volume ? luts[k].volume : &volumes.back();
     params.lut_weights[int(k)] = weights[k];
   }
   params.default_weight = default_weight(weights);

@@ -273,6 +273,9 @@ Texture Texture::create(const TextureDesc& desc) {
     t.cube_face_words_ = static_cast<int32_t>(bordered);
     t.cube_words_.assign(static_cast<size_t>(bordered * t.faces()), 0u);
   }
+  const int64_t cell_words = 8 * int64_t{t.width_ + 1} * (t.height_ + 1) * (t.depth_ + 1);
+  if (t.kind_ == TextureKind::Volume && t.levels_ == 1 && t.words_per_texel_ == 1 && cell_words <= kMaxCellWords)
+    t.cell_words_.assign(static_cast<size_t>(cell_words), 0u);
   // All zeros: opaque only as R32F, which reads alpha 1 whatever it holds.
   t.level_opaque_.assign(static_cast<size_t>(t.faces() * t.levels_), desc.format == TextureFormat::R32F ? 1 : 0);
   t.opaque_ = desc.format == TextureFormat::R32F;
@@ -327,6 +330,7 @@ void Texture::upload(int level, std::span<const uint8_t> bytes, int face) {
   }
   std::memcpy(destination.data(), bytes.data(), bytes.size());
   refresh_cube_copy(level, face);
+  refresh_cells();
   set_level_opaque(level, face, alpha_at_max(destination));
 }
 
@@ -341,6 +345,7 @@ void Texture::upload(int level, std::span<const glm::vec4> texels, int face) {
     encode_texel(format_, glm::dvec4(texels[i]), destination.data() + i * texel_bytes);
   }
   refresh_cube_copy(level, face);
+  refresh_cells();
   set_level_opaque(level, face, alpha_at_max(destination));
 }
 
@@ -365,6 +370,21 @@ bool Texture::alpha_at_max(std::span<const uint8_t> texels) const {
 void Texture::set_level_opaque(int level, int face, bool opaque) {
   level_opaque_[static_cast<size_t>(face) * levels_ + level] = opaque ? 1 : 0;
   opaque_ = std::all_of(level_opaque_.begin(), level_opaque_.end(), [](uint8_t o) { return o != 0; });
+}
+
+// --- The volumes' trilinear cells ------------------------------------------------------------
+
+void Texture::refresh_cells() {
+  if (cell_words_.empty()) return;
+  const int w = width_, h = height_, d = depth_;
+  const auto texel = [&](int i, int j, int k) {
+    return words_[(static_cast<size_t>(std::clamp(k, 0, d - 1)) * h + std::clamp(j, 0, h - 1)) * w + std::clamp(i, 0, w - 1)];
+  };
+  uint32_t* cell = cell_words_.data();
+  for (int k = -1; k < d; ++k)
+    for (int j = -1; j < h; ++j)
+      for (int i = -1; i < w; ++i)
+        for (int corner = 0; corner < 8; ++corner) *cell++ = texel(i + (corner & 1), j + ((corner >> 1) & 1), k + (corner >> 2));
 }
 
 // --- The cube maps' sampling copy -------------------------------------------------------------

@@ -20,13 +20,15 @@ struct SampledStorage {
   const int32_t* words;
   int32_t face_words;
   const std::array<int32_t, kMaxMipLevels>* level_offsets;
+  const int32_t* cells = nullptr;  ///< a volume's trilinear cells (Texture::cell_words_), if it keeps them
 };
 
 struct TextureAccess {
   static SampledStorage sampled(const Texture& t) {
     if (t.kind_ == TextureKind::Cube)
       return {reinterpret_cast<const int32_t*>(t.cube_words_.data()), t.cube_face_words_, &t.cube_level_offset_};
-    return {reinterpret_cast<const int32_t*>(t.words_.data()), t.face_words_, &t.level_offset_};
+    return {reinterpret_cast<const int32_t*>(t.words_.data()), t.face_words_, &t.level_offset_,
+            t.cell_words_.empty() ? nullptr : reinterpret_cast<const int32_t*>(t.cell_words_.data())};
   }
   /// Level 0 of a 2D texture, to be written in place (a resolve into it: framebuffer.cpp).
   static std::span<uint8_t> level0(Texture& t) { return t.level_span(0, 0); }

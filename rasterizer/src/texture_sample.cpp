@@ -269,6 +269,9 @@ struct Context {
   /// One-word formats: read each footprint texel's words as windows along the stamp's rows where
   /// they lie close enough (gather_stamp_rows).
   bool reads_stamp_rows = false;
+  /// Trilinear reads of a volume under Clamp on every axis: its cells (Texture::cell_words_), or
+  /// null to read its texels one by one.
+  const int32_t* cells = nullptr;
 };
 
 /// The texel at `index` of each lane, in the format's raw domain.
@@ -375,12 +378,18 @@ struct LinearAxis {
   IntMask outside0 = IntMask(false), outside1 = IntMask(false);  ///< set by Border only
 };
 
-LUXEL_INLINE LinearAxis linear_axis(const Float& c, const Int& n, const Float& fn, Address mode) {
+/// Where a linear footprint starts along an axis of n texels (fn = n): the first of its two texels
+/// before addressing, and the weight of the second.
+LUXEL_INLINE Int footprint_start(const Float& c, const Float& fn, Float& weight) {
   const Float x = c * fn - Float(0.5f);
   const Float first = xsimd::floor(x);
+  weight = x - first;
+  return to_int(first);
+}
+
+LUXEL_INLINE LinearAxis linear_axis(const Float& c, const Int& n, const Float& fn, Address mode) {
   LinearAxis a;
-  a.weight = x - first;
-  const Int i0 = to_int(first);
+  const Int i0 = footprint_start(c, fn, a.weight);
   a.i0 = address(i0, n, mode, a.outside0);
   a.i1 = address(i0 + Int(1), n, mode, a.outside1);
   return a;
@@ -451,6 +460,29 @@ LUXEL_INLINE TexelOf<Format> filter_2d(const Context<Format>& ctx, const Level& 
   return lerp(lerp(t00, t10, x.weight), lerp(t01, t11, x.weight), y.weight);
 }
 
+/// A trilinear footprint under Clamp read from the volume's cells (Texture::cell_words_): the
+/// texels and weights filter_volume's own footprint reads, and its lerps in its order, so the same
+/// result to the bit, from a load per lane instead of eight gathers.
+template <class Format>
+LUXEL_INLINE TexelOf<Format> filter_volume_cells(const Context<Format>& ctx, const Level& g, const Float& u, const Float& v,
+                                                 const Float& w) {
+  // A footprint's start clamped to [-1, n - 1] names the cell of the two texels Clamp reads, plus
+  // one: cells start at -1.
+  const auto cell_axis = [](const Float& c, const Int& n, const Float& fn, Float& weight) {
+    return xsimd::min(xsimd::max(footprint_start(c, fn, weight), Int(-1)), n - Int(1)) + Int(1);
+  };
+  Float wx, wy, wz;
+  const Int i = cell_axis(u, g.width, g.fwidth, wx), j = cell_axis(v, g.height, g.fheight, wy);
+  const Int k = cell_axis(w, g.depth, g.fdepth, wz);
+  const Int one(1);
+  const Int cell = (k * (g.height + one) + j) * (g.width + one) + i;
+  Int words[8];
+  simd::gather_eight(ctx.cells, cell << 3, words);
+  TexelOf<Format> t[8];
+  for (int c = 0; c < 8; ++c) t[c] = Format::decode(words[c]);
+  return lerp(lerp(lerp(t[0], t[1], wx), lerp(t[2], t[3], wx), wy), lerp(lerp(t[4], t[5], wx), lerp(t[6], t[7], wx), wy), wz);
+}
+
 template <class Format>
 LUXEL_INLINE TexelOf<Format> filter_volume(const Context<Format>& ctx, const Level& g, Filter filter, const Float& u,
                                            const Float& v, const Float& w) {
@@ -464,6 +496,9 @@ LUXEL_INLINE TexelOf<Format> filter_volume(const Context<Format>& ctx, const Lev
     TexelOf<Format> t = fetch(ctx, word_index<Format>(g.offset, k * slice + row_start(j, g.width) + i));
     if (ctx.any_border) apply_border(ctx, out_x | out_y | out_z, t);
     return t;
+  }
+  if constexpr (Format::kWords == 1) {
+    if (ctx.cells) return filter_volume_cells<Format>(ctx, g, u, v, w);
   }
   const LinearAxis x = linear_axis(u, g.width, g.fwidth, s.u);
   const LinearAxis y = linear_axis(v, g.height, g.fheight, s.v);
@@ -671,6 +706,9 @@ Float4 sample_one_level_impl(const Texture& texture, const Sampler& s, const Tex
   // check cost the 3D passes as much as the windows saved (bench/README.md, session 31). Cube maps
   // are read from their bordered copy, which keeps no padding for a window.
   if constexpr (Kind != TextureKind::Cube) ctx.reads_stamp_rows = true;
+  if constexpr (Kind == TextureKind::Volume && F == Filter::Linear) {
+    if (s.u == Address::Clamp && s.v == Address::Clamp && s.w == Address::Clamp) ctx.cells = ctx.storage.cells;
+  }
   const Level g = level_geometry(texture, *ctx.storage.level_offsets, 0);
   return Format::finish(filter_level<Format, Kind>(ctx, g, F, prepare<Kind>(s, coord)));
 }

@@ -285,6 +285,38 @@ TEST(Simd, GatherStampRowsReadsWindowsExactlyWhenTheRowsAllowIt) {
   }
 }
 
+// gather_eight returns in words[k] what a gather of index + k returns, lane for lane: lanes
+// reading the same words, neighbouring ones, far apart, the first and the last run of the memory.
+TEST(Simd, GatherEightIsEightGathersOfConsecutiveWords) {
+  constexpr int kWords = 4096;
+  std::vector<int32_t> words(kWords + 8);
+  std::mt19937 rng(21);
+  for (int32_t& w : words) w = static_cast<int32_t>(rng());
+  const auto check = [&](const std::array<int32_t, kLanes>& index, const char* what) {
+    int32_t raw[kLanes];
+    std::copy(index.begin(), index.end(), raw);
+    Int got[8];
+    simd::gather_eight(words.data(), load(raw), got);
+    for (int k = 0; k < 8; ++k) {
+      int32_t lanes_of_word[kLanes];
+      got[k].store_unaligned(lanes_of_word);
+      for (int l = 0; l < kLanes; ++l)
+        ASSERT_EQ(lanes_of_word[l], words[size_t(index[size_t(l)] + k)]) << what << ", word " << k << ", lane " << l;
+    }
+  };
+  std::array<int32_t, kLanes> index{};
+  index.fill(kWords - 8);
+  check(index, "every lane the last run");
+  for (int l = 0; l < kLanes; ++l) index[size_t(l)] = 8 * l;
+  check(index, "runs side by side");
+  for (int l = 0; l < kLanes; ++l) index[size_t(l)] = kWords - 1 - 37 * l;
+  check(index, "runs overlapping, backwards");
+  for (int round = 0; round < kRounds; ++round) {
+    for (int32_t& i : index) i = int32_t(rng() % uint32_t(kWords));
+    check(index, "random runs");
+  }
+}
+
 // lookup_byte returns the table's entry for every index in every lane, bit for bit.
 TEST(Simd, LookupByteIsTheTablesEntryInEveryLane) {
   std::mt19937 rng(13);

@@ -167,6 +167,11 @@ TEST(TextureCreate, SizesLevelsAndStorage) {
   EXPECT_EQ(volume.depth(1), 1);
   EXPECT_EQ(volume.height(2), 1);
   EXPECT_EQ(volume.storage_bytes(), 4u * (64 + 8 + 2 + 1) + kPadding);
+  // One level of a one-word format: the texels, and eight per trilinear cell, (8+1)(4+1)(2+1)
+  // cells; a two-word format keeps none, nor does a volume whose cells would pass kMaxCellWords.
+  EXPECT_EQ(Texture::create_volume(8, 4, 2, TextureFormat::RGBA8, 1).storage_bytes(), 4u * (64 + 8 * 9 * 5 * 3) + kPadding);
+  EXPECT_EQ(Texture::create_volume(8, 4, 2, TextureFormat::RGBA16F, 1).storage_bytes(), 8u * 64 + kPadding);
+  EXPECT_EQ(Texture::create_volume(127, 127, 127, TextureFormat::R32F, 1).storage_bytes(), 4u * 127 * 127 * 127 + kPadding);
 
   EXPECT_EQ(Texture::create_2d(64, 64, TextureFormat::RGBA16, 1).mip_levels(), 1);
   EXPECT_EQ(Texture::create_2d(64, 64, TextureFormat::RGBA16, 3).storage_bytes(), 8u * (4096 + 1024 + 256) + kPadding);
@@ -553,6 +558,14 @@ TEST(TextureVolume, SamplesAcrossSlices) {
   const std::vector<float> eight = {1, 2, 3, 5, 7, 11, 13, 17};
   c.upload(0, std::span(reinterpret_cast<const uint8_t*>(eight.data()), 32));
   EXPECT_BOTH_NEAR(c, clamp, glm::vec3(0.5f), 0.0f, glm::vec4(59.0f / 8, 1, 1, 1), 1e-5f);
+  // An upload remakes the trilinear cells Clamp reads: a quarter of the way from texel (0, 0, 0)
+  // to (1, 1, 1), then past the far corner (texel (1, 1, 1) alone).
+  const std::vector<float> other = {2, 4, 8, 16, 32, 64, 128, 256};
+  c.upload(0, std::span(reinterpret_cast<const uint8_t*>(other.data()), 32));
+  float quarter = 0;
+  for (int t = 0; t < 8; ++t) quarter += other[size_t(t)] * (t & 1 ? 0.25f : 0.75f) * (t & 2 ? 0.25f : 0.75f) * (t & 4 ? 0.25f : 0.75f);
+  EXPECT_BOTH_NEAR(c, clamp, glm::vec3(0.375f), 0.0f, glm::vec4(quarter, 1, 1, 1), 1e-5f);
+  EXPECT_BOTH_NEAR(c, clamp, glm::vec3(1.5f), 0.0f, glm::vec4(256, 1, 1, 1), 0.0f);
 }
 
 // --- Mip generation ---------------------------------------------------------------------------
@@ -963,6 +976,9 @@ std::vector<TestTexture> random_textures(TextureFormat format, std::mt19937& rng
   add(Texture::create_volume(5, 3, 6, format), "volume 5x3x6");
   add(Texture::create_volume(4, 4, 4, format, 2), "volume 4x4x4 (2 levels)");
   add(Texture::create_volume(1, 2, 9, format), "volume 1x2x9");
+  // One level: a one-word format's volume keeps trilinear cells, which Clamp reads.
+  add(Texture::create_volume(7, 5, 4, format, 1), "volume 7x5x4 (1 level)");
+  add(Texture::create_volume(1, 3, 2, format, 1), "volume 1x3x2 (1 level)");
   add(Texture::create_cube(9, format), "cube 9");
   add(Texture::create_cube(1, format), "cube 1");
   add(Texture::create_cube(16, format, 3), "cube 16 (3 levels)");

@@ -40,6 +40,9 @@ inline constexpr int kMaxLuts = shading::source::kMaxColorCorrectionLuts;
 struct WeightedLut {
   const Lut* lut = nullptr;
   float weight = 0.0f;  ///< finite, >= 0
+  /// lut_volume(*lut), when the caller keeps it from pass to pass (a sequence's frames blend the
+  /// same LUTs); the pass makes it otherwise.
+  const rasterizer::Texture* volume = nullptr;
 };
 
 struct WeightedTransform {

@@ -570,9 +570,9 @@ inline void transpose_rows(const float* const* rows, Float& x, Float& y, Float& 
 
 #if defined(__AVX2__)
 namespace detail {
-/// An 8x8 transpose of 32-bit fields into eight 32-byte aligned rows: pairs of fields, then
-/// fours, then the two 128-bit halves (lanes l, l + 4).
-inline void transpose_8x8_to_rows(const __m256i (&fields)[8], int32_t (*rows)[8]) {
+/// An 8x8 transpose of 32-bit elements, out[l][f] = in[f][l]: pairs, then fours, then the two
+/// 128-bit halves (elements l, l + 4).
+inline void transpose_8x8(const __m256i (&fields)[8], __m256i (&out)[8]) {
   __m256i pairs[8], fours[8];
   for (int f = 0; f < 8; f += 2) {
     pairs[f] = _mm256_unpacklo_epi32(fields[f], fields[f + 1]);      // lanes 0, 1 | 4, 5
@@ -585,9 +585,16 @@ inline void transpose_8x8_to_rows(const __m256i (&fields)[8], int32_t (*rows)[8]
     fours[h + 3] = _mm256_unpackhi_epi64(pairs[h + 1], pairs[h + 3]);  // lane 3 | 7
   }
   for (int l = 0; l < 4; ++l) {
-    _mm256_store_si256(reinterpret_cast<__m256i*>(rows[l]), _mm256_permute2x128_si256(fours[l], fours[l + 4], 0x20));
-    _mm256_store_si256(reinterpret_cast<__m256i*>(rows[l + 4]), _mm256_permute2x128_si256(fours[l], fours[l + 4], 0x31));
+    out[l] = _mm256_permute2x128_si256(fours[l], fours[l + 4], 0x20);
+    out[l + 4] = _mm256_permute2x128_si256(fours[l], fours[l + 4], 0x31);
   }
+}
+
+/// The same into eight 32-byte aligned rows.
+inline void transpose_8x8_to_rows(const __m256i (&fields)[8], int32_t (*rows)[8]) {
+  __m256i out[8];
+  transpose_8x8(fields, out);
+  for (int l = 0; l < 8; ++l) _mm256_store_si256(reinterpret_cast<__m256i*>(rows[l]), out[l]);
 }
 }  // namespace detail
 #endif
@@ -615,6 +622,51 @@ inline void transpose_to_rows(const Int (&fields)[8], int32_t (*rows)[8]) {
     fields[f].store_aligned(lanes_of_field);
     for (int l = 0; l < kLanes; ++l) rows[l][f] = lanes_of_field[l];
   }
+#endif
+}
+
+/// Eight consecutive words per lane: words[k] gets base[index[l] + k] in each lane l, what eight
+/// gathers of index + k would give. Each lane's words are one 32-byte load and a transpose puts
+/// them in lanes: a gather costs about a load per lane on AMD and Intel cores alike, so this is an
+/// eighth of the loads for three shuffles per word (texture sampling's trilinear cells,
+/// texture.hpp; bench/README.md, session 32).
+inline void gather_eight(const int32_t* base, const Int& index, Int (&words)[8]) {
+#if defined(__AVX512F__)
+  static_assert(kLanes == 16);
+  alignas(64) int32_t at[kLanes];
+  index.store_aligned(at);
+  const auto row = [&](int l) { return _mm256_loadu_si256(reinterpret_cast<const __m256i*>(base + at[l])); };
+  // Two lanes' words per register, so that one transpose per 256-bit half, its 128-bit quarters
+  // then picked across the two halves, leaves the lanes in order: registers 0-3 hold lanes k and
+  // k + 4, registers 4-7 lanes k + 4 and k + 8.
+  __m512i in[8];
+  for (int k = 0; k < 4; ++k) in[k] = _mm512_inserti64x4(_mm512_castsi256_si512(row(k)), row(k + 4), 1);
+  for (int k = 4; k < 8; ++k) in[k] = _mm512_inserti64x4(_mm512_castsi256_si512(row(k + 4)), row(k + 8), 1);
+  __m512i pairs[8], fours[8];
+  for (int r = 0; r < 8; r += 2) {
+    pairs[r] = _mm512_unpacklo_epi32(in[r], in[r + 1]);
+    pairs[r + 1] = _mm512_unpackhi_epi32(in[r], in[r + 1]);
+  }
+  for (int h = 0; h < 8; h += 4) {  // quarter q of fours[h + k]: word k (q even) or k + 4 (q odd) of four registers
+    fours[h] = _mm512_unpacklo_epi64(pairs[h], pairs[h + 2]);
+    fours[h + 1] = _mm512_unpackhi_epi64(pairs[h], pairs[h + 2]);
+    fours[h + 2] = _mm512_unpacklo_epi64(pairs[h + 1], pairs[h + 3]);
+    fours[h + 3] = _mm512_unpackhi_epi64(pairs[h + 1], pairs[h + 3]);
+  }
+  for (int k = 0; k < 4; ++k) {
+    words[k] = Int(_mm512_shuffle_i64x2(fours[k], fours[k + 4], 0x88));      // quarters 0, 2 of each
+    words[k + 4] = Int(_mm512_shuffle_i64x2(fours[k], fours[k + 4], 0xdd));  // quarters 1, 3 of each
+  }
+#elif defined(__AVX2__)
+  static_assert(kLanes == 8);
+  alignas(32) int32_t at[kLanes];
+  index.store_aligned(at);
+  __m256i in[8], out[8];
+  for (int l = 0; l < 8; ++l) in[l] = _mm256_loadu_si256(reinterpret_cast<const __m256i*>(base + at[l]));
+  detail::transpose_8x8(in, out);
+  for (int k = 0; k < 8; ++k) words[k] = Int(out[k]);
+#else
+  for (int k = 0; k < 8; ++k) words[k] = gather(base, index + Int(k));
 #endif
 }
 

@@ -4,7 +4,9 @@
 // A Texture holds 2D, cube or volume texels in their native format (no float32 expansion: a
 // 1024x1024 RGBA8 texture with its mip chain is 5.6 MB), with every mip level in one allocation.
 // A cube map keeps a second copy for sampling, each face level bordered by the texels across its
-// edges (a little over twice the memory), so that seamless filtering reads plain rows.
+// edges (a little over twice the memory), so that seamless filtering reads plain rows. A small
+// volume of one level (a color-correction LUT) keeps the eight texels of each trilinear footprint
+// side by side (nine times the memory), so that a trilinear read under Clamp loads them at once.
 // Sampling comes in two flavours that must agree:
 //   - sample / sample_level / sample_grad: one stamp of simd::kLanes pixels at a time (the path
 //     shaders use);
@@ -115,6 +117,9 @@ inline constexpr int kMaxVolumeSize = 2048;
 inline constexpr int kMaxMipLevels = 14;
 static_assert((kMaxTextureSize >> (kMaxMipLevels - 1)) == 1, "a full chain of the largest texture");
 static_assert(kMaxVolumeSize <= kMaxTextureSize);
+/// Most words a volume's trilinear cells may take (16 MiB: an 80^3 volume; a LUT has at most 64
+/// points per axis); a larger volume is read without them.
+inline constexpr int64_t kMaxCellWords = int64_t{1} << 22;
 
 enum class TextureFormat : uint8_t {
   RGBA8,       ///< 4 x 8-bit UNORM, bytes R, G, B, A (DXGI R8G8B8A8_UNORM, D3DFMT_A8B8G8R8)
@@ -170,9 +175,9 @@ class Texture {
   /// to back, each texel as bytes_per_texel(format()) bytes in the format's channel order.
   /// Throws std::out_of_range for a level or face that does not exist.
   std::span<const uint8_t> level_bytes(int level, int face = 0) const;
-  /// Bytes held: all levels of all faces, the padding after them (words_), and a cube map's second
-  /// copy for sampling (below).
-  size_t storage_bytes() const { return (words_.size() + cube_words_.size()) * sizeof(uint32_t); }
+  /// Bytes held: all levels of all faces, the padding after them (words_), and a cube map's or a
+  /// volume's second copy for sampling (below).
+  size_t storage_bytes() const { return (words_.size() + cube_words_.size() + cell_words_.size()) * sizeof(uint32_t); }
 
   /// Replaces one level of one face with `bytes`, laid out as level_bytes() describes. Throws
   /// std::invalid_argument when the size does not match, std::out_of_range for a bad level/face.
@@ -201,6 +206,8 @@ class Texture {
   std::span<uint8_t> level_span(int level, int face);
   /// Remakes the sampling copy of a cube map's `level` after `face` changed (all faces: -1).
   void refresh_cube_copy(int level, int face);
+  /// Remakes a volume's trilinear cells (if it keeps them) from its texels.
+  void refresh_cells();
   /// Records whether `level` of `face` is opaque, and opaque_ with it.
   void set_level_opaque(int level, int face, bool opaque);
   /// Whether every texel of `texels` (whole texels of this format) has alpha at its maximum.
@@ -225,6 +232,14 @@ class Texture {
   int32_t cube_face_words_ = 0;
   std::array<int32_t, kMaxMipLevels> cube_level_offset_{};
   std::vector<uint32_t> cube_words_;
+  /// Volumes of one level and a one-word format, up to kMaxCellWords: for each trilinear
+  /// footprint, its eight texels side by side (x fastest, then y, then z), which a read under
+  /// Clamp loads at once (simd::gather_eight) instead of gathering them texel by texel. Along an
+  /// axis of n texels the footprint starting at texel i, for i in [-1, n - 1], reads texels
+  /// clamp(i) and clamp(i + 1): a footprint past an edge repeats the edge's texels as Clamp does,
+  /// and one further out reads the same as the one at -1 or n - 1. Cell (i, j, k) starts at word
+  /// 8 (((k + 1)(h + 1) + j + 1)(w + 1) + i + 1). Made again by every upload.
+  std::vector<uint32_t, xsimd::aligned_allocator<uint32_t, 64>> cell_words_;
   /// Per face and level (face-major): whether its alpha is at the maximum everywhere.
   std::vector<uint8_t> level_opaque_;
   bool opaque_ = false;  ///< all of level_opaque_ (read by every sample)
