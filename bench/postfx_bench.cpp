@@ -116,7 +116,8 @@ void BM_ColorCorrect(benchmark::State& state) {
   const rasterizer::Image resolved = rasterizer::resolve(s.ctx, s.frame);
   s.bloom.blur(s.ctx, resolved, 1.0f);
   const Lut lut = sample_lut(grade_transform(*grade_preset("warm"), "builtin:warm"));
-  const WeightedLut luts[] = {{&lut, 1.0f}};
+  const rasterizer::Texture volume = lut_volume(lut);  // kept from frame to frame, as the frame keeps it
+  const WeightedLut luts[] = {{&lut, 1.0f, &volume}};
   for (auto _ : state) benchmark::DoNotOptimize(color_correct(s.ctx, s.bloom, luts));
   label(state);
 }

@@ -59,10 +59,8 @@ Stamps make_stamps(const Texture& t, float texels_per_pixel) {
   return s;
 }
 
-Texture make_texture(TextureKind kind, TextureFormat format) {
-  Texture t = kind == TextureKind::Cube     ? Texture::create_cube(256, format)
-              : kind == TextureKind::Volume ? Texture::create_volume(64, 64, 64, format)
-                                            : Texture::create_2d(1024, 1024, format);
+/// Random texels in level 0 of every face.
+void fill_level0(Texture& t) {
   std::mt19937 rng(1);
   std::uniform_real_distribution<float> value(0.0f, 1.0f);
   for (int face = 0; face < t.faces(); ++face) {
@@ -70,6 +68,13 @@ Texture make_texture(TextureKind kind, TextureFormat format) {
     for (auto& c : texels) c = {value(rng), value(rng), value(rng), value(rng)};
     t.upload(0, texels, face);
   }
+}
+
+Texture make_texture(TextureKind kind, TextureFormat format) {
+  Texture t = kind == TextureKind::Cube     ? Texture::create_cube(256, format)
+              : kind == TextureKind::Volume ? Texture::create_volume(64, 64, 64, format)
+                                            : Texture::create_2d(1024, 1024, format);
+  fill_level0(t);
   t.generate_mips();
   return t;
 }
@@ -134,6 +139,25 @@ void BM_Volume_RGBA16F_Trilinear(benchmark::State& s) {
   run(s, TextureKind::Volume, TextureFormat::RGBA16F, Filter::Linear, MipFilter::Linear, kMinified);
 }
 
+/// The color-correction pass's read of its LUT: a 32^3 volume of one level, trilinear under Clamp
+/// (so from its trilinear cells, texture.hpp), the coordinates moving a quarter of a texel per
+/// pixel, as a frame's colors move.
+void BM_Volume_RGBA8_ColorLookup(benchmark::State& state) {
+  Texture t = Texture::create_volume(32, 32, 32, TextureFormat::RGBA8, 1);
+  fill_level0(t);
+  Sampler sampler;
+  sampler.mip = MipFilter::None;
+  sampler.u = sampler.v = sampler.w = Address::Clamp;
+  const Stamps stamps = make_stamps(t, 0.25f);
+  size_t i = 0;
+  for (auto _ : state) {
+    benchmark::DoNotOptimize(sample(t, sampler, stamps.coords[i]));
+    if (++i == stamps.coords.size()) i = 0;
+  }
+  state.counters["pixel"] = benchmark::Counter(static_cast<double>(state.iterations()) * kLanes,
+                                               benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
+}
+
 /// A blur's 13 taps of one stamp (the bloom's, horizontal, on a level-0 sampler that needs no
 /// LOD): independent samples, so what one costs when others overlap it. Reported per sample.
 void BM_Texture2D_RGBA8_BlurTaps(benchmark::State& state) {
@@ -169,6 +193,7 @@ BENCHMARK(BM_Texture2D_RGBA16F_Trilinear);
 BENCHMARK(BM_Cube_RGBA16F_Trilinear);
 BENCHMARK(BM_Cube_RGBA16F_Trilinear_ImplicitLod);
 BENCHMARK(BM_Volume_RGBA8_Trilinear);
+BENCHMARK(BM_Volume_RGBA8_ColorLookup);
 BENCHMARK(BM_Volume_RGBA16F_Trilinear);
 
 }  // namespace

@@ -635,6 +635,9 @@ inline void gather_eight(const int32_t* base, const Int& index, Int (&words)[8])
   static_assert(kLanes == 16);
   alignas(64) int32_t at[kLanes];
   index.store_aligned(at);
+  // Read back from memory: a store and sixteen loads, which GCC would otherwise make sixteen
+  // extracts, shuffles that compete with the transpose's.
+  __asm__("" : "+m"(at));
   const auto row = [&](int l) { return _mm256_loadu_si256(reinterpret_cast<const __m256i*>(base + at[l])); };
   // Two lanes' words per register, so that one transpose per 256-bit half, its 128-bit quarters
   // then picked across the two halves, leaves the lanes in order: registers 0-3 hold lanes k and
