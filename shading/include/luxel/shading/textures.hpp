@@ -70,21 +70,36 @@ enum class LodMode { derivatives, bias, level };
 
 /// The texture a numeric lane samples; throws std::logic_error when none (or one of the wrong
 /// kind) is bound, where a GPU would read black.
+[[noreturn, gnu::cold, gnu::noinline]] inline void throw_unbound(int slot) {
+  throw std::logic_error("sampler s" + std::to_string(slot) + ": no texture of the sampler's kind bound");
+}
+
 template <SamplerKind K>
-inline const rasterizer::Texture& bound_texture(const TextureBinding<K>& s) {
+LUXEL_INLINE const rasterizer::Texture& bound_texture(const TextureBinding<K>& s) {
   constexpr rasterizer::TextureKind kKind = K == SamplerKind::texture_2d ? rasterizer::TextureKind::Texture2D
                                             : K == SamplerKind::cube     ? rasterizer::TextureKind::Cube
                                                                          : rasterizer::TextureKind::Volume;
-  if (s.texture == nullptr || s.texture->kind() != kKind) {
-    throw std::logic_error("sampler s" + std::to_string(s.slot) + ": no texture of the sampler's kind bound");
-  }
+  if (s.texture == nullptr || s.texture->kind() != kKind) [[unlikely]] throw_unbound(s.slot);
   return *s.texture;
 }
 
-template <SamplerKind K, Lane L, int N>
-inline float4<L> fetch(const TextureBinding<K>& s, const Vec<L, N>& coords, LodMode mode) {
+/// The SIMD lane's fetch.
+template <SamplerKind K, int N>
+LUXEL_INLINE float4<simd::Float> fetch_lanes(const TextureBinding<K>& s, const Vec<simd::Float, N>& coords, LodMode mode) {
   constexpr int D = kCoordinates<K>;
-  static_assert(N == D || N == 4, "coordinates: the texture's dimension, or float4 with bias/LOD in .w");
+  const rasterizer::Texture& texture = bound_texture(s);
+  rasterizer::TexCoord p{coords[0], coords[1], simd::Float(0.0f)};
+  if constexpr (D == 3) p.z = coords[2];
+  const simd::Float4 c = mode == LodMode::level ? rasterizer::sample_level(texture, s.state, p, coords[N - 1])
+                         : mode == LodMode::bias ? rasterizer::sample(texture, s.state, p, coords[N - 1])
+                                                 : rasterizer::sample(texture, s.state, p);
+  return float4<simd::Float>(c.x, c.y, c.z, c.w);
+}
+
+/// The Counted and scalar lanes' fetch.
+template <SamplerKind K, Lane L, int N>
+inline float4<L> fetch_other(const TextureBinding<K>& s, const Vec<L, N>& coords, LodMode mode) {
+  constexpr int D = kCoordinates<K>;
   if constexpr (kIsCounted<L>) {
     const ShaderModelCaps& model = counted::active_model();
     if (!model.texture_fetch) counted::unsupported(std::string(model.name) + " cannot sample textures");
@@ -103,25 +118,27 @@ inline float4<L> fetch(const TextureBinding<K>& s, const Vec<L, N>& coords, LodM
                                                         : counted::Op::tex_lod;
     return counted_result<4, true>(counted::emit(op, 4, N, refs, extra));
   } else {
+    static_assert(std::is_same_v<L, float>);
     const rasterizer::Texture& texture = bound_texture(s);
-    if constexpr (std::is_same_v<L, float>) {
-      glm::vec3 p(0.0f);
-      for (int i = 0; i < D; ++i) p[i] = coords[i];
-      const float lod = mode == LodMode::level
-                            ? coords[N - 1]
-                            : rasterizer::lod_reference(texture, p, s.reference_ddx, s.reference_ddy) +
-                                  (mode == LodMode::bias ? coords[N - 1] : 0.0f);
-      const glm::vec4 c = rasterizer::sample_reference(texture, s.state, p, lod);
-      return float4<float>(c.x, c.y, c.z, c.w);
-    } else {
-      rasterizer::TexCoord p{coords[0], coords[1], simd::Float(0.0f)};
-      if constexpr (D == 3) p.z = coords[2];
-      const simd::Float4 c = mode == LodMode::level ? rasterizer::sample_level(texture, s.state, p, coords[N - 1])
-                             : mode == LodMode::bias ? rasterizer::sample(texture, s.state, p, coords[N - 1])
-                                                     : rasterizer::sample(texture, s.state, p);
-      return float4<simd::Float>(c.x, c.y, c.z, c.w);
-    }
+    glm::vec3 p(0.0f);
+    for (int i = 0; i < D; ++i) p[i] = coords[i];
+    const float lod = mode == LodMode::level
+                          ? coords[N - 1]
+                          : rasterizer::lod_reference(texture, p, s.reference_ddx, s.reference_ddy) +
+                                (mode == LodMode::bias ? coords[N - 1] : 0.0f);
+    const glm::vec4 c = rasterizer::sample_reference(texture, s.state, p, lod);
+    return float4<float>(c.x, c.y, c.z, c.w);
   }
+}
+
+/// A fetch of `mode`. The SIMD lane's is inlined into the shader: out of line it cost a 64-byte
+/// aligned frame of its own and a copy of the four result registers per read, several reads a
+/// pixel in the post passes (bench/README.md, session 32).
+template <SamplerKind K, Lane L, int N>
+LUXEL_INLINE float4<L> fetch(const TextureBinding<K>& s, const Vec<L, N>& coords, LodMode mode) {
+  static_assert(N == kCoordinates<K> || N == 4, "coordinates: the texture's dimension, or float4 with bias/LOD in .w");
+  if constexpr (std::is_same_v<L, simd::Float>) return fetch_lanes(s, coords, mode);
+  else return fetch_other(s, coords, mode);
 }
 
 template <Lane L>
