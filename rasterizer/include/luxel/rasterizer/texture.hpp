@@ -117,7 +117,7 @@ inline constexpr int kMaxVolumeSize = 2048;
 inline constexpr int kMaxMipLevels = 14;
 static_assert((kMaxTextureSize >> (kMaxMipLevels - 1)) == 1, "a full chain of the largest texture");
 static_assert(kMaxVolumeSize <= kMaxTextureSize);
-/// Most words a volume's trilinear cells may take (16 MiB: an 80^3 volume; a LUT has at most 64
+/// Most words a volume's trilinear cells may take (16 MiB: a 79^3 volume; a LUT has at most 64
 /// points per axis); a larger volume is read without them.
 inline constexpr int64_t kMaxCellWords = int64_t{1} << 22;
 
