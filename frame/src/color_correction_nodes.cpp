@@ -81,7 +81,7 @@ ColorCorrectionNodes::ColorCorrectionNodes(const scenes::Scene& scene, EyePath e
       luts_.push_back(scene_lut(scene, scene.color_correction_volumes[i].lut, "color correction volume " + std::to_string(i), grade));
   }
   for (const postfx::Lut& lut : luts_) volumes_.push_back(postfx::lut_volume(lut));
-  if (look_) volumes_.push_back(postfx::lut_volume(*look_));
+  if (look_) look_volume_ = postfx::lut_volume(*look_);
 }
 
 std::vector<float> ColorCorrectionNodes::scene_weights(float time) {
@@ -110,7 +110,7 @@ std::vector<postfx::WeightedLut> ColorCorrectionNodes::weighted_at(float time) {
     chosen_weights.push_back(weights[size_t(i)]);
   }
   if (look_) {
-    if (const float own = postfx::default_weight(chosen_weights); own > 0.0f) out.push_back({&*look_, own, &volumes_.back()});
+    if (const float own = postfx::default_weight(chosen_weights); own > 0.0f) out.push_back({&*look_, own, &*look_volume_});
   }
   return out;
 }

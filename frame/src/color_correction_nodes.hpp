@@ -50,8 +50,9 @@ class ColorCorrectionNodes {
   EyePath eye_;
   std::vector<postfx::Lut> luts_;   ///< per node, then per volume (composed with the look's grade)
   std::optional<postfx::Lut> look_;  ///< the look's grade alone
-  /// postfx::lut_volume of each of luts_, then of look_: made once, not per frame.
+  /// postfx::lut_volume of each of luts_ and of look_: made once, not per frame.
   std::vector<rasterizer::Texture> volumes_;
+  std::optional<rasterizer::Texture> look_volume_;
   VolumeCrossings crossings_;
 };
 

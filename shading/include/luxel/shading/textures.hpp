@@ -68,12 +68,13 @@ namespace detail {
 
 enum class LodMode { derivatives, bias, level };
 
-/// The texture a numeric lane samples; throws std::logic_error when none (or one of the wrong
-/// kind) is bound, where a GPU would read black.
+/// bound_texture's failure, out of line so that the fetches it guards inline.
 [[noreturn, gnu::cold, gnu::noinline]] inline void throw_unbound(int slot) {
   throw std::logic_error("sampler s" + std::to_string(slot) + ": no texture of the sampler's kind bound");
 }
 
+/// The texture a numeric lane samples; throws std::logic_error when none (or one of the wrong
+/// kind) is bound, where a GPU would read black.
 template <SamplerKind K>
 LUXEL_INLINE const rasterizer::Texture& bound_texture(const TextureBinding<K>& s) {
   constexpr rasterizer::TextureKind kKind = K == SamplerKind::texture_2d ? rasterizer::TextureKind::Texture2D
