@@ -149,9 +149,10 @@ LUXEL_INLINE Float lod_log2(const Float& x) {
 // --- Formats ----------------------------------------------------------------------------------
 // Each format: kWords per texel, fetch() to the raw domain, the border color in that domain, and
 // finish() from raw to the returned linear RGBA. A one-word format's fetch is decode() of the
-// gathered word.
+// gathered word. kNonNegative: every texel decodes to a finite value >= +0 in the raw domain.
 
 struct Rgba8 {
+  static constexpr bool kNonNegative = true;
   static constexpr int kWords = 1;
   LUXEL_INLINE static Float4 fetch(const int32_t* words, const Int& index) { return decode(gather(words, index)); }
   LUXEL_INLINE static Float4 decode(const Int& w) {
@@ -165,6 +166,7 @@ struct Rgba8 {
 };
 
 struct Rgba8Srgb {
+  static constexpr bool kNonNegative = true;
   static constexpr int kWords = 1;
   LUXEL_INLINE static Float4 fetch(const int32_t* words, const Int& index) { return decode(gather(words, index)); }
   LUXEL_INLINE static Float4 decode(const Int& w) {
@@ -177,6 +179,7 @@ struct Rgba8Srgb {
 };
 
 struct Rgba16f {
+  static constexpr bool kNonNegative = false;
   static constexpr int kWords = 2;
   LUXEL_INLINE static Float4 fetch(const int32_t* words, const Int& index) {
     Int rg, ba;
@@ -191,6 +194,7 @@ struct Rgba16f {
 };
 
 struct Rgba16 {
+  static constexpr bool kNonNegative = true;
   static constexpr int kWords = 2;
   LUXEL_INLINE static Float4 fetch(const int32_t* words, const Int& index) {
     Int rg, ba;
@@ -206,6 +210,7 @@ struct Rgba16 {
 };
 
 struct R32f {
+  static constexpr bool kNonNegative = false;
   static constexpr int kWords = 1;
   LUXEL_INLINE static Float4 fetch(const int32_t* words, const Int& index) { return decode(gather(words, index)); }
   LUXEL_INLINE static Float4 decode(const Int& w) {
@@ -222,6 +227,7 @@ struct R32f {
 /// The format's own fetch and finish are used; inlined, the work on the alpha they drop goes.
 template <class Format>
 struct Opaque {
+  static constexpr bool kNonNegative = Format::kNonNegative;
   static constexpr int kWords = Format::kWords;
   LUXEL_INLINE static Float3 fetch(const int32_t* words, const Int& index) {
     const Float4 t = Format::fetch(words, index);
@@ -269,6 +275,9 @@ struct Context {
   /// One-word formats: read each footprint texel's words as windows along the stamp's rows where
   /// they lie close enough (gather_stamp_rows).
   bool reads_stamp_rows = false;
+  /// Bilinear reads of a 2D level: where every lane's weight along an axis is 0, read only the
+  /// first texel along it (filter_2d).
+  bool skips_zero_weights = false;
   /// Trilinear reads of a volume under Clamp on every axis: its cells (Texture::cell_words_), or
   /// null to read its texels one by one.
   const int32_t* cells = nullptr;
@@ -447,6 +456,22 @@ LUXEL_INLINE TexelOf<Format> filter_2d(const Context<Format>& ctx, const Level& 
   const LinearAxis x = linear_axis(u, g.width, g.fwidth, s.u);
   const LinearAxis y = linear_axis(v, g.height, g.fheight, s.v);
   const Int row0 = row_start(y.i0, g.width), row1 = row_start(y.i1, g.width);
+  if constexpr (Format::kNonNegative) {
+    // A post pass's blur taps along one axis and samples the other at texel centers, where the
+    // weight is 0 wherever the coordinate's float rounding is exact: then the lerp along that axis
+    // returns its first texel to the bit (fma(0, b - a, a) = a for finite b - a and a >= +0, and
+    // the first lerps' results lie between their texels), so its second texels need not be read.
+    if (ctx.skips_zero_weights && !ctx.any_border) {
+      if (xsimd::all(y.weight == Float(0.0f))) {
+        return lerp(fetch(ctx, word_index<Format>(g.offset, row0 + x.i0)), fetch(ctx, word_index<Format>(g.offset, row0 + x.i1)),
+                    x.weight);
+      }
+      if (xsimd::all(x.weight == Float(0.0f))) {
+        return lerp(fetch(ctx, word_index<Format>(g.offset, row0 + x.i0)), fetch(ctx, word_index<Format>(g.offset, row1 + x.i0)),
+                    y.weight);
+      }
+    }
+  }
   TexelOf<Format> t00 = fetch(ctx, word_index<Format>(g.offset, row0 + x.i0));
   TexelOf<Format> t10 = fetch(ctx, word_index<Format>(g.offset, row0 + x.i1));
   TexelOf<Format> t01 = fetch(ctx, word_index<Format>(g.offset, row1 + x.i0));
@@ -706,6 +731,7 @@ Float4 sample_one_level_impl(const Texture& texture, const Sampler& s, const Tex
   // check cost the 3D passes as much as the windows saved (bench/README.md, session 31). Cube maps
   // are read from their bordered copy, which keeps no padding for a window.
   if constexpr (Kind != TextureKind::Cube) ctx.reads_stamp_rows = true;
+  if constexpr (Kind == TextureKind::Texture2D) ctx.skips_zero_weights = true;
   if constexpr (Kind == TextureKind::Volume && F == Filter::Linear) {
     if (s.u == Address::Clamp && s.v == Address::Clamp && s.w == Address::Clamp) ctx.cells = ctx.storage.cells;
   }

@@ -1170,6 +1170,56 @@ TEST(TextureSimd, OneLevelPathReadsWhatTheGeneralPathReads) {
   EXPECT_GT(compared, 10000);
 }
 
+// The one-level bilinear path reads only the first texel along an axis where every lane's weight
+// along it is 0 (texture_sample.cpp, filter_2d): a post pass's blur taps along one axis at the
+// other's texel centers. The same bits as the general path, which always reads all four, whatever
+// the format, addressing and the lanes' mix of centers and not.
+TEST(TextureSimd, OneLevelBilinearAtTexelCentersReadsWhatTheGeneralPathReads) {
+  std::mt19937 rng(29);
+  std::uniform_real_distribution<float> wide(-0.7f, 1.7f);
+  std::uniform_int_distribution<int> any_row(-3, 40);
+  long compared = 0;
+  for (const TextureFormat format : kFormats) {
+    // Power-of-two sizes put every center exactly on a float; 13x7 only some of them.
+    for (const auto [w, h] : {std::pair{32, 8}, std::pair{16, 16}, std::pair{13, 7}}) {
+      Texture t = Texture::create_2d(w, h, format);
+      fill_random(t, rng);
+      for (const Address a : {Address::Clamp, Address::Wrap, Address::Mirror, Address::Border}) {
+        Sampler s;
+        s.mag = s.min = Filter::Linear;
+        s.mip = MipFilter::None;
+        s.u = s.v = a;
+        s.border = {0.25f, 0.5f, 0.75f, 1.0f};
+        Sampler general = s;
+        general.min = Filter::Point;  // no lane minified at LOD -1: the general path, bilinear
+        for (int stamp = 0; stamp < 64; ++stamp) {
+          // Rows at centers, columns at centers, both, or a lane or two off the centers.
+          const int mode = stamp % 4;
+          const int row = any_row(rng), column = any_row(rng);
+          LaneValues x, y;
+          for (int l = 0; l < kLanes; ++l) {
+            const bool off = mode == 3 && l == stamp % kLanes;
+            x[l] = mode == 1 || mode == 2 || (mode == 3 && !off) ? (float(column + l % 3) + 0.5f) / float(w) : wide(rng);
+            y[l] = mode == 0 || mode == 2 || (mode == 3 && !off) ? (float(row) + 0.5f) / float(h) : wide(rng);
+          }
+          const TexCoord c{lanes_of(x), lanes_of(y), simd::Float(0.0f)};
+          const auto one_level = unpack(sample_level(t, s, c, simd::Float(0.0f)));
+          const auto reference = unpack(sample_level(t, general, c, simd::Float(-1.0f)));
+          for (int l = 0; l < kLanes; ++l) {
+            for (int ch = 0; ch < 4; ++ch) {
+              ++compared;
+              ASSERT_EQ(std::bit_cast<uint32_t>(one_level[l][ch]), std::bit_cast<uint32_t>(reference[l][ch]))
+                  << name(format) << " " << w << "x" << h << ", " << describe(s) << ", mode " << mode << ", lane " << l
+                  << " channel " << ch << " at (" << x[l] << ", " << y[l] << ")";
+            }
+          }
+        }
+      }
+    }
+  }
+  EXPECT_GT(compared, 10000);
+}
+
 /// Sets the alpha of every texel of every level and face: `step` steps below the format's
 /// maximum (RGBA8 and sRGB: 255, RGBA16: 65535, RGBA16F: the half 1.0, 0x3c00).
 void set_alpha(Texture& t, int step) {
