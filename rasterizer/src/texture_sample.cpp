@@ -165,14 +165,18 @@ struct Rgba8 {
   }
 };
 
+/// kSrgbToLinear as lookup_bytes3 reads it.
+constexpr simd::ByteTable kSrgbBytes = simd::byte_table(kSrgbToLinear);
+
 struct Rgba8Srgb {
   static constexpr bool kNonNegative = true;
   static constexpr int kWords = 1;
   LUXEL_INLINE static Float4 fetch(const int32_t* words, const Int& index) { return decode(gather(words, index)); }
   LUXEL_INLINE static Float4 decode(const Int& w) {
-    const float* table = kSrgbToLinear.data();
-    return {simd::lookup_byte(table, simd::byte_of<0>(w)), simd::lookup_byte(table, simd::byte_of<1>(w)),
-            simd::lookup_byte(table, simd::byte_of<2>(w)), to_float(simd::byte_of<3>(w))};
+    Float4 t;
+    simd::lookup_bytes3(kSrgbBytes, w, t.x, t.y, t.z);
+    t.w = to_float(simd::byte_of<3>(w));
+    return t;
   }
   static Float4 raw_border(const glm::vec4& b) { return broadcast({b.x, b.y, b.z, b.w * 255.0f}); }
   LUXEL_INLINE static Float4 finish(const Float4& raw) { return {raw.x, raw.y, raw.z, divide_by<255>(raw.w)}; }

@@ -335,5 +335,35 @@ TEST(Simd, LookupByteIsTheTablesEntryInEveryLane) {
   }
 }
 
+// lookup_bytes3 returns, in every lane, the table's entries at the word's bytes 0, 1 and 2, bit
+// for bit, whatever byte 3 holds.
+TEST(Simd, LookupBytes3IsTheTablesEntriesAtEachWordsFirstThreeBytes) {
+  std::mt19937 rng(17);
+  std::array<float, 256> entries{};
+  for (float& t : entries) {
+    const uint32_t bits = static_cast<uint32_t>(rng());
+    std::memcpy(&t, &bits, 4);  // any bits, NaN payloads included
+  }
+  const simd::ByteTable table = simd::byte_table(entries);
+  for (int round = 0; round < 256 + kRounds; ++round) {
+    int32_t word[kLanes];
+    // First every byte value at every position in every lane (rotations per round), then random.
+    for (int l = 0; l < kLanes; ++l) {
+      const uint32_t b0 = (round + 37 * l) & 255, b1 = (round * 7 + 11 * l + 1) & 255, b2 = (255 - round + 5 * l) & 255;
+      word[l] = round < 256 ? int32_t(b0 | b1 << 8 | b2 << 16 | (rng() & 255u) << 24) : int32_t(rng());
+    }
+    simd::Float got[3];
+    simd::lookup_bytes3(table, load(word), got[0], got[1], got[2]);
+    for (int k = 0; k < 3; ++k) {
+      float lanes[kLanes];
+      got[k].store_unaligned(lanes);
+      for (int l = 0; l < kLanes; ++l) {
+        const size_t index = (uint32_t(word[l]) >> (8 * k)) & 255u;
+        ASSERT_EQ(std::memcmp(&lanes[l], &entries[index], 4), 0) << "lane " << l << " byte " << k << " = " << index;
+      }
+    }
+  }
+}
+
 }  // namespace
 }  // namespace luxel::rasterizer

@@ -1181,7 +1181,7 @@ TEST(TextureSimd, OneLevelBilinearAtTexelCentersReadsWhatTheGeneralPathReads) {
   long compared = 0;
   for (const TextureFormat format : kFormats) {
     // Power-of-two sizes put every center exactly on a float; 13x7 only some of them.
-    for (const auto [w, h] : {std::pair{32, 8}, std::pair{16, 16}, std::pair{13, 7}}) {
+    for (const auto& [w, h] : {std::pair{32, 8}, std::pair{16, 16}, std::pair{13, 7}}) {
       Texture t = Texture::create_2d(w, h, format);
       fill_random(t, rng);
       for (const Address a : {Address::Clamp, Address::Wrap, Address::Mirror, Address::Border}) {

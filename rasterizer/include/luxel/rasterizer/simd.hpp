@@ -11,6 +11,8 @@
 #include <xsimd/xsimd.hpp>
 
 #include <algorithm>
+#include <array>
+#include <bit>
 #include <cstddef>
 #include <cmath>
 #include <cstdint>
@@ -349,6 +351,60 @@ inline Float lookup_byte(const float* table, const Int& index) {
   return Float(_mm512_mask_blend_ps(bit7, low, high));
 #else
   return gather(table, index);
+#endif
+}
+
+/// A table of 256 floats, as lookup_bytes3 reads it: the entries, and their bytes as four planes
+/// (plane k holds byte k of every entry's bits).
+struct ByteTable {
+  std::array<float, 256> entries;
+  alignas(64) std::array<std::array<uint8_t, 256>, 4> planes;
+};
+
+constexpr ByteTable byte_table(const std::array<float, 256>& entries) {
+  ByteTable t{entries, {}};
+  for (size_t i = 0; i < 256; ++i) {
+    const uint32_t bits = std::bit_cast<uint32_t>(entries[i]);
+    for (size_t k = 0; k < 4; ++k) t.planes[k][i] = uint8_t(bits >> (8 * k));
+  }
+  return t;
+}
+
+/// table.entries[byte k of word[l]] in each lane l, for bytes k = 0, 1, 2 (the decode of an RGBA8
+/// texel's color through a curve: texture sampling's sRGB). With AVX-512 VBMI all 64 bytes of the
+/// words are looked up at once, a byte plane at a time (two 128-byte permutes merged by the byte's
+/// top bit), and the planes' bytes transposed back into floats by unpacks: 28 instructions for the
+/// three channels, against 3 x 18 and 48 table loads for three lookup_byte (bench/README.md,
+/// session 33).
+inline void lookup_bytes3(const ByteTable& table, const Int& words, Float& b0, Float& b1, Float& b2) {
+#if defined(__AVX512VBMI__)
+  static_assert(kLanes == 16);
+  const __m512i w = words;
+  const __mmask64 high = _mm512_movepi8_mask(w);
+  __m512i p[4];
+  for (int k = 0; k < 4; ++k) {
+    const uint8_t* plane = table.planes[size_t(k)].data();
+    const __m512i low_half = _mm512_permutex2var_epi8(_mm512_load_si512(plane), w, _mm512_load_si512(plane + 64));
+    const __m512i high_half = _mm512_permutex2var_epi8(_mm512_load_si512(plane + 128), w, _mm512_load_si512(plane + 192));
+    p[k] = _mm512_mask_blend_epi8(high, low_half, high_half);
+  }
+  // Within each 128-bit block (lanes 4c..4c+3), byte 4j + i of plane k is byte k of the entry of
+  // lane 4c + j's byte i. Bytes 0-1 and 2-3 of each entry paired into words, then words into
+  // dwords: u[j] holds lane 4c + j's four entries in order.
+  const __m512i t01_low = _mm512_unpacklo_epi8(p[0], p[1]), t01_high = _mm512_unpackhi_epi8(p[0], p[1]);
+  const __m512i t23_low = _mm512_unpacklo_epi8(p[2], p[3]), t23_high = _mm512_unpackhi_epi8(p[2], p[3]);
+  const __m512i u0 = _mm512_unpacklo_epi16(t01_low, t23_low), u1 = _mm512_unpackhi_epi16(t01_low, t23_low);
+  const __m512i u2 = _mm512_unpacklo_epi16(t01_high, t23_high), u3 = _mm512_unpackhi_epi16(t01_high, t23_high);
+  // A 4 x 4 transpose of dwords per block: lane j's entry i to channel i's lane j.
+  const __m512i v01 = _mm512_unpacklo_epi32(u0, u1), v23 = _mm512_unpacklo_epi32(u2, u3);
+  const __m512i v01_high = _mm512_unpackhi_epi32(u0, u1), v23_high = _mm512_unpackhi_epi32(u2, u3);
+  b0 = Float(_mm512_castsi512_ps(_mm512_unpacklo_epi64(v01, v23)));
+  b1 = Float(_mm512_castsi512_ps(_mm512_unpackhi_epi64(v01, v23)));
+  b2 = Float(_mm512_castsi512_ps(_mm512_unpacklo_epi64(v01_high, v23_high)));
+#else
+  b0 = lookup_byte(table.entries.data(), byte_of<0>(words));
+  b1 = lookup_byte(table.entries.data(), byte_of<1>(words));
+  b2 = lookup_byte(table.entries.data(), byte_of<2>(words));
 #endif
 }
 
