@@ -880,8 +880,11 @@ void Renderer::render(Context& ctx) {
   }
   if (!luts.empty()) {
     clock.run("color correction", 1, [&] {
-      st.image = blooms ? postfx::color_correct(ctx, *st.bloom, luts, tally)
-                        : postfx::color_correct(ctx, st.full_frame.texture(), luts, tally);
+      if (blooms) {
+        postfx::color_correct_into(ctx, *st.bloom, luts, st.image, tally);
+      } else {
+        postfx::color_correct_into(ctx, st.full_frame.texture(), luts, st.image, tally);
+      }
     });
   }
   if (st.film_grain) {

@@ -79,14 +79,13 @@ std::vector<rasterizer::Texture> set_lookups(std::span<const WeightedLut> luts, 
 }
 
 /// One full-frame draw of pixel functor `Shader<C>` for the combo C of `Combo` that blends `luts`
-/// lookups, into a new target, counted into `tally`; returns its pixels.
+/// lookups, into a new target, counted into `tally`; its pixels resolved into `out`.
 template <class Combo, template <Combo> class Shader, class Params>
-rasterizer::Image draw_pass(rasterizer::Context& ctx, int width, int height, size_t luts, const auto& rectangle,
-                            const Params& params, const ShaderTally& tally, auto for_each_combo, auto measure) {
+void draw_pass(rasterizer::Context& ctx, int width, int height, size_t luts, const auto& rectangle, const Params& params,
+               const ShaderTally& tally, rasterizer::Image& out, auto for_each_combo, auto measure) {
   // Cleared (the draw covers it anyway) and discarded once resolved: the target lives in tile
   // memory only (rasterizer/framebuffer.hpp).
   rasterizer::ColorTarget target(width, height);
-  rasterizer::Image out;
   for_each_combo([&]<Combo C>() {
     if (C.luts != int(luts)) return;
     counted_draw<Shader<C>>(tally, C.name(), measure.template operator()<C>(), [&](std::atomic<uint64_t>* pixels) {
@@ -96,7 +95,6 @@ rasterizer::Image draw_pass(rasterizer::Context& ctx, int width, int height, siz
       rasterizer::resolve_into(ctx, target, out);  // flushes: the draw reads `params` and `pixels`
     });
   });
-  return out;
 }
 
 }  // namespace
@@ -111,19 +109,33 @@ rasterizer::Image color_correct(rasterizer::Context& ctx, const rasterizer::Imag
 
 rasterizer::Image color_correct(rasterizer::Context& ctx, const rasterizer::Texture& frame,
                                 std::span<const WeightedLut> luts, const ShaderTally& tally) {
+  rasterizer::Image out;
+  color_correct_into(ctx, frame, luts, out, tally);
+  return out;
+}
+
+rasterizer::Image color_correct(rasterizer::Context& ctx, const Bloom& bloom, std::span<const WeightedLut> luts,
+                                const ShaderTally& tally) {
+  rasterizer::Image out;
+  color_correct_into(ctx, bloom, luts, out, tally);
+  return out;
+}
+
+void color_correct_into(rasterizer::Context& ctx, const rasterizer::Texture& frame, std::span<const WeightedLut> luts,
+                        rasterizer::Image& out, const ShaderTally& tally) {
   src::ColorCorrectionParams params;
   const std::vector<rasterizer::Texture> volumes = set_lookups(luts, params);
   check_frame_copy(frame, "color correction");
   params.frame.texture = &frame;
   const int w = frame.width(), h = frame.height();
-  return draw_pass<src::ColorCorrectionCombo, src::ColorCorrectionPixelShader>(
-      ctx, w, h, luts.size(), screen_rectangle(w, h, whole_texture(w, h)), params, tally,
+  draw_pass<src::ColorCorrectionCombo, src::ColorCorrectionPixelShader>(
+      ctx, w, h, luts.size(), screen_rectangle(w, h, whole_texture(w, h)), params, tally, out,
       [](auto f) { src::for_each_color_correction_combo(f); },
       []<src::ColorCorrectionCombo C>() { return &src::measure_color_correction<C>; });
 }
 
-rasterizer::Image color_correct(rasterizer::Context& ctx, const Bloom& bloom, std::span<const WeightedLut> luts,
-                                const ShaderTally& tally) {
+void color_correct_into(rasterizer::Context& ctx, const Bloom& bloom, std::span<const WeightedLut> luts,
+                        rasterizer::Image& out, const ShaderTally& tally) {
   const rasterizer::Texture& frame = bloom.frame_texture();
   src::EnginePostParams params;
   params.frame.texture = &frame;
@@ -131,8 +143,8 @@ rasterizer::Image color_correct(rasterizer::Context& ctx, const Bloom& bloom, st
   const std::vector<rasterizer::Texture> volumes = set_lookups(luts, params);
   const int w = frame.width(), h = frame.height();
   const ScreenRectanglePair rectangle{screen_rectangle(w, h, whole_texture(w, h)), screen_rectangle(w, h, bloom.bloom_rectangle())};
-  return draw_pass<src::EnginePostCombo, src::EnginePostPixelShader>(
-      ctx, w, h, luts.size(), rectangle, params, tally, [](auto f) { src::for_each_engine_post_combo(f); },
+  draw_pass<src::EnginePostCombo, src::EnginePostPixelShader>(
+      ctx, w, h, luts.size(), rectangle, params, tally, out, [](auto f) { src::for_each_engine_post_combo(f); },
       []<src::EnginePostCombo C>() { return &src::measure_engine_post<C>; });
 }
 

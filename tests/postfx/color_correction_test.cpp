@@ -8,6 +8,7 @@
 #include "scenes/temp_dir.hpp"
 
 #include "luxel/postfx/color_correction.hpp"
+#include "luxel/postfx/full_frame.hpp"
 #include "luxel/postfx/grade.hpp"
 #include "luxel/postfx/lut_file.hpp"
 #include "luxel/postfx/lut_source.hpp"
@@ -186,6 +187,27 @@ TEST(ColorCorrection, SameBytesForAnyThreadCount) {
   const rasterizer::Image a = color_correct(one, frame, luts);
   EXPECT_EQ(a.rgba, color_correct(two, frame, luts).rgba);
   EXPECT_EQ(a.rgba, color_correct(three, frame, luts).rgba);
+}
+
+// color_correct_into replaces every pixel of the image it is given: one of the frame's size
+// holding other pixels (the previous frame's), or one of another size, ends as a new image would.
+TEST(ColorCorrection, IntoAnImageReplacesItsPixels) {
+  const Lut warm = resolve_lut("builtin:warm");
+  const WeightedLut luts[] = {{&warm, 0.7f}};
+  const rasterizer::Image frame = random_frame(301, 170, 7);
+  FullFrameTexture copy;
+  copy.update(frame);
+  rasterizer::Context ctx(2);
+  const rasterizer::Image want = color_correct(ctx, copy.texture(), luts);
+  rasterizer::Image stale = random_frame(301, 170, 8), other_size = random_frame(16, 9, 9);
+  const uint8_t* kept = stale.rgba.data();
+  color_correct_into(ctx, copy.texture(), luts, stale);
+  color_correct_into(ctx, copy.texture(), luts, other_size);
+  EXPECT_EQ(stale.rgba, want.rgba);
+  EXPECT_EQ(stale.rgba.data(), kept);  // the same memory
+  EXPECT_EQ(other_size.width, 301);
+  EXPECT_EQ(other_size.height, 170);
+  EXPECT_EQ(other_size.rgba, want.rgba);
 }
 
 /// The 8-bit LUT's trilinear lookup in double, at an 8-bit color (§9.2's coordinates: c * 31).

@@ -70,6 +70,14 @@ rasterizer::Image color_correct(rasterizer::Context& ctx, const rasterizer::Text
 rasterizer::Image color_correct(rasterizer::Context& ctx, const Bloom& bloom, std::span<const WeightedLut> luts,
                                 const ShaderTally& tally = {});
 
+/// The two passes above (the frame's copy, or it with its bloom) into `out`, whose pixels they
+/// replace: an image of the frame's size keeps its memory (a sequence's frames), where a new one
+/// is allocated and zeroed first.
+void color_correct_into(rasterizer::Context& ctx, const rasterizer::Texture& frame, std::span<const WeightedLut> luts,
+                        rasterizer::Image& out, const ShaderTally& tally = {});
+void color_correct_into(rasterizer::Context& ctx, const Bloom& bloom, std::span<const WeightedLut> luts,
+                        rasterizer::Image& out, const ShaderTally& tally = {});
+
 /// The same blend in float: width * height * 4 floats, RGBA, rows top first, alpha the frame's
 /// (over 255). Same argument checks as color_correct.
 std::vector<float> color_correct_exact(const rasterizer::Image& frame, std::span<const WeightedTransform> transforms);
