@@ -724,10 +724,11 @@ Float4 sample_one_level_impl(const Texture& texture, const Sampler& s, const Tex
   Context<Format> ctx = context_of<Format, Kind>(texture, s);
   if constexpr (Kind == TextureKind::Texture2D && F == Filter::Point) {
     // These are the post-processing passes' reads of a screen-aligned copy, a texel per pixel:
-    // within a tile, the row of stamps after the next reads two stamp heights lower. A tile reads
+    // within a tile, the row of stamps eight rows on reads eight stamp heights lower. A tile reads
     // only a few lines of each texel row, each row in another page: too short a run for the
     // hardware prefetchers to follow, so without the hint every line is a miss the shader waits for.
-    ctx.prefetch_words_below = 2 * simd::kStampHeight * Format::kWords * texture.width();
+    // Asked for two stamp rows ahead the lines still came late (bench/README.md, session 33).
+    ctx.prefetch_words_below = 8 * simd::kStampHeight * Format::kWords * texture.width();
   }
   // The same reads, and the color-correction volumes' (neighbouring pixels, neighbouring colors),
   // find a stamp row's texels within a few words of each other. The mip-mapped path does not try
