@@ -373,9 +373,8 @@ constexpr ByteTable byte_table(const std::array<float, 256>& entries) {
 /// table.entries[byte k of word[l]] in each lane l, for bytes k = 0, 1, 2 (the decode of an RGBA8
 /// texel's color through a curve: texture sampling's sRGB). With AVX-512 VBMI all 64 bytes of the
 /// words are looked up at once, a byte plane at a time (two 128-byte permutes merged by the byte's
-/// top bit), and the planes' bytes transposed back into floats by unpacks: 28 instructions for the
-/// three channels, against 3 x 18 and 48 table loads for three lookup_byte (bench/README.md,
-/// session 33).
+/// top bit), and the planes' bytes transposed back into floats by unpacks: fewer shuffles than
+/// three lookup_byte, and a third of their table loads (bench/README.md, session 33).
 inline void lookup_bytes3(const ByteTable& table, const Int& words, Float& b0, Float& b1, Float& b2) {
 #if defined(__AVX512VBMI__)
   static_assert(kLanes == 16);
