@@ -317,14 +317,20 @@ TEST(Simd, GatherEightIsEightGathersOfConsecutiveWords) {
   }
 }
 
-// lookup_byte returns the table's entry for every index in every lane, bit for bit.
-TEST(Simd, LookupByteIsTheTablesEntryInEveryLane) {
-  std::mt19937 rng(13);
+/// 256 floats of random bits, NaN payloads included.
+std::array<float, 256> random_float_table(std::mt19937& rng) {
   std::array<float, 256> table{};
   for (float& t : table) {
     const uint32_t bits = static_cast<uint32_t>(rng());
-    std::memcpy(&t, &bits, 4);  // any bits, NaN payloads included
+    std::memcpy(&t, &bits, 4);
   }
+  return table;
+}
+
+// lookup_byte returns the table's entry for every index in every lane, bit for bit.
+TEST(Simd, LookupByteIsTheTablesEntryInEveryLane) {
+  std::mt19937 rng(13);
+  const std::array<float, 256> table = random_float_table(rng);
   for (int round = 0; round < 256 + kRounds; ++round) {
     int32_t index[kLanes];
     // First every index in every lane (a rotation per round), then random ones.
@@ -339,11 +345,7 @@ TEST(Simd, LookupByteIsTheTablesEntryInEveryLane) {
 // for bit, whatever byte 3 holds.
 TEST(Simd, LookupBytes3IsTheTablesEntriesAtEachWordsFirstThreeBytes) {
   std::mt19937 rng(17);
-  std::array<float, 256> entries{};
-  for (float& t : entries) {
-    const uint32_t bits = static_cast<uint32_t>(rng());
-    std::memcpy(&t, &bits, 4);  // any bits, NaN payloads included
-  }
+  const std::array<float, 256> entries = random_float_table(rng);
   const simd::ByteTable table = simd::byte_table(entries);
   for (int round = 0; round < 256 + kRounds; ++round) {
     int32_t word[kLanes];
