@@ -331,7 +331,7 @@ inline void gather_pairs(const int32_t* base, const Int& index, Int& low, Int& h
 }
 
 /// table[index[l]] in each lane l, for a table of 256 floats and indices in [0, 255]: the decode of
-/// a byte through a curve (texture sampling's sRGB). At 16 lanes the table is read as eight
+/// a byte through a curve (lookup_bytes3 without AVX-512 VBMI). At 16 lanes the table is read as eight
 /// two-register halves of 32 entries, each permuted by the index's low five bits, and merged by its
 /// top three bits: eight permutes and seven blends in place of a gather, which costs about a load
 /// per lane on AMD and Intel cores alike (bench/README.md, session 31).
