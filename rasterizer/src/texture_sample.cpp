@@ -460,26 +460,21 @@ LUXEL_INLINE TexelOf<Format> filter_2d(const Context<Format>& ctx, const Level& 
   const LinearAxis x = linear_axis(u, g.width, g.fwidth, s.u);
   const LinearAxis y = linear_axis(v, g.height, g.fheight, s.v);
   const Int row0 = row_start(y.i0, g.width), row1 = row_start(y.i1, g.width);
+  const auto texel = [&](const Int& row, const Int& column) { return fetch(ctx, word_index<Format>(g.offset, row + column)); };
+  TexelOf<Format> t00 = texel(row0, x.i0);
   if constexpr (Format::kNonNegative) {
     // A post pass's blur taps along one axis and samples the other at texel centers, where the
     // weight is 0 wherever the coordinate's float rounding is exact: then the lerp along that axis
     // returns its first texel to the bit (fma(0, b - a, a) = a for finite b - a and a >= +0, and
     // the first lerps' results lie between their texels), so its second texels need not be read.
     if (ctx.skips_zero_weights && !ctx.any_border) {
-      if (xsimd::all(y.weight == Float(0.0f))) {
-        return lerp(fetch(ctx, word_index<Format>(g.offset, row0 + x.i0)), fetch(ctx, word_index<Format>(g.offset, row0 + x.i1)),
-                    x.weight);
-      }
-      if (xsimd::all(x.weight == Float(0.0f))) {
-        return lerp(fetch(ctx, word_index<Format>(g.offset, row0 + x.i0)), fetch(ctx, word_index<Format>(g.offset, row1 + x.i0)),
-                    y.weight);
-      }
+      if (xsimd::all(y.weight == Float(0.0f))) return lerp(t00, texel(row0, x.i1), x.weight);
+      if (xsimd::all(x.weight == Float(0.0f))) return lerp(t00, texel(row1, x.i0), y.weight);
     }
   }
-  TexelOf<Format> t00 = fetch(ctx, word_index<Format>(g.offset, row0 + x.i0));
-  TexelOf<Format> t10 = fetch(ctx, word_index<Format>(g.offset, row0 + x.i1));
-  TexelOf<Format> t01 = fetch(ctx, word_index<Format>(g.offset, row1 + x.i0));
-  TexelOf<Format> t11 = fetch(ctx, word_index<Format>(g.offset, row1 + x.i1));
+  TexelOf<Format> t10 = texel(row0, x.i1);
+  TexelOf<Format> t01 = texel(row1, x.i0);
+  TexelOf<Format> t11 = texel(row1, x.i1);
   if (ctx.any_border) {
     apply_border(ctx, x.outside0 | y.outside0, t00);
     apply_border(ctx, x.outside1 | y.outside0, t10);
