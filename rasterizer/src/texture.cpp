@@ -273,7 +273,7 @@ Texture Texture::create(const TextureDesc& desc) {
     t.cube_face_words_ = static_cast<int32_t>(bordered);
     t.cube_words_.assign(static_cast<size_t>(bordered * t.faces()), 0u);
   }
-  const int64_t cell_words = 8 * int64_t{t.width_ + 1} * (t.height_ + 1) * (t.depth_ + 1);
+  const int64_t cell_words = 4 * int64_t{t.width_ + 1} * (t.height_ + 1) * (t.depth_ + 2);
   if (t.kind_ == TextureKind::Volume && t.levels_ == 1 && t.words_per_texel_ == 1 && cell_words <= kMaxCellWords)
     t.cell_words_.assign(static_cast<size_t>(cell_words), 0u);
   // All zeros: opaque only as R32F, which reads alpha 1 whatever it holds.
@@ -381,10 +381,10 @@ void Texture::refresh_cells() {
     return words_[(static_cast<size_t>(std::clamp(k, 0, d - 1)) * h + std::clamp(j, 0, h - 1)) * w + std::clamp(i, 0, w - 1)];
   };
   uint32_t* cell = cell_words_.data();
-  for (int k = -1; k < d; ++k)
+  for (int k = -1; k <= d; ++k)
     for (int j = -1; j < h; ++j)
       for (int i = -1; i < w; ++i)
-        for (int corner = 0; corner < 8; ++corner) *cell++ = texel(i + (corner & 1), j + ((corner >> 1) & 1), k + (corner >> 2));
+        for (int corner = 0; corner < 4; ++corner) *cell++ = texel(i + (corner & 1), j + (corner >> 1), k);
 }
 
 // --- The cube maps' sampling copy -------------------------------------------------------------

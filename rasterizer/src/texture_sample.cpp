@@ -285,6 +285,7 @@ struct Context {
   /// Trilinear reads of a volume under Clamp on every axis: its cells (Texture::cell_words_), or
   /// null to read its texels one by one.
   const int32_t* cells = nullptr;
+  int32_t cell_slice_words = 0;  ///< words from a square of the cells to the one above it
 };
 
 /// The texel at `index` of each lane, in the format's raw domain.
@@ -486,7 +487,7 @@ LUXEL_INLINE TexelOf<Format> filter_2d(const Context<Format>& ctx, const Level& 
 
 /// A trilinear footprint under Clamp read from the volume's cells (Texture::cell_words_): the
 /// texels and weights filter_volume's own footprint reads, and its lerps in its order, so the same
-/// result to the bit, from a load per lane instead of eight gathers.
+/// result to the bit, from two loads per lane instead of eight gathers.
 template <class Format>
 LUXEL_INLINE TexelOf<Format> filter_volume_cells(const Context<Format>& ctx, const Level& g, const Float& u, const Float& v,
                                                  const Float& w) {
@@ -499,9 +500,9 @@ LUXEL_INLINE TexelOf<Format> filter_volume_cells(const Context<Format>& ctx, con
   const Int i = cell_axis(u, g.width, g.fwidth, wx), j = cell_axis(v, g.height, g.fheight, wy);
   const Int k = cell_axis(w, g.depth, g.fdepth, wz);
   const Int one(1);
-  const Int cell = (k * (g.height + one) + j) * (g.width + one) + i;
+  const Int square = (k * (g.height + one) + j) * (g.width + one) + i;
   Int words[8];
-  simd::gather_eight(ctx.cells, cell << 3, words);
+  simd::gather_two_fours(ctx.cells, square << 2, ctx.cell_slice_words, words);
   TexelOf<Format> t[8];
   for (int c = 0; c < 8; ++c) t[c] = Format::decode(words[c]);
   return lerp(lerp(lerp(t[0], t[1], wx), lerp(t[2], t[3], wx), wy), lerp(lerp(t[4], t[5], wx), lerp(t[6], t[7], wx), wy), wz);
@@ -733,7 +734,10 @@ Float4 sample_one_level_impl(const Texture& texture, const Sampler& s, const Tex
   if constexpr (Kind != TextureKind::Cube) ctx.reads_stamp_rows = true;
   if constexpr (Kind == TextureKind::Texture2D) ctx.skips_zero_weights = true;
   if constexpr (Kind == TextureKind::Volume && F == Filter::Linear) {
-    if (s.u == Address::Clamp && s.v == Address::Clamp && s.w == Address::Clamp) ctx.cells = ctx.storage.cells;
+    if (s.u == Address::Clamp && s.v == Address::Clamp && s.w == Address::Clamp) {
+      ctx.cells = ctx.storage.cells;
+      ctx.cell_slice_words = 4 * (texture.width() + 1) * (texture.height() + 1);
+    }
   }
   const Level g = level_geometry(texture, *ctx.storage.level_offsets, 0);
   return Format::finish(filter_level<Format, Kind>(ctx, g, F, prepare<Kind>(s, coord)));

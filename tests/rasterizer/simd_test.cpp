@@ -285,35 +285,44 @@ TEST(Simd, GatherStampRowsReadsWindowsExactlyWhenTheRowsAllowIt) {
   }
 }
 
-// gather_eight returns in words[k] what a gather of index + k returns, lane for lane: lanes
-// reading the same words, neighbouring ones, far apart, the first and the last run of the memory.
-TEST(Simd, GatherEightIsEightGathersOfConsecutiveWords) {
+// gather_two_fours returns in words[k] what a gather of index + k returns and in words[k + 4]
+// what one of index + second + k does, lane for lane: lanes reading the same words, neighbouring
+// ones, far apart, the first and the last runs of the memory; the second run after the first,
+// before it, overlapping it, and far from it.
+TEST(Simd, GatherTwoFoursIsEightGathersOfTwoRuns) {
   constexpr int kWords = 4096;
   std::vector<int32_t> words(kWords + 8);
   std::mt19937 rng(21);
   for (int32_t& w : words) w = static_cast<int32_t>(rng());
-  const auto check = [&](const std::array<int32_t, kLanes>& index, const char* what) {
+  const auto check = [&](const std::array<int32_t, kLanes>& index, int32_t second, const char* what) {
     int32_t raw[kLanes];
     std::copy(index.begin(), index.end(), raw);
     Int got[8];
-    simd::gather_eight(words.data(), load(raw), got);
+    simd::gather_two_fours(words.data(), load(raw), second, got);
     for (int k = 0; k < 8; ++k) {
       int32_t lanes_of_word[kLanes];
       got[k].store_unaligned(lanes_of_word);
-      for (int l = 0; l < kLanes; ++l)
-        ASSERT_EQ(lanes_of_word[l], words[size_t(index[size_t(l)] + k)]) << what << ", word " << k << ", lane " << l;
+      for (int l = 0; l < kLanes; ++l) {
+        const int32_t at = index[size_t(l)] + (k < 4 ? k : second + k - 4);
+        ASSERT_EQ(lanes_of_word[l], words[size_t(at)]) << what << ", second " << second << ", word " << k << ", lane " << l;
+      }
     }
   };
-  std::array<int32_t, kLanes> index{};
-  index.fill(kWords - 8);
-  check(index, "every lane the last run");
-  for (int l = 0; l < kLanes; ++l) index[size_t(l)] = 8 * l;
-  check(index, "runs side by side");
-  for (int l = 0; l < kLanes; ++l) index[size_t(l)] = kWords - 1 - 37 * l;
-  check(index, "runs overlapping, backwards");
-  for (int round = 0; round < kRounds; ++round) {
-    for (int32_t& i : index) i = int32_t(rng() % uint32_t(kWords));
-    check(index, "random runs");
+  for (const int32_t second : {4, 1000, -4, 2, 0}) {
+    const int32_t low = std::max(0, -second), high = kWords - 4 - std::max(0, second);
+    std::array<int32_t, kLanes> index{};
+    index.fill(high);
+    check(index, second, "every lane the last runs");
+    index.fill(low);
+    check(index, second, "every lane the first runs");
+    for (int l = 0; l < kLanes; ++l) index[size_t(l)] = low + 8 * l;
+    check(index, second, "runs side by side");
+    for (int l = 0; l < kLanes; ++l) index[size_t(l)] = high - 37 * l;
+    check(index, second, "runs overlapping, backwards");
+    for (int round = 0; round < kRounds; ++round) {
+      for (int32_t& i : index) i = low + int32_t(rng() % uint32_t(high - low + 1));
+      check(index, second, "random runs");
+    }
   }
 }
 

@@ -167,9 +167,13 @@ TEST(TextureCreate, SizesLevelsAndStorage) {
   EXPECT_EQ(volume.depth(1), 1);
   EXPECT_EQ(volume.height(2), 1);
   EXPECT_EQ(volume.storage_bytes(), 4u * (64 + 8 + 2 + 1) + kPadding);
-  // One level of a one-word format: the texels, and eight per trilinear cell, (8+1)(4+1)(2+1)
-  // cells; a two-word format keeps none, nor does a volume whose cells would pass kMaxCellWords.
-  EXPECT_EQ(Texture::create_volume(8, 4, 2, TextureFormat::RGBA8, 1).storage_bytes(), 4u * (64 + 8 * 9 * 5 * 3) + kPadding);
+  // One level of a one-word format: the texels, and four per trilinear cell's square, (8+1)(4+1)
+  // squares in each of 2+2 slices; a two-word format keeps none, nor does a volume whose cells
+  // would pass kMaxCellWords (100^3 is the largest cube that keeps them).
+  EXPECT_EQ(Texture::create_volume(8, 4, 2, TextureFormat::RGBA8, 1).storage_bytes(), 4u * (64 + 4 * 9 * 5 * 4) + kPadding);
+  EXPECT_EQ(Texture::create_volume(100, 100, 100, TextureFormat::R32F, 1).storage_bytes(),
+            4u * (100 * 100 * 100 + 4 * 101 * 101 * 102) + kPadding);
+  EXPECT_EQ(Texture::create_volume(101, 101, 101, TextureFormat::R32F, 1).storage_bytes(), 4u * 101 * 101 * 101 + kPadding);
   EXPECT_EQ(Texture::create_volume(8, 4, 2, TextureFormat::RGBA16F, 1).storage_bytes(), 8u * 64 + kPadding);
   EXPECT_EQ(Texture::create_volume(127, 127, 127, TextureFormat::R32F, 1).storage_bytes(), 4u * 127 * 127 * 127 + kPadding);
 

@@ -680,12 +680,13 @@ inline void transpose_to_rows(const Int (&fields)[8], int32_t (*rows)[8]) {
 #endif
 }
 
-/// Eight consecutive words per lane: words[k] gets base[index[l] + k] in each lane l, what eight
-/// gathers of index + k would give. Each lane's words are one 32-byte load and a transpose puts
-/// them in lanes: a gather costs about a load per lane on AMD and Intel cores alike, so this is an
-/// eighth of the loads for three shuffles per word (texture sampling's trilinear cells,
-/// texture.hpp; bench/README.md, session 32).
-inline void gather_eight(const int32_t* base, const Int& index, Int (&words)[8]) {
+/// Two runs of four consecutive words per lane: words[k] gets base[index[l] + k] and words[k + 4]
+/// base[index[l] + second + k] in each lane l (k < 4), what eight gathers would give. Each lane's
+/// words are two 16-byte loads and a transpose puts them in lanes: a gather costs about a load
+/// per lane on AMD and Intel cores alike, so this is a quarter of the loads for three shuffles per
+/// word (texture sampling's trilinear cells, two slices of four texels: texture.hpp;
+/// bench/README.md, sessions 32 and 34).
+inline void gather_two_fours(const int32_t* base, const Int& index, int32_t second, Int (&words)[8]) {
 #if defined(__AVX512F__)
   static_assert(kLanes == 16);
   alignas(64) int32_t at[kLanes];
@@ -693,7 +694,8 @@ inline void gather_eight(const int32_t* base, const Int& index, Int (&words)[8])
   // Read back from memory: a store and sixteen loads, which GCC would otherwise make sixteen
   // extracts, shuffles that compete with the transpose's.
   __asm__("" : "+m"(at));
-  const auto row = [&](int l) { return _mm256_loadu_si256(reinterpret_cast<const __m256i*>(base + at[l])); };
+  const auto four = [&](int32_t i) { return _mm_loadu_si128(reinterpret_cast<const __m128i*>(base + i)); };
+  const auto row = [&](int l) { return _mm256_inserti128_si256(_mm256_castsi128_si256(four(at[l])), four(at[l] + second), 1); };
   // Two lanes' words per register, so that one transpose per 256-bit half, its 128-bit quarters
   // then picked across the two halves, leaves the lanes in order: registers 0-3 hold lanes k and
   // k + 4, registers 4-7 lanes k + 4 and k + 8.
@@ -720,11 +722,16 @@ inline void gather_eight(const int32_t* base, const Int& index, Int (&words)[8])
   alignas(32) int32_t at[kLanes];
   index.store_aligned(at);
   __m256i in[8], out[8];
-  for (int l = 0; l < 8; ++l) in[l] = _mm256_loadu_si256(reinterpret_cast<const __m256i*>(base + at[l]));
+  const auto four = [&](int32_t i) { return _mm_loadu_si128(reinterpret_cast<const __m128i*>(base + i)); };
+  for (int l = 0; l < 8; ++l)
+    in[l] = _mm256_inserti128_si256(_mm256_castsi128_si256(four(at[l])), four(at[l] + second), 1);
   detail::transpose_8x8(in, out);
   for (int k = 0; k < 8; ++k) words[k] = Int(out[k]);
 #else
-  for (int k = 0; k < 8; ++k) words[k] = gather(base, index + Int(k));
+  for (int k = 0; k < 4; ++k) {
+    words[k] = gather(base, index + Int(k));
+    words[k + 4] = gather(base, index + Int(second + k));
+  }
 #endif
 }
 

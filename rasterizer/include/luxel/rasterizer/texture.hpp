@@ -117,7 +117,7 @@ inline constexpr int kMaxVolumeSize = 2048;
 inline constexpr int kMaxMipLevels = 14;
 static_assert((kMaxTextureSize >> (kMaxMipLevels - 1)) == 1, "a full chain of the largest texture");
 static_assert(kMaxVolumeSize <= kMaxTextureSize);
-/// Most words a volume's trilinear cells may take (16 MiB: a 79^3 volume; a LUT has at most 64
+/// Most words a volume's trilinear cells may take (16 MiB: a 100^3 volume; a LUT has at most 64
 /// points per axis); a larger volume is read without them.
 inline constexpr int64_t kMaxCellWords = int64_t{1} << 22;
 
@@ -233,12 +233,15 @@ class Texture {
   std::array<int32_t, kMaxMipLevels> cube_level_offset_{};
   std::vector<uint32_t> cube_words_;
   /// Volumes of one level and a one-word format, up to kMaxCellWords: for each trilinear
-  /// footprint, its eight texels side by side (x fastest, then y, then z), which a read under
-  /// Clamp loads at once (simd::gather_eight) instead of gathering them texel by texel. Along an
-  /// axis of n texels the footprint starting at texel i, for i in [-1, n - 1], reads texels
-  /// clamp(i) and clamp(i + 1): a footprint past an edge repeats the edge's texels as Clamp does,
-  /// and one further out reads the same as the one at -1 or n - 1. Cell (i, j, k) starts at word
-  /// 8 (((k + 1)(h + 1) + j + 1)(w + 1) + i + 1). Made again by every upload.
+  /// footprint's square in a slice, its four texels side by side (x fastest, then y), which a
+  /// read under Clamp loads at once, and the square above it in the next slice (simd::
+  /// gather_two_fours), instead of gathering them texel by texel. Along an axis of n texels the
+  /// footprint starting at texel i, for i in [-1, n - 1], reads texels clamp(i) and clamp(i + 1):
+  /// a footprint past an edge repeats the edge's texels as Clamp does, and one further out reads
+  /// the same as the one at -1 or n - 1. Square (i, j) of slice k, for k in [-1, n] (slice k
+  /// holds texels of slice clamp(k)), starts at word 4 (((k + 1)(h + 1) + j + 1)(w + 1) + i + 1).
+  /// Squares rather than whole cubes of eight: half the memory, for the same loads of a lane.
+  /// Made again by every upload.
   std::vector<uint32_t, xsimd::aligned_allocator<uint32_t, 64>> cell_words_;
   /// Per face and level (face-major): whether its alpha is at the maximum everywhere.
   std::vector<uint8_t> level_opaque_;
