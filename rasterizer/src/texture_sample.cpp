@@ -26,6 +26,9 @@
 #include <cstdlib>
 #include <cstring>
 #include <limits>
+#include <span>
+#include <stdexcept>
+#include <string>
 
 namespace luxel::rasterizer {
 
@@ -711,12 +714,10 @@ Float4 sample_level_impl(const Texture& texture, const Sampler& s, const TexCoor
   return Format::finish(raw);
 }
 
-/// A sampler with MipFilter::None and filter F on both sides of the crossover (the
-/// post-processing passes', the color-correction volumes'): level 0 with one footprint at any
-/// LOD. The same texels and weights as sample_level_impl, in one function with the filter known
-/// at compile time: none of the general path's per-call branches and calls.
+/// The context of a sampler with MipFilter::None and filter F on both sides of the crossover (the
+/// post-processing passes', the color-correction volumes'): level 0 with one footprint at any LOD.
 template <class Format, TextureKind Kind, Filter F>
-Float4 sample_one_level_impl(const Texture& texture, const Sampler& s, const TexCoord& coord) {
+LUXEL_INLINE Context<Format> one_level_context(const Texture& texture, const Sampler& s) {
   Context<Format> ctx = context_of<Format, Kind>(texture, s);
   if constexpr (Kind == TextureKind::Texture2D && F == Filter::Point) {
     // These are the post-processing passes' reads of a screen-aligned copy, a texel per pixel:
@@ -739,8 +740,25 @@ Float4 sample_one_level_impl(const Texture& texture, const Sampler& s, const Tex
       ctx.cell_slice_words = 4 * (texture.width() + 1) * (texture.height() + 1);
     }
   }
+  return ctx;
+}
+
+/// A read of such a sampler: the same texels and weights as sample_level_impl, in one function
+/// with the filter known at compile time: none of the general path's per-call branches and calls.
+template <class Format, TextureKind Kind, Filter F>
+Float4 sample_one_level_impl(const Texture& texture, const Sampler& s, const TexCoord& coord) {
+  const Context<Format> ctx = one_level_context<Format, Kind, F>(texture, s);
   const Level g = level_geometry(texture, *ctx.storage.level_offsets, 0);
   return Format::finish(filter_level<Format, Kind>(ctx, g, F, prepare<Kind>(s, coord)));
+}
+
+/// Several reads of such a sampler, each what sample_one_level_impl returns.
+template <class Format, Filter F>
+void sample_taps_impl(const Texture& texture, const Sampler& s, std::span<const TexCoord> coords, std::span<Float4> out) {
+  constexpr TextureKind kKind = TextureKind::Texture2D;
+  const Context<Format> ctx = one_level_context<Format, kKind, F>(texture, s);
+  const Level g = level_geometry(texture, *ctx.storage.level_offsets, 0);
+  for (size_t k = 0; k < coords.size(); ++k) out[k] = Format::finish(filter_level<Format, kKind>(ctx, g, F, prepare<kKind>(s, coords[k])));
 }
 
 using SampleFn = Float4 (*)(const Texture&, const Sampler&, const TexCoord&, const Float&);
@@ -774,6 +792,20 @@ constexpr std::array<std::array<std::array<std::array<OneLevelFn, 3>, 2>, 5>, 2>
     {one_level_of<Rgba8>(), one_level_of<Rgba8Srgb>(), one_level_of<Rgba16f>(), one_level_of<Rgba16>(), one_level_of<R32f>()},
     {one_level_of<Opaque<Rgba8>>(), one_level_of<Opaque<Rgba8Srgb>>(), one_level_of<Opaque<Rgba16f>>(),
      one_level_of<Opaque<Rgba16>>(), one_level_of<Opaque<R32f>>()}}};
+
+using TapsFn = void (*)(const Texture&, const Sampler&, std::span<const TexCoord>, std::span<Float4>);
+
+// [filter], in enum order.
+template <class Format>
+constexpr std::array<TapsFn, 2> taps_of() {
+  return {&sample_taps_impl<Format, Filter::Point>, &sample_taps_impl<Format, Filter::Linear>};
+}
+
+// [opaque][format][filter], in enum order.
+constexpr std::array<std::array<std::array<TapsFn, 2>, 5>, 2> kTapsFns = {{
+    {taps_of<Rgba8>(), taps_of<Rgba8Srgb>(), taps_of<Rgba16f>(), taps_of<Rgba16>(), taps_of<R32f>()},
+    {taps_of<Opaque<Rgba8>>(), taps_of<Opaque<Rgba8Srgb>>(), taps_of<Opaque<Rgba16f>>(), taps_of<Opaque<Rgba16>>(),
+     taps_of<Opaque<R32f>>()}}};
 
 /// Whether `sampler` reads `texture` as Opaque: no border color can enter a footprint.
 bool reads_opaque(const Texture& texture, const Sampler& sampler) {
@@ -858,6 +890,18 @@ Float compute_lod(const Texture& texture, const TexCoord& c, const TexCoord& dx,
 Float4 sample_grad(const Texture& texture, const Sampler& sampler, const TexCoord& coord, const TexCoord& ddx,
                    const TexCoord& ddy) {
   return sample_level(texture, sampler, coord, compute_lod(texture, coord, ddx, ddy));
+}
+
+void sample_taps(const Texture& texture, const Sampler& sampler, std::span<const TexCoord> coords, std::span<Float4> out) {
+  if (out.size() != coords.size())
+    throw std::invalid_argument("sample_taps: " + std::to_string(coords.size()) + " coordinates for " +
+                                std::to_string(out.size()) + " results");
+  if (texture.kind() == TextureKind::Texture2D && reads_one_level(sampler)) {
+    const bool opaque = reads_opaque(texture, sampler);
+    const int format = static_cast<int>(texture_detail::read_format(texture, sampler));
+    return kTapsFns[opaque][format][static_cast<int>(sampler.mag)](texture, sampler, coords, out);
+  }
+  for (size_t k = 0; k < coords.size(); ++k) out[k] = sample(texture, sampler, coords[k]);
 }
 
 Float4 sample(const Texture& texture, const Sampler& sampler, const TexCoord& coord, const Float& bias) {

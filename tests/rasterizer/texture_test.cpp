@@ -1224,6 +1224,58 @@ TEST(TextureSimd, OneLevelBilinearAtTexelCentersReadsWhatTheGeneralPathReads) {
   EXPECT_GT(compared, 10000);
 }
 
+// sample_taps reads several coordinates of one sampler in one call (a blur's taps): each result
+// the very bits sample() returns for its coordinate, for every kind, format and sampler (the
+// one-level 2D reads have their own path), random coordinates and blur-like ones (texel-center
+// rows, taps offset along u, where the zero-weight skip reads one row); none is fine too, and a
+// count of results that does not match the coordinates' throws.
+TEST(TextureSimd, TapsReadWhatSampleReadsAtEachTap) {
+  std::mt19937 rng(31);
+  long compared = 0;
+  for (const TextureFormat format : kFormats) {
+    for (const TestTexture& tt : random_textures(format, rng)) {
+      const Texture& t = tt.texture;
+      for (const Sampler& s : sampler_configs(t.kind(), rng)) {
+        for (int round = 0; round < 4; ++round) {
+          const size_t taps = round == 0 ? 0 : round == 1 ? 1 : 13;
+          std::vector<TexCoord> coords;
+          for (size_t k = 0; k < taps; ++k) {
+            LaneValues x, y, z;
+            for (int l = 0; l < kLanes; ++l) {
+              const glm::vec3 c = random_coord(t, rng);
+              x[l] = c.x, y[l] = c.y, z[l] = c.z;
+              if (round == 3 && t.kind() == TextureKind::Texture2D) {  // a horizontal blur's taps
+                x[l] = (float(l % 8) + 0.5f + 1.3366f * float(int(k) - 6)) / float(t.width());
+                y[l] = (float(l / 8) + 0.5f) / float(t.height());
+              }
+            }
+            coords.push_back({lanes_of(x), lanes_of(y), lanes_of(z)});
+          }
+          std::vector<simd::Float4> got(taps);
+          sample_taps(t, s, coords, got);
+          for (size_t k = 0; k < taps; ++k) {
+            const auto want = unpack(sample(t, s, coords[k]));
+            const auto tap = unpack(got[k]);
+            for (int l = 0; l < kLanes; ++l) {
+              for (int ch = 0; ch < 4; ++ch) {
+                ++compared;
+                ASSERT_EQ(std::bit_cast<uint32_t>(tap[l][ch]), std::bit_cast<uint32_t>(want[l][ch]))
+                    << tt.label << ", " << describe(s) << ", round " << round << ", tap " << k << ", lane " << l
+                    << " channel " << ch;
+              }
+            }
+          }
+        }
+      }
+    }
+  }
+  EXPECT_GT(compared, 100000);
+  const Texture t = Texture::create_2d(4, 4, TextureFormat::RGBA8);
+  const std::vector<TexCoord> one{{simd::Float(0.5f), simd::Float(0.5f), simd::Float(0.0f)}};
+  std::vector<simd::Float4> two(2);
+  EXPECT_THROW(sample_taps(t, Sampler{}, one, two), std::invalid_argument);
+}
+
 /// Sets the alpha of every texel of every level and face: `step` steps below the format's
 /// maximum (RGBA8 and sRGB: 255, RGBA16: 65535, RGBA16F: the half 1.0, 0x3c00).
 void set_alpha(Texture& t, int step) {

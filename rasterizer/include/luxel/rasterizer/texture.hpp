@@ -282,6 +282,12 @@ struct TexCoord {
 /// x, y, z, w.
 simd::Float4 sample(const Texture& texture, const Sampler& sampler, const TexCoord& coord,
                     const simd::Float& bias = simd::Float(0.0f));
+/// What `coords.size()` sample() calls of one sampler return, into `out` (as many): several taps of
+/// one texture per pixel, as a blur's. A sampler that needs no LOD (no mips, one filter: the post
+/// passes') reads a 2D texture's taps in one call, its decisions and the level's geometry made
+/// once (the same results to the bit).
+void sample_taps(const Texture& texture, const Sampler& sampler, std::span<const TexCoord> coords,
+                 std::span<simd::Float4> out);
 /// Samples at an explicit per-lane LOD (tex2Dlod); the sampler's bias and clamps still apply.
 simd::Float4 sample_level(const Texture& texture, const Sampler& sampler, const TexCoord& coord,
                           const simd::Float& lod);

@@ -93,17 +93,19 @@ inline float4<L> blur_combine(const BlurTaps<L>& t, const BlurParams& p) {
   return blur_sum<L>([&](int k, int side) -> float3<L> { return k < 0 ? t.centre : side > 0 ? t.plus[k] : t.minus[k]; }, p);
 }
 
+/// The coordinate of tap (k, side), as blur_sum names taps: the pixel's own, or offset by pair k.
+template <Lane L>
+inline float2<L> blur_tap(const float2<L>& uv, int k, int side, const BlurParams& p) {
+  if (k < 0) return uv;
+  const float4<L> o = constant<L>(p.offsets[k / 2]);
+  const float2<L> offset = k % 2 == 0 ? float2<L>(o.xy()) : float2<L>(o.zw());
+  return side > 0 ? uv + offset : uv - offset;
+}
+
 /// The pixel shader.
 template <Lane L>
 inline float4<L> blur(const float2<L>& uv, const BlurParams& p) {
-  return blur_sum<L>(
-      [&](int k, int side) -> float3<L> {
-        if (k < 0) return tex2D(p.source, uv).rgb();
-        const float4<L> o = constant<L>(p.offsets[k / 2]);
-        const float2<L> offset = k % 2 == 0 ? float2<L>(o.xy()) : float2<L>(o.zw());
-        return tex2D(p.source, side > 0 ? uv + offset : uv - offset).rgb();
-      },
-      p);
+  return blur_sum<L>([&](int k, int side) -> float3<L> { return tex2D(p.source, blur_tap(uv, k, side, p)).rgb(); }, p);
 }
 
 inline Cost measure_blur(ShaderModel model) {
@@ -119,9 +121,28 @@ struct BlurPixelShader {
   const BlurParams* params = nullptr;
   std::atomic<uint64_t>* pixels = nullptr;  ///< counts the pixels shaded when set (shader_use.hpp)
 
+  /// blur(): its thirteen reads in one call (rasterizer::sample_taps), the same values.
   void operator()(const rasterizer::PixelInput<1>& in, rasterizer::PixelOutput& out) const {
+    using F = simd::Float;
     count_pixels(pixels, in.live);
-    const float4<simd::Float> c = blur(float2<simd::Float>(in.varyings[0].x, in.varyings[0].y), *params);
+    const float2<F> uv(in.varyings[0].x, in.varyings[0].y);
+    // Tap (k, side) at index 0 for the centre, 1 + 2k + (side < 0) for pair k.
+    const auto index = [](int k, int side) { return k < 0 ? 0 : 1 + 2 * k + (side < 0 ? 1 : 0); };
+    std::array<rasterizer::TexCoord, 13> coords;
+    for (int k = -1; k < 6; ++k)
+      for (const int side : {+1, -1}) {
+        if (k < 0 && side < 0) continue;
+        const float2<F> c = blur_tap(uv, k, side, *params);
+        coords[size_t(index(k, side))] = {c.x, c.y, F(0.0f)};
+      }
+    std::array<simd::Float4, 13> texels;
+    rasterizer::sample_taps(shading::detail::bound_texture(params->source), params->source.state, coords, texels);
+    const float4<F> c = blur_sum<F>(
+        [&](int k, int side) {
+          const simd::Float4& t = texels[size_t(index(k, side))];
+          return float3<F>(t.x, t.y, t.z);
+        },
+        *params);
     out.color = {c.x, c.y, c.z, c.w};
   }
 };
