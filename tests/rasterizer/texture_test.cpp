@@ -1226,8 +1226,9 @@ TEST(TextureSimd, OneLevelBilinearAtTexelCentersReadsWhatTheGeneralPathReads) {
 
 // sample_taps reads several coordinates of one sampler in one call (a blur's taps): each result
 // the very bits sample() returns for its coordinate, for every kind, format and sampler (the
-// one-level 2D reads have their own path), random coordinates and blur-like ones (texel-center
-// rows, taps offset along u, where the zero-weight skip reads one row); none is fine too, and a
+// one-level 2D reads have their own path), random coordinates and blur-like ones (taps along u
+// on texel-center rows, where the zero-weight skip reads one row; taps along v, which share their
+// columns); none is fine too, and a
 // count of results that does not match the coordinates' throws.
 TEST(TextureSimd, TapsReadWhatSampleReadsAtEachTap) {
   std::mt19937 rng(31);
@@ -1236,7 +1237,7 @@ TEST(TextureSimd, TapsReadWhatSampleReadsAtEachTap) {
     for (const TestTexture& tt : random_textures(format, rng)) {
       const Texture& t = tt.texture;
       for (const Sampler& s : sampler_configs(t.kind(), rng)) {
-        for (int round = 0; round < 4; ++round) {
+        for (int round = 0; round < 5; ++round) {
           const size_t taps = round == 0 ? 0 : round == 1 ? 1 : 13;
           std::vector<TexCoord> coords;
           for (size_t k = 0; k < taps; ++k) {
@@ -1244,9 +1245,14 @@ TEST(TextureSimd, TapsReadWhatSampleReadsAtEachTap) {
             for (int l = 0; l < kLanes; ++l) {
               const glm::vec3 c = random_coord(t, rng);
               x[l] = c.x, y[l] = c.y, z[l] = c.z;
+              const float along = 1.3366f * float(int(k) - 6);
               if (round == 3 && t.kind() == TextureKind::Texture2D) {  // a horizontal blur's taps
-                x[l] = (float(l % 8) + 0.5f + 1.3366f * float(int(k) - 6)) / float(t.width());
+                x[l] = (float(l % 8) + 0.5f + along) / float(t.width());
                 y[l] = (float(l / 8) + 0.5f) / float(t.height());
+              }
+              if (round == 4 && t.kind() == TextureKind::Texture2D) {  // a vertical one's, off the centers
+                x[l] = (float(l % 8) + 0.25f) / float(t.width());
+                y[l] = (float(l / 8) + 0.5f + 0.5625f * along) / float(t.height());
               }
             }
             coords.push_back({lanes_of(x), lanes_of(y), lanes_of(z)});

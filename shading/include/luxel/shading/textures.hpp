@@ -177,6 +177,24 @@ template <Lane L>
 inline float4<L> tex2D(const Sampler2D& s, const float2<L>& uv) {
   return detail::fetch(s, uv, detail::LodMode::derivatives);
 }
+/// N texld of one sampler: tex2D at each of `uvs`, in order. It is N fetches in the shader and
+/// on the Counted lane (the same slots and order as N tex2D calls); the SIMD lane reads them in
+/// one call (rasterizer::sample_taps: a blur's taps, the bumped lightmaps), the same values.
+template <Lane L, size_t N>
+inline std::array<float4<L>, N> tex2D_taps(const Sampler2D& s, const std::array<float2<L>, N>& uvs) {
+  std::array<float4<L>, N> texels;
+  if constexpr (std::is_same_v<L, simd::Float>) {
+    const rasterizer::Texture& texture = detail::bound_texture(s);
+    std::array<rasterizer::TexCoord, N> coords;
+    for (size_t i = 0; i < N; ++i) coords[i] = {uvs[i].x, uvs[i].y, simd::Float(0.0f)};
+    std::array<simd::Float4, N> read;
+    rasterizer::sample_taps(texture, s.state, coords, read);
+    for (size_t i = 0; i < N; ++i) texels[i] = float4<L>(read[i].x, read[i].y, read[i].z, read[i].w);
+  } else {
+    for (size_t i = 0; i < N; ++i) texels[i] = tex2D(s, uvs[i]);
+  }
+  return texels;
+}
 /// texldb: LOD from derivatives plus uvwb.w.
 template <Lane L>
 inline float4<L> tex2Dbias(const Sampler2D& s, const float4<L>& uvwb) {

@@ -121,28 +121,20 @@ struct BlurPixelShader {
   const BlurParams* params = nullptr;
   std::atomic<uint64_t>* pixels = nullptr;  ///< counts the pixels shaded when set (shader_use.hpp)
 
-  /// blur(): its thirteen reads in one call (rasterizer::sample_taps), the same values.
+  /// blur(): its thirteen reads in one call (tex2D_taps), the same values. (blur() itself fetches
+  /// tap by tap, which is what the Counted lane measures: few texels alive at once.)
   void operator()(const rasterizer::PixelInput<1>& in, rasterizer::PixelOutput& out) const {
     using F = simd::Float;
     count_pixels(pixels, in.live);
     const float2<F> uv(in.varyings[0].x, in.varyings[0].y);
     // Tap (k, side) at index 0 for the centre, 1 + 2k + (side < 0) for pair k.
     const auto index = [](int k, int side) { return k < 0 ? 0 : 1 + 2 * k + (side < 0 ? 1 : 0); };
-    std::array<rasterizer::TexCoord, 13> coords;
+    std::array<float2<F>, 13> coords;
     for (int k = -1; k < 6; ++k)
-      for (const int side : {+1, -1}) {
-        if (k < 0 && side < 0) continue;
-        const float2<F> c = blur_tap(uv, k, side, *params);
-        coords[size_t(index(k, side))] = {c.x, c.y, F(0.0f)};
-      }
-    std::array<simd::Float4, 13> texels;
-    rasterizer::sample_taps(shading::detail::bound_texture(params->source), params->source.state, coords, texels);
-    const float4<F> c = blur_sum<F>(
-        [&](int k, int side) {
-          const simd::Float4& t = texels[size_t(index(k, side))];
-          return float3<F>(t.x, t.y, t.z);
-        },
-        *params);
+      for (const int side : {+1, -1})
+        if (k >= 0 || side > 0) coords[size_t(index(k, side))] = blur_tap(uv, k, side, *params);
+    const std::array<float4<F>, 13> texels = tex2D_taps(params->source, coords);
+    const float4<F> c = blur_sum<F>([&](int k, int side) { return texels[size_t(index(k, side))].rgb(); }, *params);
     out.color = {c.x, c.y, c.z, c.w};
   }
 };

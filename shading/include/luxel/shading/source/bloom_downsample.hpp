@@ -65,8 +65,9 @@ inline float4<L> downsample_combine(const std::array<float3<L>, 4>& taps, const 
 /// The pixel shader: four coordinates in, the shaped average out.
 template <Lane L>
 inline float4<L> downsample(const std::array<float2<L>, 4>& coords, const DownsampleParams& p) {
+  const std::array<float4<L>, 4> texels = tex2D_taps(p.frame, coords);
   std::array<float3<L>, 4> taps;
-  for (int i = 0; i < 4; ++i) taps[i] = tex2D(p.frame, coords[i]).rgb();
+  for (size_t i = 0; i < 4; ++i) taps[i] = texels[i].rgb();
   return downsample_combine(taps, p);
 }
 
@@ -87,18 +88,12 @@ struct DownsamplePixelShader {
   const DownsampleParams* params = nullptr;
   std::atomic<uint64_t>* pixels = nullptr;  ///< counts the pixels shaded when set (shader_use.hpp)
 
-  /// downsample(): its four reads in one call (rasterizer::sample_taps), the same values.
   void operator()(const rasterizer::PixelInput<2>& in, rasterizer::PixelOutput& out) const {
-    using F = simd::Float;
     count_pixels(pixels, in.live);
-    const std::array<rasterizer::TexCoord, 4> coords = {
-        rasterizer::TexCoord{in.varyings[0].x, in.varyings[0].y, F(0.0f)}, rasterizer::TexCoord{in.varyings[0].z, in.varyings[0].w, F(0.0f)},
-        rasterizer::TexCoord{in.varyings[1].x, in.varyings[1].y, F(0.0f)}, rasterizer::TexCoord{in.varyings[1].z, in.varyings[1].w, F(0.0f)}};
-    std::array<simd::Float4, 4> texels;
-    rasterizer::sample_taps(shading::detail::bound_texture(params->frame), params->frame.state, coords, texels);
-    std::array<float3<F>, 4> taps;
-    for (size_t i = 0; i < 4; ++i) taps[i] = float3<F>(texels[i].x, texels[i].y, texels[i].z);
-    const float4<F> c = downsample_combine(taps, *params);
+    const std::array<float2<simd::Float>, 4> coords = {
+        float2<simd::Float>(in.varyings[0].x, in.varyings[0].y), float2<simd::Float>(in.varyings[0].z, in.varyings[0].w),
+        float2<simd::Float>(in.varyings[1].x, in.varyings[1].y), float2<simd::Float>(in.varyings[1].z, in.varyings[1].w)};
+    const float4<simd::Float> c = downsample(coords, *params);
     out.color = {c.x, c.y, c.z, c.w};
   }
 };

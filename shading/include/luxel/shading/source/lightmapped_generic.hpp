@@ -156,9 +156,8 @@ inline LightmappedTexels<L> lightmapped_generic_fetch(const LightmappedInputs<L>
   t.base = tex2D(p.base, in.base_uv);
   if constexpr (C.bump) {
     t.bump = tex2D(p.bump, in.base_uv);
-    t.lightmap[1] = tex2D(p.lightmap, in.lightmap_uv12.xy()).rgb();
-    t.lightmap[2] = tex2D(p.lightmap, in.lightmap_uv12.zw()).rgb();
-    t.lightmap[3] = tex2D(p.lightmap, in.lightmap_uv3).rgb();
+    const auto bumped = tex2D_taps(p.lightmap, std::array{float2<L>(in.lightmap_uv12.xy()), float2<L>(in.lightmap_uv12.zw()), in.lightmap_uv3});
+    for (int k = 0; k < 3; ++k) t.lightmap[k + 1] = bumped[size_t(k)].rgb();
   } else {
     t.lightmap[0] = tex2D(p.lightmap, in.lightmap_uv0).rgb();
   }
