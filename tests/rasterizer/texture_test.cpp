@@ -1074,6 +1074,15 @@ std::vector<Sampler> sampler_configs(TextureKind kind, std::mt19937& rng) {
   return out;
 }
 
+/// Calls fn(texture, sampler) for every format's random textures and each texture's sampler
+/// configurations, drawing both from `rng` in that order.
+template <class Fn>
+void for_each_texture_and_sampler(std::mt19937& rng, Fn&& fn) {
+  for (const TextureFormat format : kFormats)
+    for (const TestTexture& tt : random_textures(format, rng))
+      for (const Sampler& s : sampler_configs(tt.texture.kind(), rng)) fn(tt, s);
+}
+
 std::string describe(const Sampler& s) {
   std::ostringstream o;
   o << "mag " << name(s.mag) << ", min " << name(s.min) << ", mip " << name(s.mip) << ", address "
@@ -1093,40 +1102,37 @@ TEST(TextureSimd, MatchesReference) {
   constexpr int kStampsPerConfig = 48;
   long compared = 0;
   float worst = 0;
-  for (const TextureFormat format : kFormats) {
-    for (const TestTexture& tt : random_textures(format, rng)) {
-      const Texture& t = tt.texture;
-      for (const Sampler& s : sampler_configs(t.kind(), rng)) {
-        int failures = 0;
-        for (int stamp = 0; stamp < kStampsPerConfig; ++stamp) {
-          std::array<glm::vec3, kLanes> coord;
-          LaneValues x, y, z, lod;
-          for (int l = 0; l < kLanes; ++l) {
-            coord[l] = random_coord(t, rng);
-            x[l] = coord[l].x;
-            y[l] = coord[l].y;
-            z[l] = coord[l].z;
-            // Half the stamps share one LOD per quad, as implicit LODs do.
-            lod[l] = stamp % 2 && l % 4 ? lod[l - l % 4] : random_lod(t, rng);
-          }
-          const auto got = unpack(sample_level(t, s, {lanes_of(x), lanes_of(y), lanes_of(z)}, lanes_of(lod)));
-          for (int l = 0; l < kLanes; ++l) {
-            const glm::vec4 want = sample_reference(t, s, coord[l], lod[l]);
-            ++compared;
-            for (int ch = 0; ch < 4; ++ch) {
-              const float error = std::fabs(got[l][ch] - want[ch]);
-              worst = std::max(worst, error);
-              if (!(error <= kSimdTolerance) && failures++ < 3) {
-                ADD_FAILURE() << tt.label << ", " << describe(s) << ": coord (" << coord[l].x << ", "
-                              << coord[l].y << ", " << coord[l].z << ") lod " << lod[l] << " channel " << ch
-                              << ": SIMD " << got[l][ch] << ", reference " << want[ch];
-              }
-            }
+  for_each_texture_and_sampler(rng, [&](const TestTexture& tt, const Sampler& s) {
+    if (HasFatalFailure()) return;
+    const Texture& t = tt.texture;
+    int failures = 0;
+    for (int stamp = 0; stamp < kStampsPerConfig; ++stamp) {
+      std::array<glm::vec3, kLanes> coord;
+      LaneValues x, y, z, lod;
+      for (int l = 0; l < kLanes; ++l) {
+        coord[l] = random_coord(t, rng);
+        x[l] = coord[l].x;
+        y[l] = coord[l].y;
+        z[l] = coord[l].z;
+        // Half the stamps share one LOD per quad, as implicit LODs do.
+        lod[l] = stamp % 2 && l % 4 ? lod[l - l % 4] : random_lod(t, rng);
+      }
+      const auto got = unpack(sample_level(t, s, {lanes_of(x), lanes_of(y), lanes_of(z)}, lanes_of(lod)));
+      for (int l = 0; l < kLanes; ++l) {
+        const glm::vec4 want = sample_reference(t, s, coord[l], lod[l]);
+        ++compared;
+        for (int ch = 0; ch < 4; ++ch) {
+          const float error = std::fabs(got[l][ch] - want[ch]);
+          worst = std::max(worst, error);
+          if (!(error <= kSimdTolerance) && failures++ < 3) {
+            ADD_FAILURE() << tt.label << ", " << describe(s) << ": coord (" << coord[l].x << ", "
+                          << coord[l].y << ", " << coord[l].z << ") lod " << lod[l] << " channel " << ch
+                          << ": SIMD " << got[l][ch] << ", reference " << want[ch];
           }
         }
       }
     }
-  }
+  });
   RecordProperty("samples", std::to_string(compared));
   RecordProperty("worst_error", std::to_string(worst));
   std::printf("[          ] %ld samples, worst |SIMD - reference| = %g\n", compared, worst);
@@ -1139,38 +1145,35 @@ TEST(TextureSimd, MatchesReference) {
 TEST(TextureSimd, OneLevelPathReadsWhatTheGeneralPathReads) {
   std::mt19937 rng(13);
   long compared = 0;
-  for (const TextureFormat format : kFormats) {
-    for (const TestTexture& tt : random_textures(format, rng)) {
-      const Texture& t = tt.texture;
-      for (Sampler s : sampler_configs(t.kind(), rng)) {
-        if (s.mip != MipFilter::None || s.min != s.mag) continue;
-        const Filter f = s.mag, other = f == Filter::Point ? Filter::Linear : Filter::Point;
-        Sampler magnified = s, minified = s;
-        magnified.min = other;
-        minified.mag = other;
-        for (int stamp = 0; stamp < 8; ++stamp) {
-          LaneValues x, y, z;
-          for (int l = 0; l < kLanes; ++l) {
-            const glm::vec3 c = random_coord(t, rng);
-            x[l] = c.x, y[l] = c.y, z[l] = c.z;
-          }
-          const TexCoord c{lanes_of(x), lanes_of(y), lanes_of(z)};
-          const auto one_level = unpack(sample_level(t, s, c, simd::Float(0.0f)));
-          const auto general_mag = unpack(sample_level(t, magnified, c, simd::Float(-1.0f)));
-          const auto general_min = unpack(sample_level(t, minified, c, simd::Float(1.0f)));
-          for (int l = 0; l < kLanes; ++l) {
-            for (int ch = 0; ch < 4; ++ch) {
-              ++compared;
-              ASSERT_EQ(std::bit_cast<uint32_t>(one_level[l][ch]), std::bit_cast<uint32_t>(general_mag[l][ch]))
-                  << tt.label << ", " << describe(s) << ", lane " << l << " channel " << ch;
-              ASSERT_EQ(std::bit_cast<uint32_t>(one_level[l][ch]), std::bit_cast<uint32_t>(general_min[l][ch]))
-                  << tt.label << ", " << describe(s) << ", lane " << l << " channel " << ch;
-            }
-          }
+  for_each_texture_and_sampler(rng, [&](const TestTexture& tt, const Sampler& s) {
+    if (HasFatalFailure()) return;
+    const Texture& t = tt.texture;
+    if (s.mip != MipFilter::None || s.min != s.mag) return;
+    const Filter f = s.mag, other = f == Filter::Point ? Filter::Linear : Filter::Point;
+    Sampler magnified = s, minified = s;
+    magnified.min = other;
+    minified.mag = other;
+    for (int stamp = 0; stamp < 8; ++stamp) {
+      LaneValues x, y, z;
+      for (int l = 0; l < kLanes; ++l) {
+        const glm::vec3 c = random_coord(t, rng);
+        x[l] = c.x, y[l] = c.y, z[l] = c.z;
+      }
+      const TexCoord c{lanes_of(x), lanes_of(y), lanes_of(z)};
+      const auto one_level = unpack(sample_level(t, s, c, simd::Float(0.0f)));
+      const auto general_mag = unpack(sample_level(t, magnified, c, simd::Float(-1.0f)));
+      const auto general_min = unpack(sample_level(t, minified, c, simd::Float(1.0f)));
+      for (int l = 0; l < kLanes; ++l) {
+        for (int ch = 0; ch < 4; ++ch) {
+          ++compared;
+          ASSERT_EQ(std::bit_cast<uint32_t>(one_level[l][ch]), std::bit_cast<uint32_t>(general_mag[l][ch]))
+              << tt.label << ", " << describe(s) << ", lane " << l << " channel " << ch;
+          ASSERT_EQ(std::bit_cast<uint32_t>(one_level[l][ch]), std::bit_cast<uint32_t>(general_min[l][ch]))
+              << tt.label << ", " << describe(s) << ", lane " << l << " channel " << ch;
         }
       }
     }
-  }
+  });
   EXPECT_GT(compared, 10000);
 }
 
@@ -1228,53 +1231,49 @@ TEST(TextureSimd, OneLevelBilinearAtTexelCentersReadsWhatTheGeneralPathReads) {
 // the very bits sample() returns for its coordinate, for every kind, format and sampler (the
 // one-level 2D reads have their own path), random coordinates and blur-like ones (taps along u
 // on texel-center rows, where the zero-weight skip reads one row; taps along v, which share their
-// columns); none is fine too, and a
-// count of results that does not match the coordinates' throws.
+// columns). No taps is fine too; a count of results other than the coordinates' throws.
 TEST(TextureSimd, TapsReadWhatSampleReadsAtEachTap) {
   std::mt19937 rng(31);
   long compared = 0;
-  for (const TextureFormat format : kFormats) {
-    for (const TestTexture& tt : random_textures(format, rng)) {
-      const Texture& t = tt.texture;
-      for (const Sampler& s : sampler_configs(t.kind(), rng)) {
-        for (int round = 0; round < 5; ++round) {
-          const size_t taps = round == 0 ? 0 : round == 1 ? 1 : 13;
-          std::vector<TexCoord> coords;
-          for (size_t k = 0; k < taps; ++k) {
-            LaneValues x, y, z;
-            for (int l = 0; l < kLanes; ++l) {
-              const glm::vec3 c = random_coord(t, rng);
-              x[l] = c.x, y[l] = c.y, z[l] = c.z;
-              const float along = 1.3366f * float(int(k) - 6);
-              if (round == 3 && t.kind() == TextureKind::Texture2D) {  // a horizontal blur's taps
-                x[l] = (float(l % 8) + 0.5f + along) / float(t.width());
-                y[l] = (float(l / 8) + 0.5f) / float(t.height());
-              }
-              if (round == 4 && t.kind() == TextureKind::Texture2D) {  // a vertical one's, off the centers
-                x[l] = (float(l % 8) + 0.25f) / float(t.width());
-                y[l] = (float(l / 8) + 0.5f + 0.5625f * along) / float(t.height());
-              }
-            }
-            coords.push_back({lanes_of(x), lanes_of(y), lanes_of(z)});
+  for_each_texture_and_sampler(rng, [&](const TestTexture& tt, const Sampler& s) {
+    if (HasFatalFailure()) return;
+    const Texture& t = tt.texture;
+    for (int round = 0; round < 5; ++round) {
+      const size_t taps = round == 0 ? 0 : round == 1 ? 1 : 13;
+      std::vector<TexCoord> coords;
+      for (size_t k = 0; k < taps; ++k) {
+        LaneValues x, y, z;
+        for (int l = 0; l < kLanes; ++l) {
+          const glm::vec3 c = random_coord(t, rng);
+          x[l] = c.x, y[l] = c.y, z[l] = c.z;
+          const float along = 1.3366f * float(int(k) - 6);
+          if (round == 3 && t.kind() == TextureKind::Texture2D) {  // a horizontal blur's taps
+            x[l] = (float(l % 8) + 0.5f + along) / float(t.width());
+            y[l] = (float(l / 8) + 0.5f) / float(t.height());
           }
-          std::vector<simd::Float4> got(taps);
-          sample_taps(t, s, coords, got);
-          for (size_t k = 0; k < taps; ++k) {
-            const auto want = unpack(sample(t, s, coords[k]));
-            const auto tap = unpack(got[k]);
-            for (int l = 0; l < kLanes; ++l) {
-              for (int ch = 0; ch < 4; ++ch) {
-                ++compared;
-                ASSERT_EQ(std::bit_cast<uint32_t>(tap[l][ch]), std::bit_cast<uint32_t>(want[l][ch]))
-                    << tt.label << ", " << describe(s) << ", round " << round << ", tap " << k << ", lane " << l
-                    << " channel " << ch;
-              }
-            }
+          if (round == 4 && t.kind() == TextureKind::Texture2D) {  // a vertical one's, off the centers
+            x[l] = (float(l % 8) + 0.25f) / float(t.width());
+            y[l] = (float(l / 8) + 0.5f + 0.5625f * along) / float(t.height());
+          }
+        }
+        coords.push_back({lanes_of(x), lanes_of(y), lanes_of(z)});
+      }
+      std::vector<simd::Float4> got(taps);
+      sample_taps(t, s, coords, got);
+      for (size_t k = 0; k < taps; ++k) {
+        const auto want = unpack(sample(t, s, coords[k]));
+        const auto tap = unpack(got[k]);
+        for (int l = 0; l < kLanes; ++l) {
+          for (int ch = 0; ch < 4; ++ch) {
+            ++compared;
+            ASSERT_EQ(std::bit_cast<uint32_t>(tap[l][ch]), std::bit_cast<uint32_t>(want[l][ch]))
+                << tt.label << ", " << describe(s) << ", round " << round << ", tap " << k << ", lane " << l
+                << " channel " << ch;
           }
         }
       }
     }
-  }
+  });
   EXPECT_GT(compared, 100000);
   const Texture t = Texture::create_2d(4, 4, TextureFormat::RGBA8);
   const std::vector<TexCoord> one{{simd::Float(0.5f), simd::Float(0.5f), simd::Float(0.0f)}};
