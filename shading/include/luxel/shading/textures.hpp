@@ -1,6 +1,7 @@
 #pragma once
 // Texture fetches: HLSL's tex2D, tex2Dbias, tex2Dlod, tex2Dgrad, texCUBE, texCUBEbias, texCUBElod,
-// tex3D.
+// tex3D; and tex2D_taps, several tex2D of one sampler (not HLSL: what a shader's N texld of one
+// sampler cost, read in one call on the SIMD lane).
 //
 // A shader names a sampler by a handle it receives with its parameters, as HLSL names
 // `sampler2D BaseTextureSampler : register(s0)`:
