@@ -130,9 +130,11 @@ struct BlurPixelShader {
     // Tap (k, side) at index 0 for the centre, 1 + 2k + (side < 0) for pair k.
     const auto index = [](int k, int side) { return k < 0 ? 0 : 1 + 2 * k + (side < 0 ? 1 : 0); };
     std::array<float2<F>, 13> coords;
-    for (int k = -1; k < 6; ++k)
-      for (const int side : {+1, -1})
-        if (k >= 0 || side > 0) coords[size_t(index(k, side))] = blur_tap(uv, k, side, *params);
+    coords[0] = uv;
+    for (int k = 0; k < 6; ++k) {
+      coords[size_t(index(k, +1))] = blur_tap(uv, k, +1, *params);
+      coords[size_t(index(k, -1))] = blur_tap(uv, k, -1, *params);
+    }
     const std::array<float4<F>, 13> texels = tex2D_taps(params->source, coords);
     const float4<F> c = blur_sum<F>([&](int k, int side) { return texels[size_t(index(k, side))].rgb(); }, *params);
     out.color = {c.x, c.y, c.z, c.w};
