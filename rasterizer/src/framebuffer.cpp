@@ -168,27 +168,34 @@ class ResolveCommand final : public detail::Command {
     const int width = std::min(kTileSize, L.width - x0), height = std::min(kTileSize, L.height - y0);
     const uint32_t* texels = target_.tile(tile);
     const Int low_bytes(0x00ff00ff), half(samples / 2 * 0x00010001), opaque(opaque_);
-    constexpr int kStampsPerRow = kTileSize / simd::kStampWidth;
+    // A stamp's pixel: its samples' mean (one sample: the sample itself, which the sums below
+    // return to the bit, for less work).
+    const auto resolved = [&](const uint32_t* stamp_texels) {
+      if (samples == 1) return Int::load_aligned(reinterpret_cast<const int32_t*>(stamp_texels)) | opaque;
+      // Channels r, b and g, a summed in 16-bit halves of two accumulators.
+      Int rb(0), ga(0);
+      for (int s = 0; s < samples; ++s) {
+        const Int v = Int::load_aligned(reinterpret_cast<const int32_t*>(stamp_texels + s * kTilePixels));
+        rb += v & low_bytes;
+        ga += xsimd::bitwise_cast<Int>(xsimd::bitwise_cast<simd::UInt>(v) >> 8) & low_bytes;
+      }
+      rb = xsimd::bitwise_cast<Int>(xsimd::bitwise_cast<simd::UInt>(rb + half) >> shift) & low_bytes;
+      ga = xsimd::bitwise_cast<Int>(xsimd::bitwise_cast<simd::UInt>(ga + half) >> shift) & low_bytes;
+      return rb | (ga << 8) | opaque;
+    };
+    const uint32_t* stamp_texels = texels;  // stamps are stored row of stamps by row of stamps
     for (int sy = 0; sy < height; sy += simd::kStampHeight) {
-      for (int sx = 0; sx < width; sx += simd::kStampWidth) {
-        const int stamp = (sy / simd::kStampHeight) * kStampsPerRow + sx / simd::kStampWidth;
-        // Channels r, b and g, a summed in 16-bit halves of two accumulators.
-        Int rb(0), ga(0);
-        for (int s = 0; s < samples; ++s) {
-          const Int v = Int::load_aligned(reinterpret_cast<const int32_t*>(texels + s * kTilePixels + stamp * simd::kLanes));
-          rb += v & low_bytes;
-          ga += xsimd::bitwise_cast<Int>(xsimd::bitwise_cast<simd::UInt>(v) >> 8) & low_bytes;
-        }
-        rb = xsimd::bitwise_cast<Int>(xsimd::bitwise_cast<simd::UInt>(rb + half) >> shift) & low_bytes;
-        ga = xsimd::bitwise_cast<Int>(xsimd::bitwise_cast<simd::UInt>(ga + half) >> shift) & low_bytes;
-        alignas(64) uint32_t out[simd::kLanes];  // row-major: the stamp's two rows of pixels
-        simd::to_row_major(rb | (ga << 8) | opaque).store_aligned(reinterpret_cast<int32_t*>(out));
-        constexpr int kRowBytes = 4 * simd::kStampWidth;
-        if (sx + simd::kStampWidth <= width && sy + simd::kStampHeight <= height) {
-          std::memcpy(pixels_.pixel(x0 + sx, y0 + sy), out, kRowBytes);
-          std::memcpy(pixels_.pixel(x0 + sx, y0 + sy + 1), out + simd::kStampWidth, kRowBytes);
+      const bool whole_rows = sy + simd::kStampHeight <= height;
+      uint8_t* const top = pixels_.pixel(x0, y0 + sy);
+      for (int sx = 0; sx < kTileSize; sx += simd::kStampWidth, stamp_texels += simd::kLanes) {
+        if (sx >= width) continue;
+        const Int pixels = simd::to_row_major(resolved(stamp_texels));  // the stamp's two rows of pixels
+        if (whole_rows && sx + simd::kStampWidth <= width) {
+          simd::store_stamp_rows(pixels, top + 4 * sx, top + pixels_.row_bytes + 4 * sx);
           continue;
         }
+        alignas(64) uint32_t out[simd::kLanes];
+        pixels.store_aligned(reinterpret_cast<int32_t*>(out));
         for (int y = sy; y < std::min(sy + simd::kStampHeight, height); ++y)
           for (int x = sx; x < std::min(sx + simd::kStampWidth, width); ++x)
             std::memcpy(pixels_.pixel(x0 + x, y0 + y), &out[(y - sy) * simd::kStampWidth + (x - sx)], 4);

@@ -91,6 +91,24 @@ TEST(Simd, RowMajorOrderIsThePixelsRowByRow) {
   }
 }
 
+TEST(Simd, StoreStampRowsWritesTheTopHalfThenTheBottomHalfAndNothingElse) {
+  // Two rows of an image with a guard word around each stamp row, at every misalignment.
+  std::mt19937 rng(6);
+  constexpr int kRowWords = 3 * simd::kStampWidth;
+  for (int shift = 0; shift < simd::kStampWidth; ++shift) {
+    int32_t v[kLanes];
+    for (int l = 0; l < kLanes; ++l) v[l] = static_cast<int32_t>(rng());
+    std::vector<int32_t> image(2 * kRowWords, -7);
+    int32_t* top = image.data() + 1 + shift;
+    simd::store_stamp_rows(load(v), top, top + kRowWords);
+    for (int i = 0; i < 2 * kRowWords; ++i) {
+      const int row = i / kRowWords, x = i % kRowWords - 1 - shift;
+      const int32_t want = x >= 0 && x < simd::kStampWidth ? v[row * simd::kStampWidth + x] : -7;
+      ASSERT_EQ(image[size_t(i)], want) << "shift " << shift << ", row " << row << ", word " << x;
+    }
+  }
+}
+
 TEST(Simd, DoubleHalvesAreExactAndRoundBack) {
   std::mt19937 rng(4);
   constexpr int kHalf = static_cast<int>(Double::size);

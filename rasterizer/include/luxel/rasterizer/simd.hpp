@@ -115,6 +115,24 @@ inline Int to_row_major(const Int& v) {
   return xsimd::bitwise_cast<Int>(detail::row_major(xsimd::bitwise_cast<Float>(v), std::make_index_sequence<kLanes>()));
 }
 
+/// Stores a stamp's 32-bit pixels in row-major order (to_row_major) as the image rows they
+/// cover: lanes [0, kStampWidth) at `top`, the others at `bottom` (unaligned), with no trip
+/// through memory in between (a wide store read back in halves waits for it to retire).
+inline void store_stamp_rows(const Int& row_major, void* top, void* bottom) {
+#if defined(__AVX512F__)
+  _mm256_storeu_si256(static_cast<__m256i*>(top), _mm512_castsi512_si256(row_major));
+  _mm256_storeu_si256(static_cast<__m256i*>(bottom), _mm512_extracti64x4_epi64(row_major, 1));
+#elif defined(__AVX2__)
+  _mm_storeu_si128(static_cast<__m128i*>(top), _mm256_castsi256_si128(row_major));
+  _mm_storeu_si128(static_cast<__m128i*>(bottom), _mm256_extracti128_si256(row_major, 1));
+#else
+  alignas(64) int32_t v[kLanes];
+  row_major.store_aligned(v);
+  __builtin_memcpy(top, v, sizeof(int32_t) * kStampWidth);
+  __builtin_memcpy(bottom, v + kStampWidth, sizeof(int32_t) * kStampWidth);
+#endif
+}
+
 /// Coarse derivatives (one value per quad, as DX9 hardware computes them): d/dx is the top row's
 /// difference, d/dy the left column's.
 inline Float ddx(const Float& v) { return quad_corner<1>(v) - quad_corner<0>(v); }
