@@ -505,7 +505,19 @@ LUXEL_INLINE TexelOf<Format> filter_volume_cells(const Context<Format>& ctx, con
   const Int one(1);
   const Int square = (k * (g.height + one) + j) * (g.width + one) + i;
   Int words[8];
-  simd::gather_two_fours(ctx.cells, square << 2, ctx.cell_slice_words, words);
+  const int32_t first = square.get(0);
+  if (xsimd::all(square == Int(first))) {
+    // Every lane's footprint in one cell (a flat patch of the frame, where neighbouring pixels'
+    // colors differ by less than a LUT texel): its eight words read once for all lanes, the
+    // same words the gathers would bring each.
+    const int32_t* cell = ctx.cells + 4 * first;
+    for (int c = 0; c < 4; ++c) {
+      words[c] = Int(cell[c]);
+      words[c + 4] = Int(cell[ctx.cell_slice_words + c]);
+    }
+  } else {
+    simd::gather_two_fours(ctx.cells, square << 2, ctx.cell_slice_words, words);
+  }
   TexelOf<Format> t[8];
   for (int c = 0; c < 8; ++c) t[c] = Format::decode(words[c]);
   return lerp(lerp(lerp(t[0], t[1], wx), lerp(t[2], t[3], wx), wy), lerp(lerp(t[4], t[5], wx), lerp(t[6], t[7], wx), wy), wz);

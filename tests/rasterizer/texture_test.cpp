@@ -1177,6 +1177,46 @@ TEST(TextureSimd, OneLevelPathReadsWhatTheGeneralPathReads) {
   EXPECT_GT(compared, 10000);
 }
 
+// A trilinear read of a volume's cells reads a cell once when every lane's footprint lies in it
+// (texture_sample.cpp, filter_volume_cells): the same bits as the general path, which reads each
+// lane's eight texels one by one; for stamps inside one cell (edge cells, past the edges and
+// inside), and for stamps with one lane in the next cell along each axis.
+TEST(TextureSimd, OneCellStampsReadWhatTheGeneralPathReads) {
+  std::mt19937 rng(17);
+  std::uniform_real_distribution<float> within(0.0f, 1.0f);
+  long compared = 0;
+  for (const TextureFormat format : {TextureFormat::RGBA8, TextureFormat::RGBA8_sRGB, TextureFormat::R32F}) {
+    Texture t = Texture::create_volume(6, 5, 4, format, 1);
+    fill_random(t, rng);
+    const Sampler s = linear_sampler(Address::Clamp);
+    Sampler general = s;  // the general path: a second filter that no lane uses (see above)
+    general.min = Filter::Point;
+    const int size[3] = {t.width(), t.height(), t.depth()};
+    for (int stamp = 0; stamp < 200; ++stamp) {
+      // The cell: footprints starting at texel c along each axis, c in [-1, n - 1]; the first
+      // and the last read the edge texel twice (Clamp). Footprint start c covers coordinates
+      // [(c + 0.5) / n, (c + 1.5) / n).
+      int cell[3];
+      for (int a = 0; a < 3; ++a) cell[a] = std::uniform_int_distribution<int>(-1, size[a] - 1)(rng);
+      const int odd_axis = stamp % 4 - 1;  // -1: every lane in the cell; else one lane in the next along this axis
+      LaneValues c[3];
+      for (int l = 0; l < kLanes; ++l)
+        for (int a = 0; a < 3; ++a) {
+          const int start = cell[a] + (a == odd_axis && l == kLanes - 1 ? 1 : 0);
+          c[a][size_t(l)] = (float(start) + 0.5f + within(rng)) / float(size[a]);
+        }
+      const TexCoord coord{lanes_of(c[0]), lanes_of(c[1]), lanes_of(c[2])};
+      const auto cells = unpack(sample_level(t, s, coord, simd::Float(0.0f)));
+      const auto texels = unpack(sample_level(t, general, coord, simd::Float(-1.0f)));
+      for (int l = 0; l < kLanes; ++l)
+        for (int ch = 0; ch < 4; ++ch, ++compared)
+          ASSERT_EQ(std::bit_cast<uint32_t>(cells[l][ch]), std::bit_cast<uint32_t>(texels[l][ch]))
+              << name(format) << ", stamp " << stamp << ", lane " << l << " channel " << ch;
+    }
+  }
+  EXPECT_EQ(compared, 3L * 200 * kLanes * 4);
+}
+
 // The one-level bilinear path reads only the first texel along an axis where every lane's weight
 // along it is 0 (texture_sample.cpp, filter_2d): a post pass's blur taps along one axis at the
 // other's texel centers. The same bits as the general path, which always reads all four, whatever
