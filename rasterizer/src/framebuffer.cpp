@@ -183,19 +183,19 @@ class ResolveCommand final : public detail::Command {
       ga = xsimd::bitwise_cast<Int>(xsimd::bitwise_cast<simd::UInt>(ga + half) >> shift) & low_bytes;
       return rb | (ga << 8) | opaque;
     };
-    const uint32_t* stamp_texels = texels;  // stamps are stored row of stamps by row of stamps
+    constexpr int kStampsPerRow = kTileSize / simd::kStampWidth;
     for (int sy = 0; sy < height; sy += simd::kStampHeight) {
       const bool whole_rows = sy + simd::kStampHeight <= height;
       uint8_t* const top = pixels_.pixel(x0, y0 + sy);
-      for (int sx = 0; sx < kTileSize; sx += simd::kStampWidth, stamp_texels += simd::kLanes) {
-        if (sx >= width) continue;
-        const Int pixels = simd::to_row_major(resolved(stamp_texels));  // the stamp's two rows of pixels
+      const uint32_t* stamp = texels + (sy / simd::kStampHeight) * kStampsPerRow * simd::kLanes;
+      for (int sx = 0; sx < width; sx += simd::kStampWidth, stamp += simd::kLanes) {
+        const Int rows = simd::to_row_major(resolved(stamp));  // the stamp's two rows of pixels
         if (whole_rows && sx + simd::kStampWidth <= width) {
-          simd::store_stamp_rows(pixels, top + 4 * sx, top + pixels_.row_bytes + 4 * sx);
+          simd::store_stamp_rows(rows, top + 4 * sx, top + pixels_.row_bytes + 4 * sx);
           continue;
         }
         alignas(64) uint32_t out[simd::kLanes];
-        pixels.store_aligned(reinterpret_cast<int32_t*>(out));
+        rows.store_aligned(reinterpret_cast<int32_t*>(out));
         for (int y = sy; y < std::min(sy + simd::kStampHeight, height); ++y)
           for (int x = sx; x < std::min(sx + simd::kStampWidth, width); ++x)
             std::memcpy(pixels_.pixel(x0 + x, y0 + y), &out[(y - sy) * simd::kStampWidth + (x - sx)], 4);
