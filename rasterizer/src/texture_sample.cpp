@@ -277,7 +277,7 @@ struct Context {
   SampledStorage storage;
   TexelOf<Format> border;  ///< in the format's raw domain
   bool any_border;
-  /// Point reads of a 2D level: ask for the texels this many words below the stamp's (0: none).
+  /// One-level 2D reads: ask for the texels this many words below the stamp's (0: none).
   int32_t prefetch_words_below = 0;
   /// One-word formats: read each footprint texel's words as windows along the stamp's rows where
   /// they lie close enough (gather_stamp_rows).
@@ -440,6 +440,16 @@ LUXEL_INLINE void prefetch_below(const int32_t* words, const Int& index, int32_t
   simd::prefetch(at(2));
 }
 
+/// prefetch_below for a linear footprint's rows: both lines of each row's window (a stamp row
+/// spans up to 32 words: two lines, the second 16 words on), for its first and second rows.
+LUXEL_INLINE void prefetch_windows_below(const int32_t* words, const Int& row0_first, const Int& row1_first,
+                                         int32_t words_below) {
+  for (const Int* first : {&row0_first, &row1_first}) {
+    prefetch_below(words, *first, words_below);
+    prefetch_below(words, *first, words_below + 16);
+  }
+}
+
 /// Replaces the lanes of `t` outside the level with the border color.
 template <class Format>
 LUXEL_INLINE void apply_border(const Context<Format>& ctx, const IntMask& outside, TexelOf<Format>& t) {
@@ -464,6 +474,10 @@ LUXEL_INLINE TexelOf<Format> filter_2d(const Context<Format>& ctx, const Level& 
   const LinearAxis x = linear_axis(u, g.width, g.fwidth, s.u);
   const LinearAxis y = linear_axis(v, g.height, g.fheight, s.v);
   const Int row0 = row_start(y.i0, g.width), row1 = row_start(y.i1, g.width);
+  if (ctx.prefetch_words_below != 0) {
+    prefetch_windows_below(ctx.storage.words, word_index<Format>(g.offset, row0 + x.i0), word_index<Format>(g.offset, row1 + x.i0),
+                           ctx.prefetch_words_below);
+  }
   const auto texel = [&](const Int& row, const Int& column) { return fetch(ctx, word_index<Format>(g.offset, row + column)); };
   TexelOf<Format> t00 = texel(row0, x.i0);
   if constexpr (Format::kNonNegative) {
@@ -731,13 +745,24 @@ Float4 sample_level_impl(const Texture& texture, const Sampler& s, const TexCoor
 template <class Format, TextureKind Kind, Filter F>
 LUXEL_INLINE Context<Format> one_level_context(const Texture& texture, const Sampler& s) {
   Context<Format> ctx = context_of<Format, Kind>(texture, s);
+  // Within a tile, a read of a screen-aligned copy reads lower texel rows stamp row by stamp row.
+  // A tile reads only a few lines of each texel row, each row in another page: too short a run for
+  // the hardware prefetchers to follow, so without the hint every line is a miss the shader waits
+  // for. Asked for four or eight texel rows below, the lines still came late (bench/README.md,
+  // session 33).
+  constexpr int32_t kPrefetchRowsBelow = 16;
   if constexpr (Kind == TextureKind::Texture2D && F == Filter::Point) {
-    // These are the post-processing passes' reads of a screen-aligned copy, a texel per pixel:
-    // within a tile, the row of stamps eight rows on reads eight stamp heights lower. A tile reads
-    // only a few lines of each texel row, each row in another page: too short a run for the
-    // hardware prefetchers to follow, so without the hint every line is a miss the shader waits for.
-    // Asked for two stamp rows ahead the lines still came late (bench/README.md, session 33).
-    ctx.prefetch_words_below = 8 * simd::kStampHeight * Format::kWords * texture.width();
+    // The post passes' point reads of the frame, a texel per pixel.
+    ctx.prefetch_words_below = kPrefetchRowsBelow * Format::kWords * texture.width();
+  }
+  if constexpr (Kind == TextureKind::Texture2D && F == Filter::Linear && Format::kWords == 1) {
+    // Bilinear reads of a level too large to stay in a core's cache from one pass to the next: the
+    // bloom's downsample of the frame, four texels per pixel along each axis, each read once. The
+    // quarter-size textures the blurs read thirteen times over stay cached, and the hints only cost
+    // them (bench/README.md, session 35).
+    constexpr int64_t kStreamedLevelBytes = int64_t(1) << 20;
+    if (int64_t(texture.width()) * texture.height() * int64_t(sizeof(int32_t)) > kStreamedLevelBytes)
+      ctx.prefetch_words_below = kPrefetchRowsBelow * texture.width();
   }
   // The same reads, and the color-correction volumes' (neighbouring pixels, neighbouring colors),
   // find a stamp row's texels within a few words of each other. The mip-mapped path does not try
