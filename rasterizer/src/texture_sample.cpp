@@ -440,8 +440,9 @@ LUXEL_INLINE void prefetch_below(const int32_t* words, const Int& index, int32_t
   simd::prefetch(at(2));
 }
 
-/// prefetch_below for a linear footprint's rows: both lines of each row's window (a stamp row
-/// spans up to 32 words: two lines, the second 16 words on), for its first and second rows.
+/// prefetch_below for a linear footprint's rows: the first two lines of each row's window, for its
+/// first and second rows. A stamp row's window spans up to 32 words; where it starts mid-line its
+/// third line is the first line of the next stamp's window, which that stamp's hint asks for.
 LUXEL_INLINE void prefetch_windows_below(const int32_t* words, const Int& row0_first, const Int& row1_first,
                                          int32_t words_below) {
   for (const Int* first : {&row0_first, &row1_first}) {
@@ -759,7 +760,7 @@ LUXEL_INLINE Context<Format> one_level_context(const Texture& texture, const Sam
     // Bilinear reads of a level too large to stay in a core's cache from one pass to the next: the
     // bloom's downsample of the frame, four texels per pixel along each axis, each read once. The
     // quarter-size textures the blurs read thirteen times over stay cached, and the hints only cost
-    // them (bench/README.md, session 35).
+    // them (bench/README.md, sessions 35 and 36).
     constexpr int64_t kStreamedLevelBytes = int64_t(1) << 20;
     if (int64_t(texture.width()) * texture.height() * int64_t(sizeof(int32_t)) > kStreamedLevelBytes)
       ctx.prefetch_words_below = kPrefetchRowsBelow * texture.width();
