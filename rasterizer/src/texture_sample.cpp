@@ -391,8 +391,7 @@ LUXEL_INLINE Int address(Int i, const Int& n, Address mode, IntMask& outside) {
 struct LinearAxis {
   Int i0, i1;
   Float weight;
-  // (Not brace-initialized: xsimd reads a braced bool as an initializer list of all lanes.)
-  IntMask outside0 = IntMask(false), outside1 = IntMask(false);  ///< set by Border only
+  IntMask outside0 = simd::no_lanes(), outside1 = simd::no_lanes();  ///< set by Border only
 };
 
 /// Where a linear footprint starts along an axis of n texels (fn = n): the first of its two texels
@@ -463,7 +462,7 @@ template <class Format>
 LUXEL_INLINE TexelOf<Format> filter_2d(const Context<Format>& ctx, const Level& g, Filter filter, const Float& u, const Float& v) {
   const Sampler& s = ctx.sampler;
   if (filter == Filter::Point) {
-    IntMask out_x(false), out_y(false);
+    IntMask out_x = simd::no_lanes(), out_y = simd::no_lanes();
     const Int i = point_axis(u, g.width, g.fwidth, s.u, out_x);
     const Int j = point_axis(v, g.height, g.fheight, s.v, out_y);
     const Int index = word_index<Format>(g.offset, row_start(j, g.width) + i);
@@ -479,7 +478,9 @@ LUXEL_INLINE TexelOf<Format> filter_2d(const Context<Format>& ctx, const Level& 
     prefetch_windows_below(ctx.storage.words, word_index<Format>(g.offset, row0 + x.i0), word_index<Format>(g.offset, row1 + x.i0),
                            ctx.prefetch_words_below);
   }
-  const auto texel = [&](const Int& row, const Int& column) { return fetch(ctx, word_index<Format>(g.offset, row + column)); };
+  const auto texel = [&](const Int& row, const Int& column) LUXEL_INLINE_LAMBDA {
+    return fetch(ctx, word_index<Format>(g.offset, row + column));
+  };
   TexelOf<Format> t00 = texel(row0, x.i0);
   if constexpr (Format::kNonNegative) {
     // A post pass's blur taps along one axis and samples the other at texel centers, where the
@@ -544,7 +545,7 @@ LUXEL_INLINE TexelOf<Format> filter_volume(const Context<Format>& ctx, const Lev
   const Sampler& s = ctx.sampler;
   const Int slice = g.width * g.height;
   if (filter == Filter::Point) {
-    IntMask out_x(false), out_y(false), out_z(false);
+    IntMask out_x = simd::no_lanes(), out_y = simd::no_lanes(), out_z = simd::no_lanes();
     const Int i = point_axis(u, g.width, g.fwidth, s.u, out_x);
     const Int j = point_axis(v, g.height, g.fheight, s.v, out_y);
     const Int k = point_axis(w, g.depth, g.fdepth, s.w, out_z);
@@ -558,7 +559,7 @@ LUXEL_INLINE TexelOf<Format> filter_volume(const Context<Format>& ctx, const Lev
   const LinearAxis x = linear_axis(u, g.width, g.fwidth, s.u);
   const LinearAxis y = linear_axis(v, g.height, g.fheight, s.v);
   const LinearAxis z = linear_axis(w, g.depth, g.fdepth, s.w);
-  auto filter_slice = [&](const Int& k, const IntMask& out_z) {
+  auto filter_slice = [&](const Int& k, const IntMask& out_z) LUXEL_INLINE_LAMBDA {
     const Int plane = k * slice;
     const Int row0 = plane + row_start(y.i0, g.width), row1 = plane + row_start(y.i1, g.width);
     TexelOf<Format> t00 = fetch(ctx, word_index<Format>(g.offset, row0 + x.i0));
@@ -609,7 +610,7 @@ LUXEL_INLINE CubeCoords project_to_faces(const TexCoord& d) {
 }
 
 template <class Format>
-TexelOf<Format> filter_cube(const Context<Format>& ctx, const Level& g, Filter filter, const CubeCoords& c) {
+LUXEL_INLINE TexelOf<Format> filter_cube(const Context<Format>& ctx, const Level& g, Filter filter, const CubeCoords& c) {
   // The sampling copy (Texture): face levels n texels wide are stored n + 2 wide, texel (i, j) of
   // the face at (i + 1, j + 1), bordered by the texels across its edges. g.offset is the level's
   // offset in that copy.

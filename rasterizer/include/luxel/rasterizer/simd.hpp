@@ -159,6 +159,18 @@ inline LaneBits to_bits(const xsimd::batch_bool<T, Arch>& m) {
 #endif
 }
 
+/// The mask of no lanes, made in a register: xsimd's batch_bool(bool) is a call where a large
+/// translation unit leaves it out of line, and a call costs its caller every live vector register.
+inline IntMask no_lanes() {
+#if defined(__AVX512F__)
+  return IntMask(__mmask16(0));
+#elif defined(__AVX2__)
+  return IntMask(_mm256_setzero_si256());
+#else
+  return IntMask(false);
+#endif
+}
+
 /// Four int32 lanes, whatever kLanes is: a triangle's three edges side by side (the fourth lane
 /// unused), stepped and tested together.
 using Int4 = xsimd::make_sized_batch_t<int32_t, 4>;
