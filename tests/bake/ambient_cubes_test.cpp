@@ -10,14 +10,6 @@
 namespace luxel::bake::test {
 namespace {
 
-BakeSettings fast(int samples) {
-  BakeSettings b;
-  b.samples = samples;
-  b.cube_samples = samples;
-  b.threads = 2;
-  return b;
-}
-
 /// A 256-inch floor quad centered at the origin (albedo `albedo`) and a volume above it.
 scenes::Scene floor_with_volume(glm::vec3 albedo, glm::ivec3 counts, glm::vec3 min, glm::vec3 max) {
   scenes::Scene s;
@@ -39,7 +31,7 @@ TEST(BakeAmbientCubes, WhiteFurnaceGivesTheSkyOnEveryFace) {
   // the same radiance and every face is that radiance (vrad's normalized weights).
   scenes::Scene s = floor_with_volume(glm::vec3(1.0f), {3, 3, 2}, {-64, -64, 16}, {64, 64, 80});
   s.background = glm::vec3(0.75f);
-  const BakeResult r = bake(s, fast(64));
+  const BakeResult r = bake(s, quick_bake(64));
   ASSERT_TRUE(r.cubes);
   ASSERT_EQ(r.cubes->volume.cubes.size(), 18u);
   for (const auto& cube : r.cubes->volume.cubes)
@@ -56,7 +48,7 @@ TEST(BakeAmbientCubes, ASymmetricSceneBakesSymmetricCubesFacingTheRightWay) {
   l.position = {0, 0, 100};
   l.color = glm::vec3(10000.0f);
   s.lights = {l};
-  BakeSettings settings = fast(256);
+  BakeSettings settings = quick_bake(256);
   settings.cube_samples = 1024;
   settings.cubes_all_light = true;
   const BakeResult r = bake(s, settings);
@@ -90,7 +82,7 @@ TEST(BakeAmbientCubes, IndirectOnlyLeavesTheLightsOut) {
   l.position = {0, 0, 100};
   l.color = glm::vec3(10000.0f);
   s.lights = {l};
-  const BakeResult r = bake(s, fast(16));  // black floor, black sky: nothing but the light
+  const BakeResult r = bake(s, quick_bake(16));  // black floor, black sky: nothing but the light
   for (const auto& cube : r.cubes->volume.cubes)
     for (const glm::vec3& f : cube) EXPECT_EQ(f, glm::vec3(0.0f));
 }
@@ -102,7 +94,7 @@ TEST(BakeAmbientCubes, SamplesInsideSolidGeometryTakeTheNearestValidCube) {
   scenes::IrradianceVolume v;
   v.min = {-16, 0, 0}, v.max = {48, 0, 0}, v.counts = {3, 1, 1}, v.spacing = {32, 1, 1};  // x = -16, 16, 48
   s.irradiance_volume = v;
-  const BakeResult r = bake(s, fast(64));
+  const BakeResult r = bake(s, quick_bake(64));
   ASSERT_TRUE(r.cubes);
   EXPECT_EQ(r.cubes->valid, (std::vector<char>{1, 1, 0}));
   EXPECT_EQ(r.stats.cube_samples_inside, 1u);
@@ -122,7 +114,7 @@ TEST(BakeAmbientCubesAt, AboveALitFloorFromTheAttachedLightmaps) {
   l.direction = {0, 0, -1};
   l.color = glm::vec3(0.75f);
   s.lights = {l};
-  BakeSettings settings = fast(64);
+  BakeSettings settings = quick_bake(64);
   const BakeResult r = bake(s, settings);
   scenes::Scene baked = s;
   attach(baked, r);
@@ -152,7 +144,7 @@ TEST(BakeAmbientCubesAt, AgreesWithTheVolumeAtItsSamples) {
   l.color = glm::vec3(10000.0f);
   s.lights = {l};
   s.background = glm::vec3(0.2f, 0.3f, 0.4f);
-  BakeSettings settings = fast(256);
+  BakeSettings settings = quick_bake(256);
   settings.cube_samples = 1024;
   const BakeResult r = bake(s, settings);
   scenes::Scene baked = s;

@@ -11,6 +11,16 @@
 
 namespace luxel::bake::test {
 
+/// A bake of `samples` rays per luxel and per ambient-cube sample, on two threads: enough for the
+/// tests' small scenes.
+inline BakeSettings quick_bake(int samples) {
+  BakeSettings b;
+  b.samples = samples;
+  b.cube_samples = samples;
+  b.threads = 2;
+  return b;
+}
+
 /// A material that bakes with albedo `albedo` (LightmappedGeneric, no texture) and emits `emissive`.
 inline scenes::Material lightmapped(glm::vec3 albedo, glm::vec3 emissive = glm::vec3(0.0f)) {
   scenes::Material m;

@@ -27,19 +27,11 @@ scenes::Scene lone_quad(glm::vec3 albedo, glm::vec4 tangent = {1, 0, 0, 1}) {
   return s;
 }
 
-BakeSettings fast(int samples = 64) {
-  BakeSettings b;
-  b.samples = samples;
-  b.cube_samples = samples;
-  b.threads = 2;
-  return b;
-}
-
 TEST(BakeLightmaps, WhiteFurnaceGivesTheSkyInTheFlatMapAndVradsSkyFactorInTheBasisMaps) {
   scenes::Scene s = lone_quad(glm::vec3(1.0f));
   const glm::vec3 sky(0.75f, 0.5f, 1.25f);
   s.background = sky;
-  const BakeResult r = bake(s, fast(1024));
+  const BakeResult r = bake(s, quick_bake(1024));
   ASSERT_EQ(r.lightmaps.width, 18);
   const auto luxels = covered(r.lightmaps);
   ASSERT_EQ(luxels.size(), 256u);
@@ -94,7 +86,7 @@ TEST(BakeLightmaps, TheSkyCubeIsReadInTheDirectionTheRayLeaves) {
     if (facing < 0)
       for (auto& p : s.meshes[0].positions) p.y = -p.y;  // mirror: the winding flips, the quad faces down
     for (auto& n : s.meshes[0].normals) n = {0, 0, facing};
-    const BakeResult r = bake(s, fast(1024));
+    const BakeResult r = bake(s, quick_bake(1024));
     double mean = 0;
     const auto luxels = covered(r.lightmaps);
     for (size_t i : luxels) mean += r.lightmaps.maps[0][i].r;
@@ -134,7 +126,7 @@ TEST(BakeLightmaps, ADistantLightLandsInTheBasisMapsByItsCosinesToTheBasis) {
     sun.direction = -c.to_light;
     sun.color = glm::vec3(2.0f, 1.0f, 0.5f);
     s.lights = {sun};
-    const BakeResult r = bake(s, fast(16));
+    const BakeResult r = bake(s, quick_bake(16));
     for (size_t i : covered(r.lightmaps))
       for (int k = 0; k < 4; ++k)
         for (int ch = 0; ch < 3; ++ch) {
@@ -158,7 +150,7 @@ TEST(BakeLightmaps, TheBasisFollowsTheTangentFrame) {
     sun.direction = -world;
     sun.color = glm::vec3(1.0f);
     s.lights = {sun};
-    const BakeResult r = bake(s, fast(4));
+    const BakeResult r = bake(s, quick_bake(4));
     for (size_t i : covered(r.lightmaps))
       for (int j = 0; j < 3; ++j) EXPECT_NEAR(r.lightmaps.maps[size_t(j) + 1][i].r, j == k ? 1.0f : 0.0f, 2e-3f) << k << " " << j;
   }
@@ -170,7 +162,7 @@ TEST(BakeLightmaps, TheBasisFollowsTheTangentFrame) {
 double box_error(int samples, double* mean_out = nullptr, int* bounces = nullptr) {
   const float rho = 0.5f;
   const scenes::Scene s = closed_box(64, 16, lightmapped(glm::vec3(rho)), lightmapped(glm::vec3(rho), glm::vec3(1.0f)));
-  BakeSettings settings = fast(samples);
+  BakeSettings settings = quick_bake(samples);
   settings.stop_fraction = 0.001f;
   const BakeResult r = bake(s, settings);
   const auto luxels = covered(r.lightmaps);
@@ -202,7 +194,7 @@ TEST(BakeLightmaps, AClosedBoxMatchesTheGeometricSeriesOfBouncesWithinATolerance
 
 TEST(BakeLightmaps, BilinearFilteringInsideAChartReadsOnlyWrittenLuxels) {
   const scenes::Scene s = closed_box(64, 16, lightmapped(glm::vec3(0.5f)), lightmapped(glm::vec3(0.5f), glm::vec3(1.0f)));
-  const BakeResult r = bake(s, fast(4));
+  const BakeResult r = bake(s, quick_bake(4));
   const LightmapAtlas& a = r.lightmaps;
   std::mt19937 rng(7);
   std::uniform_real_distribution<float> u01(0.0f, 1.0f);

@@ -48,7 +48,7 @@ scenes::Scene lit_box() {
   return s;
 }
 
-BakeSettings fast() {
+BakeSettings small_bake() {
   BakeSettings b;
   b.samples = 16;
   b.cube_samples = 16;
@@ -58,9 +58,9 @@ BakeSettings fast() {
 TEST(BakeStorage, ABakeLoadsBackBitForBitWhileItsInputsAreUnchanged) {
   TempDir dir;
   scenes::Scene s = lit_box();
-  const BakeResult r = bake(s, fast());
-  save_bake(r, s, fast(), dir.path());
-  const auto loaded = load_bake(dir.path(), s, fast());
+  const BakeResult r = bake(s, small_bake());
+  save_bake(r, s, small_bake(), dir.path());
+  const auto loaded = load_bake(dir.path(), s, small_bake());
   ASSERT_TRUE(loaded);
   for (int k = 0; k < 4; ++k)
     EXPECT_EQ(0, std::memcmp(loaded->lightmaps.maps[size_t(k)].data(), r.lightmaps.maps[size_t(k)].data(),
@@ -72,21 +72,21 @@ TEST(BakeStorage, ABakeLoadsBackBitForBitWhileItsInputsAreUnchanged) {
   // What the bake reads changes: no reuse.
   scenes::Scene moved = s;
   moved.meshes[1].positions[0].x += 1;
-  EXPECT_FALSE(load_bake(dir.path(), moved, fast()));
+  EXPECT_FALSE(load_bake(dir.path(), moved, small_bake()));
   scenes::Scene relit = s;
   relit.materials[1].emissive *= 2.0f;
-  EXPECT_FALSE(load_bake(dir.path(), relit, fast()));
-  BakeSettings more = fast();
+  EXPECT_FALSE(load_bake(dir.path(), relit, small_bake()));
+  BakeSettings more = small_bake();
   more.samples = 64;
   EXPECT_FALSE(load_bake(dir.path(), s, more));
   // Threads never change a byte, so they are not part of the hash.
-  BakeSettings threads = fast();
+  BakeSettings threads = small_bake();
   threads.threads = 7;
   EXPECT_TRUE(load_bake(dir.path(), s, threads));
   // What the bake does not read (a camera) does not matter.
   scenes::Scene viewed = s;
   viewed.cameras.push_back({});
-  EXPECT_TRUE(load_bake(dir.path(), viewed, fast()));
+  EXPECT_TRUE(load_bake(dir.path(), viewed, small_bake()));
 }
 
 std::string bytes_of(const std::string& path) {
@@ -98,7 +98,7 @@ TEST(BakeStorage, TheSameBakeWrittenTwiceIsTheSameFiles) {
   // A second apart: a time stamp in the EXR header would show (OpenImageIO writes one unless told).
   TempDir dir;
   const scenes::Scene s = lit_box();
-  BakeSettings one = fast(), two = fast();
+  BakeSettings one = small_bake(), two = small_bake();
   one.threads = 1, two.threads = 2;
   save_bake(bake(s, one), s, one, dir.path() + "/a");
   std::this_thread::sleep_for(std::chrono::milliseconds(1100));
@@ -113,20 +113,20 @@ TEST(BakeStorage, TheSameBakeWrittenTwiceIsTheSameFiles) {
 TEST(BakeStorage, ADamagedIndexIsAnErrorNamingTheFile) {
   TempDir dir;
   const scenes::Scene s = lit_box();
-  save_bake(bake(s, fast()), s, fast(), dir.path());
+  save_bake(bake(s, small_bake()), s, small_bake(), dir.path());
   { std::ofstream(dir.path() + "/bake.json") << "{ not json"; }
   try {
-    load_bake(dir.path(), s, fast());
+    load_bake(dir.path(), s, small_bake());
     FAIL() << "no error";
   } catch (const std::runtime_error& e) {
     EXPECT_THAT(e.what(), ::testing::HasSubstr("bake.json: not a bake index"));
   }
-  EXPECT_FALSE(load_bake(dir.path() + "/nothing-here", s, fast()));
+  EXPECT_FALSE(load_bake(dir.path() + "/nothing-here", s, small_bake()));
 }
 
 TEST(BakeStorage, AttachWiresTheFourMapsAndTheCubesIntoTheScene) {
   scenes::Scene s = lit_box();
-  const BakeResult r = bake(s, fast());
+  const BakeResult r = bake(s, small_bake());
   const size_t textures = s.textures.size();
   attach(s, r);
   ASSERT_TRUE(s.lightmaps);

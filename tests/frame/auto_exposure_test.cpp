@@ -16,7 +16,7 @@
 namespace luxel::frame {
 namespace {
 
-constexpr int kSize = 32;
+constexpr int kExposureSize = 32;
 constexpr double kGrey = 0.15;  // the scene's linear luminance before the tone map
 
 /// An unlit grey square filling the view: the frame's luminance is kGrey x the scale.
@@ -39,7 +39,7 @@ double decode(uint8_t code) {
 
 TEST(FrameAutoExposure, EachFrameIsDrawnAtTheScaleTheFramesBeforeChose) {
   const scenes::Scene s = grey_scene();
-  Renderer r(s, {kSize, kSize, 4});
+  Renderer r(s, {kExposureSize, kExposureSize, 4});
   ASSERT_NE(r.auto_exposure(), nullptr);
   rasterizer::Context ctx(2);
   EXPECT_EQ(r.exposure(), 1.0f) << "the first frame: 1 in the range";
@@ -47,12 +47,12 @@ TEST(FrameAutoExposure, EachFrameIsDrawnAtTheScaleTheFramesBeforeChose) {
     r.set_time(float(f) / 30.0f);
     const float scale = r.exposure();
     r.render(ctx);
-    const uint8_t code = r.image().pixel(kSize / 2, kSize / 2)[1];
+    const uint8_t code = r.image().pixel(kExposureSize / 2, kExposureSize / 2)[1];
     EXPECT_EQ(code, uint8_t(std::lround(255.0 * srgb_encode(std::min(1.0, kGrey * scale))))) << "frame " << f;
     if (::testing::Test::HasFailure()) break;
   }
   // Settled in the percentile rule's sticky bin [0.5700, 0.6495], which holds 0.60.
-  const double settled = decode(r.image().pixel(kSize / 2, kSize / 2)[1]);
+  const double settled = decode(r.image().pixel(kExposureSize / 2, kExposureSize / 2)[1]);
   EXPECT_GE(settled, 0.5700);
   EXPECT_LE(settled, 0.6495);
   EXPECT_GT(r.exposure(), 0.56 / kGrey);
@@ -60,7 +60,7 @@ TEST(FrameAutoExposure, EachFrameIsDrawnAtTheScaleTheFramesBeforeChose) {
   std::printf("grey %.2f settles at scale %.4f (luminance %.4f)\n", kGrey, r.exposure(), settled);
 
   // The clock goes back: the exposure starts again, and frame 0 is frame 0 again.
-  Renderer fresh(s, {kSize, kSize, 4});
+  Renderer fresh(s, {kExposureSize, kExposureSize, 4});
   fresh.render(ctx);
   r.set_time(0.0f);
   r.render(ctx);
@@ -79,7 +79,7 @@ TEST(FrameAutoExposure, EnteringAnExposureZoneChangesTheControlsWithoutAJump) {
   scenes::ExposureZone zone{{-5, -5, 12}, {5, 5, 20}, {}};
   zone.exposure.min_scale = zone.exposure.max_scale = 1.0f;
   s.exposure_zones = {zone};
-  FrameSettings settings{kSize, kSize, 4};
+  FrameSettings settings{kExposureSize, kExposureSize, 4};
   settings.camera_path = true;
   Renderer r(s, settings);
   rasterizer::Context ctx(2);
@@ -108,7 +108,7 @@ TEST(FrameAutoExposure, EnteringAnExposureZoneChangesTheControlsWithoutAJump) {
 
 TEST(FrameAutoExposure, SettlingFindsTheScaleTheSequenceStaysAt) {
   const scenes::Scene s = grey_scene();
-  Renderer r(s, {kSize, kSize, 4});
+  Renderer r(s, {kExposureSize, kExposureSize, 4});
   rasterizer::Context ctx(2);
   const SettledExposure settled = r.settle_exposure(ctx);
   EXPECT_TRUE(settled.settled);
@@ -135,13 +135,13 @@ TEST(FrameAutoExposure, SettlingStopsAtTheRange) {
   // The grey wants a scale near 4; a range up to 2 keeps it at 2, which is then at rest.
   scenes::Scene s = grey_scene();
   s.exposure.max_scale = 2.0f;
-  Renderer r(s, {kSize, kSize, 4});
+  Renderer r(s, {kExposureSize, kExposureSize, 4});
   rasterizer::Context ctx(1);
   const SettledExposure settled = r.settle_exposure(ctx);
   EXPECT_TRUE(settled.settled);
   EXPECT_EQ(settled.scale, 2.0f);
   // A fixed exposure has nothing to settle.
-  FrameSettings fixed_settings{kSize, kSize, 4};
+  FrameSettings fixed_settings{kExposureSize, kExposureSize, 4};
   fixed_settings.exposure = 3.0f;
   const scenes::Scene grey = grey_scene();
   Renderer fixed(grey, fixed_settings);

@@ -15,7 +15,7 @@
 namespace luxel::frame {
 namespace {
 
-constexpr int kSize = 32;
+constexpr int kGradedSize = 32;
 
 /// The color ramp (frame_support.hpp), the eye at (0, 0, 10), and a warm node `distance` above
 /// the eye, fading out from 0 to 128 inches.
@@ -31,7 +31,7 @@ scenes::Scene graded(float distance) {
 }
 
 rasterizer::Image render(const scenes::Scene& s, bool color_correction, std::vector<PassTime>* passes = nullptr) {
-  FrameSettings f{kSize, kSize, 4};
+  FrameSettings f{kGradedSize, kGradedSize, 4};
   f.color_correction = color_correction;
   f.time_passes = passes != nullptr;
   Renderer r(s, f);
@@ -71,7 +71,7 @@ TEST(FrameColorCorrection, NoPassBeyondTheFalloffNorWhenTurnedOff) {
 TEST(FrameColorCorrection, ANodeWithoutItsLutIsRefused) {
   scenes::Scene s = graded(0.0f);
   s.color_corrections[0].lut = "builtin:sepia-ish";
-  FrameSettings f{kSize, kSize, 4};
+  FrameSettings f{kGradedSize, kGradedSize, 4};
   try {
     Renderer r(s, f);
     FAIL() << "an unknown built-in LUT was accepted";

@@ -19,7 +19,7 @@
 namespace luxel::frame {
 namespace {
 
-constexpr int kSize = 32;
+constexpr int kTimelineSize = 32;
 constexpr double kFps = 30.0;
 
 using Kind = scenes::ColorCorrectionInput::Kind;
@@ -42,7 +42,7 @@ scenes::Scene rising() {
 scenes::ColorCorrectionVolume slab(float bottom, float top, float fade) { return {"builtin:archival", {-5, -5, bottom}, {5, 5, top}, fade}; }
 
 FrameSettings settings_at(const scenes::Scene& s, double time, bool color_correction = true) {
-  FrameSettings f{kSize, kSize, 1};
+  FrameSettings f{kTimelineSize, kTimelineSize, 1};
   f.camera_path = !s.camera_path.empty();
   f.time = float(time);
   f.color_correction = color_correction;

@@ -18,12 +18,6 @@ namespace {
 
 using scenes::test::TempDir;
 
-scenes::Scene baked_courtyard() {
-  scenes::Scene scene = scenes::make_builtin_scene("courtyard", {64, 64});
-  attach_test_bake(scene);
-  return scene;
-}
-
 CubemapSettings tiny() {
   CubemapSettings s = CubemapSettings::quick();
   s.face_size = 4;

@@ -113,12 +113,6 @@ TEST(Cubemaps, TheShadersCubeSamplingReadsWhatTheCaptureSaw) {
   }
 }
 
-scenes::Scene baked_courtyard() {
-  scenes::Scene scene = scenes::make_builtin_scene("courtyard", {64, 64});
-  attach_test_bake(scene);
-  return scene;
-}
-
 /// |log2(merged / float)| over the channels the bracket can see, and the range they span.
 struct StopError {
   double max = 0, p99 = 0, range = 0;

@@ -80,6 +80,12 @@ void attach_test_bake(scenes::Scene& scene) {
   bake::attach(scene, it->second);
 }
 
+scenes::Scene baked_courtyard() {
+  scenes::Scene scene = scenes::make_builtin_scene("courtyard", {64, 64});
+  attach_test_bake(scene);
+  return scene;
+}
+
 rasterizer::Image render_frame(const scenes::Scene& scene, const FrameSettings& settings, int threads) {
   Renderer r(scene, settings);
   rasterizer::Context ctx(threads);

@@ -49,6 +49,9 @@ rasterizer::Image render_frame(const scenes::Scene& scene, const FrameSettings& 
 /// scene name and test binary.
 void attach_test_bake(scenes::Scene& scene);
 
+/// builtin:courtyard at 64x64 with attach_test_bake: a scene with cube-map sample points.
+scenes::Scene baked_courtyard();
+
 /// builtin:`name` built for a width x height image, with attach_test_bake where it needs a bake
 /// (and only kReducedTrisTriangles of tris where kReduced); the last one built is kept and shared.
 std::shared_ptr<const scenes::Scene> builtin_scene(std::string_view name, int width, int height);

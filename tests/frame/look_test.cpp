@@ -20,10 +20,10 @@
 namespace luxel::frame {
 namespace {
 
-constexpr int kSize = 64;
+constexpr int kLookSize = 64;
 
 FrameSettings archival(float time = 0.0f) {
-  FrameSettings f{kSize, kSize, 1};
+  FrameSettings f{kLookSize, kLookSize, 1};
   f.look = Look::archival;
   f.time = time;
   return f;
@@ -54,7 +54,7 @@ TEST(FrameLook, ArchivalGradesOverTheScenesNodesWithinFourLookups) {
   const postfx::Lut warm = postfx::compose(postfx::resolve_lut("builtin:warm"), grade);
   const postfx::Lut cool = postfx::compose(postfx::resolve_lut("builtin:cool"), grade);
   scenes::Scene s = color_ramp();
-  const rasterizer::Image plain = render_frame(s, FrameSettings{kSize, kSize, 1});
+  const rasterizer::Image plain = render_frame(s, FrameSettings{kLookSize, kLookSize, 1});
 
   // No nodes: the grade alone, at 1.
   EXPECT_EQ(render_frame(s, archival()).rgba, expected(plain, {{alone, 1.0f}}, 0.0f).rgba);
@@ -101,7 +101,7 @@ double noise(const rasterizer::Image& a, const rasterizer::Image& b) {
 
 TEST(FrameLook, ArchivalIsDesaturatedAndGrainy) {
   const scenes::Scene s = color_ramp();
-  const rasterizer::Image plain = render_frame(s, FrameSettings{kSize, kSize, 1});
+  const rasterizer::Image plain = render_frame(s, FrameSettings{kLookSize, kLookSize, 1});
   const rasterizer::Image old = render_frame(s, archival());
   // Saturation 0.1 leaves a tenth of the chroma; the sepia balance adds at most 0.06 (15 steps)
   // between red and blue and the grain is the same in every channel, so under 0.1 x plain + 15:
@@ -118,7 +118,7 @@ TEST(FrameLook, ArchivalIsDesaturatedAndGrainy) {
   const postfx::WeightedLut full{&grade, 1.0f};
   rasterizer::Context ctx(1);
   const rasterizer::Image graded = postfx::color_correct(ctx, plain, {&full, 1});
-  FrameSettings grainy{kSize, kSize, 1};
+  FrameSettings grainy{kLookSize, kLookSize, 1};
   grainy.film_grain = postfx::FilmGrainOptions{};
   const double archival_noise = noise(old, graded), default_noise = noise(render_frame(s, grainy), plain);
   EXPECT_GT(archival_noise, 10.0);

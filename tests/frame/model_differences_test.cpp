@@ -26,12 +26,12 @@
 namespace luxel::frame {
 namespace {
 
-constexpr int kWidth = 192, kHeight = 108;
+constexpr int kDiffWidth = 192, kDiffHeight = 108;
 
 /// `textures`: the scene's (frame/textures.hpp), shared by its renders.
 rasterizer::Image render(const scenes::Scene& scene, const std::shared_ptr<const SceneTextures>& textures,
                          shading::ShaderModel model, int camera) {
-  FrameSettings f{kWidth, kHeight, 4, camera};
+  FrameSettings f{kDiffWidth, kDiffHeight, 4, camera};
   f.color_correction = false;  // a pass over the finished image would tint the masks' kind colors
   f.model = model;
   Renderer r(scene, f, textures);
@@ -91,8 +91,8 @@ Counts compare_models(const scenes::Scene& scene, int camera) {
   const rasterizer::Image masks =
       render(masks_scene, std::make_shared<const SceneTextures>(masks_scene), shading::ShaderModel::ps_3_0, camera);
   Counts c;
-  for (int y = 0; y < kHeight; ++y)
-    for (int x = 0; x < kWidth; ++x) {
+  for (int y = 0; y < kDiffHeight; ++y)
+    for (int x = 0; x < kDiffWidth; ++x) {
       const uint8_t* m = masks.pixel(x, y);
       const uint8_t* a = ps20.pixel(x, y);
       const uint8_t* b = ps2b.pixel(x, y);
@@ -114,13 +114,13 @@ Counts compare_models(const scenes::Scene& scene, int camera) {
 }
 
 TEST(ModelDifferences, Ps20DiffersOnlyOnTheModelsAndWhatReflectsThem) {
-  scenes::Scene scene = scenes::make_builtin_scene("courtyard", {kWidth, kHeight});
+  scenes::Scene scene = scenes::make_builtin_scene("courtyard", {kDiffWidth, kDiffHeight});
   attach_test_bake(scene);
   scene.fog.mode = scenes::FogMode::none;  // ps_2_0 fogs per vertex: every fogged surface would differ
   // The overview (every kind in view), then the hero's camera (the hero large).
   const Counts overview = compare_models(scene, 0);
   EXPECT_EQ(overview.elsewhere_differ, 0) << "of " << overview.elsewhere << " pixels of the world, flames and sky";
-  EXPECT_GT(overview.elsewhere, kWidth * kHeight / 2) << "the world fills most of the view";
+  EXPECT_GT(overview.elsewhere, kDiffWidth * kDiffHeight / 2) << "the world fills most of the view";
   EXPECT_GT(overview.hero, 20) << "the hero is in view";
   EXPECT_GT(overview.models, 50) << "the other models are in view";
   EXPECT_GT(overview.water, 50) << "the water is in view";

@@ -17,7 +17,7 @@
 namespace luxel::frame {
 namespace {
 
-constexpr int kSize = 32;
+constexpr int kMotionSize = 32;
 constexpr float kFps = 30.0f;
 
 
@@ -66,7 +66,7 @@ TEST(ModelMotion, AmbientFollowsTheDocumentedTimeConstant) {
   scenes::Scene s = walker_scene();
   add_jump(s);
   for (float fps : {kFps, 2 * kFps}) {
-    FrameSettings f{kSize, kSize, 1};
+    FrameSettings f{kMotionSize, kMotionSize, 1};
     Renderer r(s, f);
     const glm::vec3 dark = s.irradiance_volume->cubes[0][4], bright = s.irradiance_volume->cubes[1][4];
     EXPECT_EQ(r.model_lighting().at(0).volume[4], dark);
@@ -97,7 +97,7 @@ TEST(ModelMotion, TheAveragedAmbientReachesThePixels) {
   s.models = {walker(glm::vec3(0.0f), {{0.0f, glm::vec3(0.0f)}, {0.01f, glm::vec3(100.0f, 0.0f, 0.0f)}})};
   s.cameras[0].position = {100, 0, 10};
   s.cameras[0].target = {100, 0, 0};
-  FrameSettings f{kSize, kSize, 1};
+  FrameSettings f{kMotionSize, kMotionSize, 1};
   f.time = 0.01f;
   Renderer settled(s, f);  // the first frame starts at its values: bright
   rasterizer::Context ctx(2);
@@ -105,7 +105,7 @@ TEST(ModelMotion, TheAveragedAmbientReachesThePixels) {
   const glm::vec3 dark = s.irradiance_volume->cubes[0][4], bright = s.irradiance_volume->cubes[1][4];
   settled.render(ctx);
   for (int c = 0; c < 3; ++c)
-    EXPECT_NEAR(settled.image().pixel(kSize / 2, kSize / 2)[c], 255 * srgb_encode(albedo[c] * bright[c]), 1.0);
+    EXPECT_NEAR(settled.image().pixel(kMotionSize / 2, kMotionSize / 2)[c], 255 * srgb_encode(albedo[c] * bright[c]), 1.0);
   f.time = 0.0f;
   Renderer walking(s, f);  // starts dark (off screen)
   for (int n = 1; n <= 6; ++n) walking.set_time(static_cast<float>(n) / kFps);
@@ -115,7 +115,7 @@ TEST(ModelMotion, TheAveragedAmbientReachesThePixels) {
   int differs = 0;
   for (int c = 0; c < 3; ++c) {
     const double expected = 255 * srgb_encode(albedo[c] * (bright[c] + (dark[c] - bright[c]) * remaining));
-    EXPECT_NEAR(walking.image().pixel(kSize / 2, kSize / 2)[c], expected, 1.0) << c;
+    EXPECT_NEAR(walking.image().pixel(kMotionSize / 2, kMotionSize / 2)[c], expected, 1.0) << c;
     differs += std::abs(expected - 255 * srgb_encode(albedo[c] * bright[c])) > 3.0;
   }
   EXPECT_GT(differs, 0) << "the averaging must be visible for the test to mean anything";
@@ -153,7 +153,7 @@ TEST(ModelMotion, TheTwoLocalLightsAreTheTwoTheRulePicks) {
   std::vector<int> order = {0, 1, 2, 3};
   std::stable_sort(order.begin(), order.end(),
                    [&](int a, int b) { return delivered(s.lights[a], s.models[0].centroid) > delivered(s.lights[b], s.models[0].centroid); });
-  Renderer r(s, {kSize, kSize, 1});
+  Renderer r(s, {kMotionSize, kMotionSize, 1});
   const ModelLightingState& state = r.model_lighting().at(0);
   ASSERT_EQ(state.local_lights.size(), 2u);
   EXPECT_EQ(state.local_lights[0], order[0]);
@@ -175,7 +175,7 @@ TEST(ModelMotion, LocalLightsCrossFadeWhenTheRuleChangesItsChoice) {
   };
   s.lights = {point({-50, 0, 5}, 400), point({0, 0, 400}, 5e4f), point({50, 0, 5}, 400)};  // A, B (overhead), C
   s.models = {walker(glm::vec3{-45, 0, 0}, {{0.0f, glm::vec3(0.0f)}, {0.01f, glm::vec3(90, 0, 0)}})};
-  Renderer r(s, {kSize, kSize, 1});
+  Renderer r(s, {kMotionSize, kMotionSize, 1});
   ASSERT_EQ(r.model_lighting()[0].local_lights, (std::vector<int>{0, 1}));
   for (int n = 1; n <= 12; ++n) {
     const float t = static_cast<float>(n) / kFps;
@@ -196,12 +196,12 @@ TEST(ModelMotion, AModelAtRestIsLitAsWithoutAveraging) {
   scenes::Scene s = walker_scene();
   s.lights = four_lights();
   s.models = {walker(glm::vec3{20, 0, 0})};
-  FrameSettings no_averaging{kSize, kSize, 4};
+  FrameSettings no_averaging{kMotionSize, kMotionSize, 4};
   no_averaging.lighting_time_constant = 0.0f;
   rasterizer::Context ctx(2);
   Renderer plain(s, no_averaging);
   plain.render(ctx);
-  Renderer averaged(s, {kSize, kSize, 4});
+  Renderer averaged(s, {kMotionSize, kMotionSize, 4});
   for (int n = 0; n < 4; ++n) {
     averaged.set_time(static_cast<float>(n) * 0.37f);
     averaged.render(ctx);
@@ -214,7 +214,7 @@ TEST(ModelMotion, MovingModelsMoveOnScreenAndSequencesRepeat) {
   s.lights = four_lights();
   s.models = {walker(glm::vec3(0.0f), {{0.0f, glm::vec3(0.0f)}, {1.0f, glm::vec3(0.5f, 0.0f, 0.0f)}})};
   auto sequence = [&](int threads) {
-    Renderer r(s, {kSize, kSize, 4});
+    Renderer r(s, {kMotionSize, kMotionSize, 4});
     rasterizer::Context ctx(threads);
     std::vector<std::vector<uint8_t>> frames;
     for (int n = 0; n <= 30; n += 10) {
@@ -228,27 +228,27 @@ TEST(ModelMotion, MovingModelsMoveOnScreenAndSequencesRepeat) {
   EXPECT_EQ(one, two);
   EXPECT_NE(one.front(), one.back());
   // At t = 1 the square spans x in [-0.5, 1.5]: the camera's left quarter (x < -0.5) is background.
-  Renderer r(s, {kSize, kSize, 1});
+  Renderer r(s, {kMotionSize, kMotionSize, 1});
   r.set_time(1.0f);
   rasterizer::Context ctx(1);
   r.render(ctx);
-  EXPECT_EQ(r.image().pixel(2, kSize / 2)[0], 0) << "left of the moved square: the black background";
-  EXPECT_GT(r.image().pixel(kSize - 3, kSize / 2)[0], 0) << "the moved square";
+  EXPECT_EQ(r.image().pixel(2, kMotionSize / 2)[0], 0) << "left of the moved square: the black background";
+  EXPECT_GT(r.image().pixel(kMotionSize - 3, kMotionSize / 2)[0], 0) << "the moved square";
 }
 
 TEST(ModelMotion, BadTimesAndPathsAreRefused) {
   scenes::Scene s = walker_scene();
   add_jump(s);
-  FrameSettings f{kSize, kSize, 1};
+  FrameSettings f{kMotionSize, kMotionSize, 1};
   f.time = std::nanf("");
   EXPECT_THROW(Renderer(s, f), std::invalid_argument);
   f.time = 0.0f;
   f.lighting_time_constant = -1.0f;
   EXPECT_THROW(Renderer(s, f), std::invalid_argument);
-  Renderer r(s, {kSize, kSize, 1});
+  Renderer r(s, {kMotionSize, kMotionSize, 1});
   EXPECT_THROW(r.set_time(INFINITY), std::invalid_argument);
   s.models[0].path[1].time = 1.0f;  // not later than the key before
-  EXPECT_THROW(Renderer(s, {kSize, kSize, 1}), std::invalid_argument);
+  EXPECT_THROW(Renderer(s, {kMotionSize, kMotionSize, 1}), std::invalid_argument);
 }
 
 }  // namespace

@@ -19,11 +19,11 @@
 namespace luxel::frame {
 namespace {
 
-constexpr int kSize = 64;
+constexpr int kExtremesSize = 64;
 
 FrameSettings small_frame(int samples = 1) {
   FrameSettings s;
-  s.width = s.height = kSize;
+  s.width = s.height = kExtremesSize;
   s.samples = samples;
   return s;
 }
@@ -61,8 +61,8 @@ scenes::Scene square_at(glm::vec3 offset, float scale) {
 /// The square's expected frame: white inside pixels 16..47, black outside.
 int misplaced(const rasterizer::Image& image) {
   int n = 0;
-  for (int y = 0; y < kSize; ++y)
-    for (int x = 0; x < kSize; ++x) {
+  for (int y = 0; y < kExtremesSize; ++y)
+    for (int x = 0; x < kExtremesSize; ++x) {
       const uint8_t want = x >= 16 && x < 48 && y >= 16 && y < 48 ? 255 : 0;
       n += pixel(image, x, y)[0] != want || pixel(image, x, y)[1] != want || pixel(image, x, y)[2] != want;
     }
@@ -132,8 +132,8 @@ TEST(NumericExtremes, CameraInsideGeometry) {
     const rasterizer::Image culled = render_frame(closed_box(10, eye, false), small_frame(samples));
     const rasterizer::Image drawn = render_frame(closed_box(10, eye, true), small_frame(samples));
     int not_background = 0, not_box = 0;
-    for (int y = 0; y < kSize; ++y)
-      for (int x = 0; x < kSize; ++x) {
+    for (int y = 0; y < kExtremesSize; ++y)
+      for (int x = 0; x < kExtremesSize; ++x) {
         not_background += pixel(culled, x, y)[0] != 255 || pixel(culled, x, y)[1] != 0 || pixel(culled, x, y)[2] != 0;
         not_box += std::memcmp(pixel(drawn, x, y), box_color, 3) != 0;
       }
@@ -143,8 +143,8 @@ TEST(NumericExtremes, CameraInsideGeometry) {
       EXPECT_EQ(box_color[2], 225) << "0.75 sRGB-encoded";
     } else {  // on a face or a corner: what lies outside the box is background; nothing else
       int other = 0;
-      for (int y = 0; y < kSize; ++y)
-        for (int x = 0; x < kSize; ++x) {
+      for (int y = 0; y < kExtremesSize; ++y)
+        for (int x = 0; x < kExtremesSize; ++x) {
           const uint8_t* p = pixel(drawn, x, y);
           other += !(std::memcmp(p, box_color, 3) == 0 || (p[0] == 255 && p[1] == 0 && p[2] == 0));
         }
@@ -188,7 +188,7 @@ scenes::Scene lit_floor(const std::vector<scenes::Light>& extra) {
 // light, so it goes through the per-pixel lighting).
 TEST(NumericExtremes, LightsOnAndInsideASurface) {
   const rasterizer::Image key_only = render_frame(lit_floor({}), small_frame());
-  ASSERT_GT(pixel(key_only, kSize / 2, kSize / 2)[0], 100) << "the key light lights the floor";
+  ASSERT_GT(pixel(key_only, kExtremesSize / 2, kExtremesSize / 2)[0], 100) << "the key light lights the floor";
   for (glm::vec3 at : {glm::vec3(0, 0, 0), glm::vec3(-10, -10, 0), glm::vec3(0, 0, -0.01f), glm::vec3(3, 2, -1e-6f)}) {
     scenes::Light l;
     l.name = "in the floor";
@@ -204,12 +204,12 @@ TEST(NumericExtremes, CameraOnALight) {
   scenes::Scene s = lit_floor({});
   s.cameras[0].position = s.lights[0].position;
   const rasterizer::Image image = render_frame(s, small_frame());
-  const uint8_t center = pixel(image, kSize / 2, kSize / 2)[0];
-  for (int y = 0; y < kSize; ++y)
-    for (int x = 0; x < kSize; ++x) {
+  const uint8_t center = pixel(image, kExtremesSize / 2, kExtremesSize / 2)[0];
+  for (int y = 0; y < kExtremesSize; ++y)
+    for (int x = 0; x < kExtremesSize; ++x) {
       ASSERT_GT(pixel(image, x, y)[0], 0) << x << " " << y;
       ASSERT_LE(pixel(image, x, y)[0], center) << x << " " << y;
-      ASSERT_EQ(pixel(image, x, y)[0], pixel(image, kSize - 1 - x, y)[0]) << x << " " << y;
+      ASSERT_EQ(pixel(image, x, y)[0], pixel(image, kExtremesSize - 1 - x, y)[0]) << x << " " << y;
     }
 }
 
@@ -262,7 +262,7 @@ TEST(NumericExtremes, HdrOf1e30ThroughToneMappingBloomAndColorCorrection) {
   s.background = glm::vec3(0.05f);
   FrameSettings plain = small_frame();
   const rasterizer::Image toned = render_frame(s, plain);
-  EXPECT_EQ(misplaced(toned), kSize * kSize - 32 * 32) << "inside white, outside the background (not black)";
+  EXPECT_EQ(misplaced(toned), kExtremesSize * kExtremesSize - 32 * 32) << "inside white, outside the background (not black)";
   for (int y = 16; y < 48; ++y)
     for (int x = 16; x < 48; ++x) ASSERT_EQ(pixel(toned, x, y)[0], 255);
   FrameSettings post = plain;
@@ -272,12 +272,12 @@ TEST(NumericExtremes, HdrOf1e30ThroughToneMappingBloomAndColorCorrection) {
   grade.min_falloff = grade.max_falloff = -1.0f;
   s.color_corrections = {grade};
   const rasterizer::Image graded = render_frame(s, post);
-  const uint8_t* white = pixel(graded, kSize / 2, kSize / 2);
+  const uint8_t* white = pixel(graded, kExtremesSize / 2, kExtremesSize / 2);
   for (int y = 16; y < 48; ++y)
     for (int x = 16; x < 48; ++x) ASSERT_EQ(std::memcmp(pixel(graded, x, y), white, 3), 0) << x << " " << y;
   EXPECT_GT(int(white[0]) + white[1] + white[2], 3 * 200) << "the grade's white";
-  for (int y = 0; y < kSize; ++y)
-    for (int x = 0; x < kSize; ++x) ASSERT_GT(int(pixel(graded, x, y)[0]) + pixel(graded, x, y)[1] + pixel(graded, x, y)[2], 0) << x << " " << y;
+  for (int y = 0; y < kExtremesSize; ++y)
+    for (int x = 0; x < kExtremesSize; ++x) ASSERT_GT(int(pixel(graded, x, y)[0]) + pixel(graded, x, y)[1] + pixel(graded, x, y)[2], 0) << x << " " << y;
 }
 
 // Sensible: denormal texels are read as the small numbers they are, filtered between their
@@ -327,7 +327,7 @@ TEST(NumericExtremes, DenormalTexelsInEveryFormat) {
   s.materials[0].base.texture = 0;
   s.materials[0].color = glm::vec4(1e4f, 1e4f, 1e4f, 1.0f);
   const rasterizer::Image frame = render_frame(s, small_frame());
-  EXPECT_NEAR(pixel(frame, kSize / 2, kSize / 2)[0], 89, 1) << "1e-5 x 1e4 = 0.1, sRGB-encoded";
+  EXPECT_NEAR(pixel(frame, kExtremesSize / 2, kExtremesSize / 2)[0], 89, 1) << "1e-5 x 1e4 = 0.1, sRGB-encoded";
 }
 
 }  // namespace

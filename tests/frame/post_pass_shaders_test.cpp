@@ -18,11 +18,11 @@ namespace luxel::frame {
 namespace {
 
 // Not multiples of 4: the bloom's small targets are floor(64 / 4) x floor(44 / 4) = 16 x 11.
-constexpr int kWidth = 64, kHeight = 44;
-constexpr uint64_t kFrame = uint64_t(kWidth) * kHeight, kSmall = 16 * 11;
+constexpr int kPostWidth = 64, kPostHeight = 44;
+constexpr uint64_t kFrame = uint64_t(kPostWidth) * kPostHeight, kSmall = 16 * 11;
 // The histogram's region: the SDK skips int(W x 0.5 x (1 - 0.9)) = int(3.2) = 3 columns and
 // int(H x 0.5 x (1 - 0.85)) = int(3.3) = 3 rows on each side.
-constexpr uint64_t kRegion = (kWidth - 6) * (kHeight - 6);
+constexpr uint64_t kRegion = (kPostWidth - 6) * (kPostHeight - 6);
 
 /// The color ramp with an exposure range (so the histogram runs; from 1.25, so that the square is
 /// drawn by UnlitGeneric, not by the trivial functor of exposure 1) and two global nodes.
@@ -39,7 +39,7 @@ scenes::Scene post_processed() {
 }
 
 FrameSettings every_pass() {
-  FrameSettings f{kWidth, kHeight, 1};
+  FrameSettings f{kPostWidth, kPostHeight, 1};
   f.model = shading::ShaderModel::ps_2_b;
   f.count_shading = true;
   f.bloom = postfx::BloomOptions{};
@@ -103,7 +103,7 @@ TEST(FramePostPassShaders, EveryPostPassListsItsShaderWithThePixelsItShaded) {
   const std::vector<ShaderUse> uses = uses_of(s, stencil);
   ASSERT_GE(uses.size(), 2u);
   EXPECT_GE(uses[1].pixels, kRegion);
-  EXPECT_LE(uses[1].pixels, kRegion + (kWidth - 6) + (kHeight - 6));
+  EXPECT_LE(uses[1].pixels, kRegion + (kPostWidth - 6) + (kPostHeight - 6));
   expect_post_passes(uses, "texkill", uses[1].pixels, shading::ShaderModel::ps_3_0);
 }
 

@@ -17,10 +17,10 @@
 namespace luxel::frame {
 namespace {
 
-constexpr int kSize = 32;
+constexpr int kRendererSize = 32;
 
 rasterizer::Image render(const scenes::Scene& s) {
-  Renderer r(s, {kSize, kSize, 4});
+  Renderer r(s, {kRendererSize, kRendererSize, 4});
   rasterizer::Context ctx(2);
   r.render(ctx);
   return r.image();
@@ -48,7 +48,7 @@ TEST(Renderer, UnlitBaseTextureRoundTripsThroughSrgb) {
   m.base.texture = 0;
   s.materials = {m};
   s.meshes = {square(-1, -1, 1, 1, 0, 0)};
-  expect_everywhere(render(s), 0, kSize, {200, 100, 50}, "decoded on read, encoded on write");
+  expect_everywhere(render(s), 0, kRendererSize, {200, 100, 50}, "decoded on read, encoded on write");
 }
 
 /// A scene lit only by an irradiance volume of one sample and one directional light.
@@ -73,7 +73,7 @@ scenes::Scene lit_by_cube_and_sun(bool half_lambert) {
 }
 
 rasterizer::Image render_as(const scenes::Scene& s, shading::ShaderModel model) {
-  FrameSettings f{kSize, kSize, 4};
+  FrameSettings f{kRendererSize, kRendererSize, 4};
   f.model = model;
   Renderer r(s, f);
   rasterizer::Context ctx(2);
@@ -89,8 +89,8 @@ TEST(Renderer, VertexLitTakesTheAmbientCubeAndTheLight) {
     double expected[3];
     for (int c = 0; c < 3; ++c) expected[c] = 255 * srgb_encode(albedo[c] * (cube[c] + light[c] * term));
     const scenes::Scene s = lit_by_cube_and_sun(half_lambert);
-    expect_everywhere(render_as(s, shading::ShaderModel::ps_3_0), 0, kSize, expected, "ps_3_0");
-    expect_everywhere(render_as(s, shading::ShaderModel::ps_2_b), 0, kSize, expected, "ps_2_b");
+    expect_everywhere(render_as(s, shading::ShaderModel::ps_3_0), 0, kRendererSize, expected, "ps_3_0");
+    expect_everywhere(render_as(s, shading::ShaderModel::ps_2_b), 0, kRendererSize, expected, "ps_2_b");
   }
 }
 
@@ -127,13 +127,13 @@ TEST(Renderer, AmbientFromTheNearestSampleOrTrilinear) {
           sum += (x ? g[0] : 1 - g[0]) * (y ? g[1] : 1 - g[1]) * (z ? g[2] : 1 - g[2]) * side(x, y, z, c);
     trilinear[c] = 255 * srgb_encode(albedo[c] * sum);
   }
-  expect_everywhere(render(s), 0, kSize, nearest, "nearest sample");
-  FrameSettings f{kSize, kSize, 4};
+  expect_everywhere(render(s), 0, kRendererSize, nearest, "nearest sample");
+  FrameSettings f{kRendererSize, kRendererSize, 4};
   f.ambient = AmbientSampling::trilinear;
   Renderer r(s, f);
   rasterizer::Context ctx(2);
   r.render(ctx);
-  expect_everywhere(r.image(), 0, kSize, trilinear, "trilinear");
+  expect_everywhere(r.image(), 0, kRendererSize, trilinear, "trilinear");
   EXPECT_GT(std::abs(nearest[1] - trilinear[1]), 3.0) << "the two must differ for the test to mean anything";
 }
 
@@ -220,15 +220,15 @@ TEST(Renderer, LightmappedReadsTheFlatMapOrWeighsTheBasisMaps) {
     expected_bump[c] = 255 * srgb_encode(tint[c] * weighted / sum);
   }
   const rasterizer::Image image30 = render_as(s, shading::ShaderModel::ps_3_0);
-  expect_everywhere(image30, 0, kSize / 2, expected_flat, "flat lightmap");
-  expect_everywhere(image30, kSize / 2, kSize, expected_bump, "RNM");
+  expect_everywhere(image30, 0, kRendererSize / 2, expected_flat, "flat lightmap");
+  expect_everywhere(image30, kRendererSize / 2, kRendererSize, expected_bump, "RNM");
   s.lightmaps.reset();
-  EXPECT_THROW(Renderer(s, {kSize, kSize, 4}), std::invalid_argument) << "no lightmaps: refused, not drawn black";
+  EXPECT_THROW(Renderer(s, {kRendererSize, kRendererSize, 4}), std::invalid_argument) << "no lightmaps: refused, not drawn black";
 }
 
 TEST(Renderer, CountsThePixelsEachComboShades) {
   scenes::Scene s = lit_by_cube_and_sun(true);
-  FrameSettings f{kSize, kSize, 4};
+  FrameSettings f{kRendererSize, kRendererSize, 4};
   f.count_shading = true;
   f.exposure = 1.0f;  // no histogram pass: the 3D draw alone (post_pass_shaders_test.cpp has the others)
   Renderer r(s, f);
@@ -239,14 +239,14 @@ TEST(Renderer, CountsThePixelsEachComboShades) {
   EXPECT_EQ(r.shader_uses()[0].combo, "2 lights");
   // Every pixel once, and the pixels on the diagonal between the square's two triangles (samples
   // in both) once per triangle: at most one more per row.
-  EXPECT_GE(r.shader_uses()[0].pixels, uint64_t(kSize) * kSize);
-  EXPECT_LE(r.shader_uses()[0].pixels, uint64_t(kSize) * kSize + kSize);
+  EXPECT_GE(r.shader_uses()[0].pixels, uint64_t(kRendererSize) * kRendererSize);
+  EXPECT_LE(r.shader_uses()[0].pixels, uint64_t(kRendererSize) * kRendererSize + kRendererSize);
   EXPECT_GT(r.shader_uses()[0].slots, 10);
 }
 
 TEST(Renderer, TimesThePassesTheSceneHas) {
   scenes::Scene s = lit_by_cube_and_sun(true);
-  FrameSettings f{kSize, kSize, 4};
+  FrameSettings f{kRendererSize, kRendererSize, 4};
   rasterizer::Context ctx(2);
   Renderer untimed(s, f);
   untimed.render(ctx);
@@ -299,8 +299,8 @@ TEST(Renderer, LinearWriteAndTheBackground) {
   s.meshes = {square(-1, -1, 0, 1, 0, 0)};  // the left half
   s.meshes[0].colors.assign(4, {0.6f, 0.3f, 0.1f, 1.0f});
   const rasterizer::Image image = render(s);
-  expect_everywhere(image, 0, kSize / 2, {255 * 0.3, 255 * 0.3, 255 * 0.1}, "written as it is");
-  expect_everywhere(image, kSize / 2, kSize, {255 * srgb_encode(0.2), 255 * srgb_encode(0.05), 255 * srgb_encode(0.6)},
+  expect_everywhere(image, 0, kRendererSize / 2, {255 * 0.3, 255 * 0.3, 255 * 0.1}, "written as it is");
+  expect_everywhere(image, kRendererSize / 2, kRendererSize, {255 * srgb_encode(0.2), 255 * srgb_encode(0.05), 255 * srgb_encode(0.6)},
                     "the background, encoded");
 }
 
@@ -314,8 +314,8 @@ TEST(Renderer, SingleSidedMaterialsCullTheirBackFaces) {
   s.materials = {one_sided, two_sided};
   s.meshes = {square(-1, -1, 0, 1, 0, 0, true), square(0, -1, 1, 1, 0, 1, true)};  // both seen from behind
   const rasterizer::Image image = render(s);
-  expect_everywhere(image, 0, kSize / 2, {0, 0, 0}, "culled");
-  expect_everywhere(image, kSize / 2, kSize, {255, 255, 255}, "double-sided");
+  expect_everywhere(image, 0, kRendererSize / 2, {0, 0, 0}, "culled");
+  expect_everywhere(image, kRendererSize / 2, kRendererSize, {255, 255, 255}, "double-sided");
 }
 
 TEST(Renderer, TheNearerSurfaceWinsWhateverTheOrder) {
@@ -326,9 +326,9 @@ TEST(Renderer, TheNearerSurfaceWinsWhateverTheOrder) {
   blue.color = {0, 0, 1, 1};
   s.materials = {red, blue};
   s.meshes = {square(-1, -1, 1, 1, 5, 0), square(-1, -1, 1, 1, 2, 1)};  // red nearer, drawn first
-  expect_everywhere(render(s), 0, kSize, {255, 0, 0}, "nearer first");
+  expect_everywhere(render(s), 0, kRendererSize, {255, 0, 0}, "nearer first");
   std::swap(s.meshes[0], s.meshes[1]);
-  expect_everywhere(render(s), 0, kSize, {255, 0, 0}, "nearer last");
+  expect_everywhere(render(s), 0, kRendererSize, {255, 0, 0}, "nearer last");
 }
 
 }  // namespace

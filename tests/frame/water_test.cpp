@@ -30,7 +30,7 @@
 namespace luxel::frame {
 namespace {
 
-constexpr int kWidth = 96, kHeight = 64;
+constexpr int kWaterWidth = 96, kWaterHeight = 64;
 constexpr glm::dvec3 kEye{0, -100, 50}, kTarget{0, 20, 0};
 constexpr double kNear = 1, kFar = 20000, kFov = 1.0;
 constexpr double kFloorZ = -40;
@@ -58,7 +58,7 @@ double gamma_to_linear(int i) { return std::pow(i / 255.0, 2.2); }
 double lerp(double a, double b, double t) { return a + (b - a) * t; }
 
 glm::dmat4 camera_view() { return glm::lookAtRH(kEye, kTarget, glm::dvec3(0, 0, 1)); }
-glm::dmat4 camera_projection() { return glm::perspectiveRH_ZO(kFov, double(kWidth) / kHeight, kNear, kFar); }
+glm::dmat4 camera_projection() { return glm::perspectiveRH_ZO(kFov, double(kWaterWidth) / kWaterHeight, kNear, kFar); }
 
 struct Pixel {
   int x, y;
@@ -67,14 +67,14 @@ struct Pixel {
 /// The pixel whose area a world point projects into.
 Pixel pixel_of(const glm::dvec3& p) {
   const glm::dvec4 c = camera_projection() * camera_view() * glm::dvec4(p, 1.0);
-  return {static_cast<int>(std::floor((c.x / c.w + 1) * 0.5 * kWidth)),
-          static_cast<int>(std::floor((1 - c.y / c.w) * 0.5 * kHeight))};
+  return {static_cast<int>(std::floor((c.x / c.w + 1) * 0.5 * kWaterWidth)),
+          static_cast<int>(std::floor((1 - c.y / c.w) * 0.5 * kWaterHeight))};
 }
 
 /// Where the ray through a pixel's center meets the plane z = `z`.
 glm::dvec3 hit_at_height(const Pixel& px, double z) {
   const glm::dmat4 inverse = glm::inverse(camera_projection() * camera_view());
-  const double nx = (px.x + 0.5) / kWidth * 2 - 1, ny = 1 - (px.y + 0.5) / kHeight * 2;
+  const double nx = (px.x + 0.5) / kWaterWidth * 2 - 1, ny = 1 - (px.y + 0.5) / kWaterHeight * 2;
   const glm::dvec4 far = inverse * glm::dvec4(nx, ny, 1, 1);
   const glm::dvec3 dir = glm::normalize(glm::dvec3(far) / far.w - kEye);
   return kEye + dir * ((z - kEye.z) / dir.z);
@@ -188,8 +188,8 @@ scenes::Scene reflecting_a_post(const glm::vec3& post) {
 
 FrameSettings settings(float exposure = 1.0f) {
   FrameSettings f;
-  f.width = kWidth;
-  f.height = kHeight;
+  f.width = kWaterWidth;
+  f.height = kWaterHeight;
   f.samples = 4;
   f.exposure = exposure;
   return f;
@@ -197,7 +197,7 @@ FrameSettings settings(float exposure = 1.0f) {
 
 void expect_pixel(const rasterizer::Image& image, const Pixel& p, const double (&linear)[3], int tolerance,
                   const std::string& what) {
-  ASSERT_TRUE(p.x >= 0 && p.x < kWidth && p.y >= 0 && p.y < kHeight) << what << ": off screen";
+  ASSERT_TRUE(p.x >= 0 && p.x < kWaterWidth && p.y >= 0 && p.y < kWaterHeight) << what << ": off screen";
   for (int c = 0; c < 3; ++c)
     EXPECT_NEAR(image.pixel(p.x, p.y)[c], srgb8(linear[c]), tolerance)
         << what << ", channel " << c << " at (" << p.x << ", " << p.y << ")";
@@ -441,12 +441,14 @@ TEST(Water, ViewsAreSquareTargetsOfTheirOwnSize) {
     const rasterizer::Image image = render_frame(s, f);
     const int y = pixel_of({30, 150, -20}).y;
     int between = 0, at_full = 0;
-    for (int x = 0; x < kWidth; ++x) {
+    for (int x = 0; x < kWaterWidth; ++x) {
       const int r = image.pixel(x, y)[0];
       if (r > 2 && r < full - 2) ++between;
       if (std::abs(r - full) <= 2) ++at_full;
     }
-    if (side >= 64) EXPECT_GT(at_full, 0) << "the reflection's color is reached at " << side << " texels a side";
+    if (side >= 64) {
+      EXPECT_GT(at_full, 0) << "the reflection's color is reached at " << side << " texels a side";
+    }
     return between;
   };
   EXPECT_LE(ramp_pixels(1024), 2);

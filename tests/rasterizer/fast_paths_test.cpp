@@ -27,7 +27,7 @@ Context make_context(FastPaths paths) {
 }
 
 /// Bytes a scene produced, and the stats of its draws (compared only where a test says so).
-struct Output {
+struct PathOutput {
   std::vector<uint8_t> bytes;
   DrawStats stats;
   template <class T>
@@ -37,11 +37,11 @@ struct Output {
   }
   void add(uint64_t v) { add(std::vector<uint64_t>{v}); }
 };
-using SceneFn = std::function<void(Context&, Output&)>;
+using PathSceneFn = std::function<void(Context&, PathOutput&)>;
 
 /// The pipeline oracle's random scenes: depth functions, stencil, blending, discard, shader
 /// depth, queries, 1 to 8 samples.
-void oracle_scenes(Context& ctx, Output& out) {
+void oracle_scenes(Context& ctx, PathOutput& out) {
   for (uint32_t seed = 0; seed < uint32_t(budget(24, 8)); ++seed) {
     const SceneOutput s = render_scene(ctx, random_scene(4242 + seed, 1 << (seed % 4)));
     out.add(s.color);
@@ -52,7 +52,7 @@ void oracle_scenes(Context& ctx, Output& out) {
 }
 
 /// Random triangles of every kind (small, large, wide-edged, slivers, clipped), one draw each.
-void coverage_scene(Context& ctx, Output& out) {
+void path_coverage_scene(Context& ctx, PathOutput& out) {
   const CoverageConfig base = coverage_configs(false).front();
   for (int S : {1, 4, 8}) {
     TriangleGenerator gen(uint32_t(900 + S), base);
@@ -70,7 +70,7 @@ void coverage_scene(Context& ctx, Output& out) {
 }
 
 /// Indexed meshes with shared vertices (the vertex cache), perspective and affine ones.
-void mesh_scene(Context& ctx, Output& out) {
+void mesh_scene(Context& ctx, PathOutput& out) {
   const ViewportMap map(Viewport{}, 128, 64);
   const ScreenRect r{3.30078125, 2.099609375, 124.7001953125, 61.900390625};
   std::mt19937 rng(12);
@@ -99,7 +99,7 @@ struct TrivialPS {
   static constexpr bool kCanDiscard = false, kWritesDepth = false, kTrivial = true;
   void operator()(const PixelInput<1>& in, PixelOutput& out) const { out.color = in.varyings[0]; }
 };
-void trivial_depth_scene(Context& ctx, Output& out) {
+void trivial_depth_scene(Context& ctx, PathOutput& out) {
   const int W = 150, H = 90, S = 4;
   std::mt19937 rng(77);
   std::uniform_real_distribution<float> u(0.0f, 1.0f);
@@ -143,9 +143,9 @@ void trivial_depth_scene(Context& ctx, Output& out) {
   }
 }
 
-Output render(const SceneFn& scene, FastPaths paths) {
+PathOutput render(const PathSceneFn& scene, FastPaths paths) {
   Context ctx = make_context(paths);
-  Output out;
+  PathOutput out;
   ctx.reset_stats();
   scene(ctx, out);
   ctx.flush();
@@ -153,8 +153,8 @@ Output render(const SceneFn& scene, FastPaths paths) {
   return out;
 }
 
-void check_switches(const char* name, const SceneFn& scene) {
-  const Output all_on = render(scene, FastPaths());
+void check_switches(const char* name, const PathSceneFn& scene) {
+  const PathOutput all_on = render(scene, FastPaths());
   ASSERT_FALSE(all_on.bytes.empty());
   EXPECT_TRUE(render(scene, FastPaths::none()).bytes == all_on.bytes) << name << ": all fast paths off";
   for (const FastPathName& p : kFastPathNames)
@@ -162,7 +162,7 @@ void check_switches(const char* name, const SceneFn& scene) {
 }
 
 TEST(FastPaths, OracleScenesKeepTheirBytes) { check_switches("oracle scenes", oracle_scenes); }
-TEST(FastPaths, CoverageKeepsItsBytes) { check_switches("coverage", coverage_scene); }
+TEST(FastPaths, CoverageKeepsItsBytes) { check_switches("coverage", path_coverage_scene); }
 TEST(FastPaths, MeshesKeepTheirBytes) { check_switches("meshes", mesh_scene); }
 TEST(FastPaths, TrivialShaderDepthPathsKeepTheirBytes) { check_switches("trivial depth", trivial_depth_scene); }
 
@@ -191,17 +191,17 @@ TEST(FastPaths, AllOffMatchesTheOracles) {
 // Each switch turns off the path it names: the path's counter drops to zero (or the general
 // path's rises).
 TEST(FastPaths, EachSwitchTurnsItsPathOff) {
-  auto stats = [](const SceneFn& scene, FastPaths paths) { return render(scene, paths).stats; };
-  const DrawStats on = stats(coverage_scene, FastPaths());
+  auto stats = [](const PathSceneFn& scene, FastPaths paths) { return render(scene, paths).stats; };
+  const DrawStats on = stats(path_coverage_scene, FastPaths());
   ASSERT_GT(on.small_walks, 0u);
   ASSERT_GT(on.blocks_full, 0u);
   ASSERT_GT(on.stamps_full, 0u);
-  EXPECT_EQ(stats(coverage_scene, FastPaths::all_but(FastPath::SmallTriangleWalk)).small_walks, 0u);
-  const DrawStats wide = stats(coverage_scene, FastPaths::all_but(FastPath::NarrowEdges));
+  EXPECT_EQ(stats(path_coverage_scene, FastPaths::all_but(FastPath::SmallTriangleWalk)).small_walks, 0u);
+  const DrawStats wide = stats(path_coverage_scene, FastPaths::all_but(FastPath::NarrowEdges));
   EXPECT_EQ(wide.small_walks, 0u);  // the small walk is a 32-bit path
   EXPECT_EQ(wide.stamps_wide_edges, wide.stamps_partial);
   EXPECT_LT(on.stamps_wide_edges, on.stamps_partial);
-  const DrawStats no_full = stats(coverage_scene, FastPaths::all_but(FastPath::FullCoverage));
+  const DrawStats no_full = stats(path_coverage_scene, FastPaths::all_but(FastPath::FullCoverage));
   EXPECT_EQ(no_full.blocks_full, 0u);
   EXPECT_EQ(no_full.stamps_full, 0u);
   EXPECT_EQ(no_full.stamps_shaded, on.stamps_shaded);

@@ -14,16 +14,9 @@
 namespace luxel::scenes::test {
 namespace {
 
-const double k = double(kInchesPerMeter);
 
 /// glTF meters -> Source inches, each component rounded once from double.
-glm::vec3 source(double x, double y, double z) { return glm::vec3(float(x * k), float(-z * k), float(y * k)); }
 
-GltfImportOptions no_defaults() {
-  GltfImportOptions o;
-  o.default_camera = o.default_lights = false;
-  return o;
-}
 
 std::vector<uint8_t> vertex_bytes(const Mesh& m) {
   std::vector<uint8_t> b(m.positions.size() * sizeof(glm::vec3));
@@ -33,7 +26,7 @@ std::vector<uint8_t> vertex_bytes(const Mesh& m) {
 
 // The same box in three containers: .gltf + .bin + .png, .glb, and base64 data URIs. Its root
 // node's matrix turns the box's Z-up into glTF's Y-up, which luxel's Y-up -> Z-up undoes: the
-// Source positions are the file's values times k, the cube [-0.5, 0.5]^3 m.
+// Source positions are the file's values times kInches, the cube [-0.5, 0.5]^3 m.
 TEST(GltfAssets, BoxTexturedInThreeContainers) {
   const Scene a = load_gltf(asset("box-textured/glTF/BoxTextured.gltf"), no_defaults());
   const Scene b = load_gltf(asset("box-textured/glTF-Binary/BoxTextured.glb"), no_defaults());
@@ -46,7 +39,7 @@ TEST(GltfAssets, BoxTexturedInThreeContainers) {
     EXPECT_EQ(m.uv0.size(), 24u);
     EXPECT_EQ(m.tangents.size(), 24u) << "generated: the file has none";
     const Bounds bounds = bounds_of(*s);
-    const float h = float(0.5 * k);
+    const float h = float(0.5 * kInches);
     EXPECT_EQ(bounds.min, glm::vec3(-h)) << s->name;
     EXPECT_EQ(bounds.max, glm::vec3(h)) << s->name;
     ASSERT_EQ(s->materials.size(), 1u);
@@ -86,7 +79,7 @@ TEST(GltfAssets, BoxVertexColors) {
   for (size_t v = 0; v < 24; ++v) {
     const glm::vec4 c = m.colors[v];
     EXPECT_EQ(c.a, 1.0f);
-    EXPECT_EQ(m.positions[v], source(c.r, c.g, c.b)) << "vertex " << v;
+    EXPECT_EQ(m.positions[v], source_inches(c.r, c.g, c.b)) << "vertex " << v;
   }
 }
 
@@ -104,12 +97,12 @@ TEST(GltfAssets, SimpleSparseAccessor) {
     if (std::find(used.begin(), used.end(), p) == used.end()) used.push_back(p);
   }
   auto has = [&](glm::vec3 p) { return std::find(used.begin(), used.end(), p) != used.end(); };
-  EXPECT_TRUE(has(source(1, 2, 0)));
-  EXPECT_TRUE(has(source(3, 3, 0)));
-  EXPECT_TRUE(has(source(5, 4, 0)));
-  EXPECT_FALSE(has(source(1, 1, 0))) << "vertex 8 before substitution";
-  EXPECT_TRUE(has(source(2, 1, 0))) << "vertex 9 is not substituted";
-  EXPECT_TRUE(has(source(6, 0, 0)));
+  EXPECT_TRUE(has(source_inches(1, 2, 0)));
+  EXPECT_TRUE(has(source_inches(3, 3, 0)));
+  EXPECT_TRUE(has(source_inches(5, 4, 0)));
+  EXPECT_FALSE(has(source_inches(1, 1, 0))) << "vertex 8 before substitution";
+  EXPECT_TRUE(has(source_inches(2, 1, 0))) << "vertex 9 is not substituted";
+  EXPECT_TRUE(has(source_inches(6, 0, 0)));
   EXPECT_EQ(used.size(), 14u);
 }
 
@@ -202,8 +195,8 @@ TEST(GltfAssets, MeshPrimitiveModes) {
       EXPECT_LT(n.y, 0.0) << name << ": triangle " << t / 3 << " faces away (glTF +Z is Source -Y)";
       area += 0.5 * glm::length(n);
     }
-    EXPECT_NEAR(area, k * k, 1e-2) << name;
-    EXPECT_EQ(bounds_of(s).min, source(-0.5, -0.5, 0)) << name;
+    EXPECT_NEAR(area, kInches * kInches, 1e-2) << name;
+    EXPECT_EQ(bounds_of(s).min, source_inches(-0.5, -0.5, 0)) << name;
     // 11-13 have 32-bit indices (kept), 14 8-bit (widened to 16), the rest 16-bit or none.
     EXPECT_EQ(std::holds_alternative<std::vector<uint32_t>>(m.indices), i >= 11 && i <= 13) << name;
   }

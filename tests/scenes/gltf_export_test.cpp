@@ -254,11 +254,6 @@ Scene hand_built() {
   return s;
 }
 
-GltfImportOptions no_defaults() {
-  GltfImportOptions o;
-  o.default_camera = o.default_lights = false;
-  return o;
-}
 
 const char* kAssets[] = {
     "box-textured/glTF/BoxTextured.gltf",

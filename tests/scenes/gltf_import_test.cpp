@@ -15,10 +15,7 @@
 namespace luxel::scenes::test {
 namespace {
 
-const double k = double(kInchesPerMeter);
 
-/// glTF meters (x, y, z) -> Source inches (x, -z, y) * k, each component rounded once from double.
-glm::vec3 source(double x, double y, double z) { return glm::vec3(float(x * k), float(-z * k), float(y * k)); }
 
 void expect_near(glm::vec3 a, glm::vec3 b, float tolerance, const char* what) {
   EXPECT_NEAR(a.x, b.x, tolerance) << what;
@@ -26,11 +23,6 @@ void expect_near(glm::vec3 a, glm::vec3 b, float tolerance, const char* what) {
   EXPECT_NEAR(a.z, b.z, tolerance) << what;
 }
 
-GltfImportOptions no_defaults() {
-  GltfImportOptions o;
-  o.default_camera = o.default_lights = false;
-  return o;
-}
 
 TEST(GltfImport, MetersAndYUpBecomeInchesAndZUp) {
   TempDir dir;
@@ -42,18 +34,18 @@ TEST(GltfImport, MetersAndYUpBecomeInchesAndZUp) {
   const Mesh& m = s.meshes[0];
   ASSERT_EQ(m.positions.size(), 3u);
   // (1, 2, 3) m: 1 m right, 2 m up, 3 m towards the viewer = (x, -z, y) in Source.
-  EXPECT_EQ(m.positions[0], source(1, 2, 3));
-  EXPECT_EQ(m.positions[1], source(-1, 0.5, 0));
-  EXPECT_EQ(m.positions[2], source(0, 0, -2));
-  EXPECT_EQ(m.positions[2], glm::vec3(0.0f, float(2 * k), 0.0f));
+  EXPECT_EQ(m.positions[0], source_inches(1, 2, 3));
+  EXPECT_EQ(m.positions[1], source_inches(-1, 0.5, 0));
+  EXPECT_EQ(m.positions[2], source_inches(0, 0, -2));
+  EXPECT_EQ(m.positions[2], glm::vec3(0.0f, float(2 * kInches), 0.0f));
   EXPECT_EQ(s.name, dir.file("scene.gltf"));
 }
 
 // Parent: matrix translating by (1, 0, 0). Child: TRS with rotation 90 degrees about +Y
 // (quaternion (0, sin 45, 0, cos 45)) and scale (2, 1, 1).
 //  vertex (1, 0, 0): scale -> (2, 0, 0); R_y(90): (x, y, z) -> (z, y, -x) gives (0, 0, -2);
-//  translate -> (1, 0, -2) m -> Source (1, 2, 0) * k.
-//  vertex (0, 1, 0): -> (0, 1, 0) -> (0, 1, 0) -> (1, 1, 0) -> Source (1, 0, 1) * k.
+//  translate -> (1, 0, -2) m -> Source (1, 2, 0) * kInches.
+//  vertex (0, 1, 0): -> (0, 1, 0) -> (0, 1, 0) -> (1, 1, 0) -> Source (1, 0, 1) * kInches.
 //  normal (1, 1, 0) / sqrt 2: the inverse transpose of scale (2, 1, 1) is (1/2, 1, 1):
 //  (0.5, 1, 0) / |.| = (1, 2, 0) / sqrt 5; R_y(90) -> (0, 2, -1) / sqrt 5 -> Source (0, 1, 2) / sqrt 5.
 TEST(GltfImport, NodeHierarchyFlattensWithInverseTransposeNormals) {
@@ -69,8 +61,8 @@ TEST(GltfImport, NodeHierarchyFlattensWithInverseTransposeNormals) {
   ASSERT_EQ(s.meshes.size(), 1u);
   const Mesh& m = s.meshes[0];
   const float tol = 1e-4f;
-  expect_near(m.positions[0], glm::vec3(float(k), float(2 * k), 0), tol, "vertex 0");
-  expect_near(m.positions[1], glm::vec3(float(k), 0, float(k)), tol, "vertex 1");
+  expect_near(m.positions[0], glm::vec3(float(kInches), float(2 * kInches), 0), tol, "vertex 0");
+  expect_near(m.positions[1], glm::vec3(float(kInches), 0, float(kInches)), tol, "vertex 1");
   const float s5 = float(std::sqrt(5.0));
   expect_near(m.normals[0], glm::vec3(0, 1 / s5, 2 / s5), 1e-6f, "normal");
   // A node with a mesh is a model; its centroid is the mean of its world positions.
@@ -123,7 +115,7 @@ TEST(GltfImport, EveryIndexTypeAndNoIndices) {
     for (size_t i = 0; i < 3 * m.triangle_count(); ++i) c.push_back(m.positions[m.vertex_of_corner(i)]);
     return c;
   };
-  const glm::vec3 p0 = source(0, 0, 0), p1 = source(1, 0, 0), p2 = source(0, 1, 0), p3 = source(1, 1, 0);
+  const glm::vec3 p0 = source_inches(0, 0, 0), p1 = source_inches(1, 0, 0), p2 = source_inches(0, 1, 0), p3 = source_inches(1, 1, 0);
   EXPECT_TRUE(std::holds_alternative<std::vector<uint16_t>>(s.meshes[0].indices)) << "8-bit widens to 16";
   EXPECT_EQ(corners(s.meshes[0]), (std::vector<glm::vec3>{p0, p1, p2, p2, p1, p3}));
   EXPECT_TRUE(std::holds_alternative<std::vector<uint16_t>>(s.meshes[1].indices));
@@ -321,7 +313,7 @@ TEST(GltfImport, IndicesThatAreNotIntegersAreNamed) {
 }
 
 // KHR_lights_punctual: a point light of 10 cd, color (1, 0.5, 0.25), 2 m up. At 50 inches
-// (50 / k m) glTF gives 10 / (50 / k)^2 = 10 k^2 / 2500 per unit color; Source gives
+// (50 / kInches m) glTF gives 10 / (50 / kInches)^2 = 10 kInches^2 / 2500 per unit color; Source gives
 // color / (quadratic d^2) with d = 50.
 TEST(GltfImport, PunctualLightsKeepTheirInverseSquareFalloff) {
   TempDir dir;
@@ -340,13 +332,13 @@ TEST(GltfImport, PunctualLightsKeepTheirInverseSquareFalloff) {
   ASSERT_EQ(s.lights.size(), 3u);
   const Light& p = s.lights[0];
   EXPECT_EQ(p.type, LightType::point);
-  expect_near(p.position, glm::vec3(0, 0, float(2 * k)), 1e-4f, "point position");
+  expect_near(p.position, glm::vec3(0, 0, float(2 * kInches)), 1e-4f, "point position");
   const double d = 50.0;
-  const double gltf_at_d = 10.0 / ((d / k) * (d / k));
+  const double gltf_at_d = 10.0 / ((d / kInches) * (d / kInches));
   const double source_at_d = p.color.r / (p.constant + p.linear * d + p.quadratic * d * d);
   EXPECT_NEAR(source_at_d / gltf_at_d, 1.0, 1e-5);
   EXPECT_FLOAT_EQ(p.color.g / p.color.r, 0.5f);
-  EXPECT_FLOAT_EQ(p.range, float(3.0 * k));
+  EXPECT_FLOAT_EQ(p.range, float(3.0 * kInches));
   const Light& spot = s.lights[1];
   EXPECT_EQ(spot.type, LightType::spot);
   EXPECT_FLOAT_EQ(spot.inner_cone, 0.2f);
@@ -371,21 +363,21 @@ TEST(GltfImport, CamerasFirstByDefaultOrAsAsked) {
   const Camera& c = first.cameras[0];
   EXPECT_EQ(c.name, "wide");
   EXPECT_EQ(c.projection, Projection::perspective);
-  expect_near(c.position, source(0, 1, 5), 1e-4f, "position");
+  expect_near(c.position, source_inches(0, 1, 5), 1e-4f, "position");
   // Looking down glTF -Z = Source +Y.
   expect_near(glm::normalize(c.target - c.position), glm::vec3(0, 1, 0), 1e-6f, "forward");
   expect_near(c.up, glm::vec3(0, 0, 1), 1e-6f, "up");
   EXPECT_FLOAT_EQ(c.vertical_fov, 1.2f);
   EXPECT_FLOAT_EQ(c.aspect, 1.5f);
-  EXPECT_NEAR(c.near_plane, 0.1 * k, 1e-4);
-  EXPECT_NEAR(c.far_plane, 100 * k, 1e-2);
+  EXPECT_NEAR(c.near_plane, 0.1 * kInches, 1e-4);
+  EXPECT_NEAR(c.far_plane, 100 * kInches, 1e-2);
   GltfImportOptions o = no_defaults();
   o.camera = 1;
   const Scene second = load_gltf(path, o);
   const Camera& plan = second.cameras[0];
   EXPECT_EQ(plan.name, "plan");
   EXPECT_EQ(plan.projection, Projection::orthographic);
-  EXPECT_NEAR(plan.ortho_height, 4.0 * k, 1e-3);  // 2 x ymag
+  EXPECT_NEAR(plan.ortho_height, 4.0 * kInches, 1e-3);  // 2 x ymag
   EXPECT_FLOAT_EQ(plan.aspect, 2.0f);
   expect_near(glm::normalize(plan.target - plan.position), glm::vec3(0, 0, -1), 1e-6f, "looks down");
   EXPECT_EQ(second.cameras[1].name, "wide");
@@ -449,11 +441,11 @@ TEST(GltfImport, TranslationAnimationsMoveModels) {
     ASSERT_EQ(s.models.size(), 1u);
     const std::vector<ModelKey>& path = s.models[0].path;
     ASSERT_EQ(path.size(), 3u) << interpolation;
-    const float k = 2.0f / 0.0254f;  // the parent's scale, inches per meter
+    const float parent_scale = 2.0f / 0.0254f;  // inches per meter
     EXPECT_EQ(path[0].time, 0.5f);
     EXPECT_EQ(path[2].time, 4.0f);
     expect_near(path[0].offset, glm::vec3(0.0f), 1e-4f, "rest");
-    expect_near(path[1].offset, glm::vec3(0.0f, 3.0f * k, 2.0f * k), 1e-2f, "moved");
+    expect_near(path[1].offset, glm::vec3(0.0f, 3.0f * parent_scale, 2.0f * parent_scale), 1e-2f, "moved");
     expect_near(path[2].offset, glm::vec3(0.0f), 1e-4f, "back");
   }
   // A channel whose times go back is one line naming it.

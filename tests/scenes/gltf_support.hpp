@@ -18,6 +18,22 @@
 namespace luxel::scenes::test {
 
 namespace fs = std::filesystem;
+
+/// Source inches per glTF meter.
+inline constexpr double kInches = double(kInchesPerMeter);
+
+/// glTF meters (x, y, z) -> Source inches (x, -z, y) * kInches, each component rounded once from
+/// double.
+inline glm::vec3 source_inches(double x, double y, double z) {
+  return glm::vec3(float(x * kInches), float(-z * kInches), float(y * kInches));
+}
+
+/// Import options that add no camera and no lights of their own.
+inline GltfImportOptions no_defaults() {
+  GltfImportOptions o;
+  o.default_camera = o.default_lights = false;
+  return o;
+}
 using json = nlohmann::json;
 
 /// The copied-in assets (tests/data/gltf, see its SOURCES.md).

@@ -70,7 +70,7 @@ TEST(MemoryLimit, ARefusalIsOneLineNamingWhatAndHowMuch) {
 }
 
 /// A triangle with 16-bit indices, everything in one buffer.
-GltfBuilder triangle() {
+GltfBuilder indexed_triangle() {
   GltfBuilder b;
   const int pos = b.add_positions({0, 0, 0, 1, 0, 0, 0, 1, 0});
   const int idx = b.add_accessor(std::vector<uint16_t>{0, 1, 2}, 5123, "SCALAR", 1);
@@ -83,7 +83,7 @@ GltfBuilder triangle() {
 // limit, loaded at the default.
 TEST(MemoryLimit, GltfGeometryIsRefusedFromItsCounts) {
   TempDir dir;
-  GltfBuilder b = triangle();
+  GltfBuilder b = indexed_triangle();
   b.doc["accessors"].push_back({{"componentType", 5126}, {"count", 3u << 18}, {"type", "VEC3"}});
   b.doc["accessors"].push_back({{"componentType", 5126}, {"count", 3u << 18}, {"type", "VEC3"}});
   b.add_node({{"mesh", b.add_mesh({{"POSITION", 2}, {"NORMAL", 3}})}});
@@ -110,7 +110,7 @@ TEST(MemoryLimit, GltfImagesAndImageFilesAreRefusedFromTheirHeaders) {
     EXPECT_EQ(std::string(e.what()), dir.file("big.png") + ": needs about 8 MiB (a 1024x1024 8-bit image), beyond the memory "
                                                             "limit of 4 MiB (raise it with --memory-limit or LUXEL_MEMORY_LIMIT)");
   }
-  GltfBuilder b = triangle();
+  GltfBuilder b = indexed_triangle();
   b.doc["images"] = {{{"uri", "big.png"}}};
   b.doc["textures"] = {{{"source", 0}}};
   b.doc["materials"] = {{{"pbrMetallicRoughness", {{"baseColorTexture", {{"index", 0}}}}}}};

@@ -19,8 +19,8 @@ class Intrinsics : public ::testing::Test {};
 using NumericLanes = ::testing::Types<float, simd::Float>;
 TYPED_TEST_SUITE(Intrinsics, NumericLanes);
 
-constexpr float kInf = std::numeric_limits<float>::infinity();
-constexpr float kNaN = std::numeric_limits<float>::quiet_NaN();
+using testing::kInf;
+using testing::kNaN;
 
 /// Every lane of `v` equals `expected` exactly (NaN matches NaN).
 template <class L>

@@ -23,8 +23,8 @@ namespace {
 
 using testing::lane_of;
 
-constexpr float kInf = std::numeric_limits<float>::infinity();
-constexpr float kNaN = std::numeric_limits<float>::quiet_NaN();
+using testing::kInf;
+using testing::kNaN;
 
 /// Values every operand draws from besides random ones.
 const std::vector<float>& hard_values() {
