@@ -57,14 +57,17 @@ uint64_t count_in_range(rasterizer::Context& ctx, rasterizer::DepthStencilTarget
   uint64_t in_range = 0;
   counted_draw<Test>(tally, C.name(), shading::source::measure_luminance_range<C>, [&](std::atomic<uint64_t>* pixels) {
     rasterizer::OcclusionQuery query;
-    // The engine clears the stencil at the start of each frame; the target's samples are not
-    // needed after the count, so they live in tile memory (rasterizer/framebuffer.hpp).
-    rasterizer::clear_depth_stencil(ctx, target, 1.0f, 0);
+    // The target's samples are not needed after the count, so they live in tile memory
+    // (rasterizer/framebuffer.hpp). The engine clears the stencil at the start of each frame,
+    // which the stencil method's counting draw reads; the direct query's draw tests neither depth
+    // nor stencil, so its target's samples are left undefined rather than filled.
     if (count == HistogramCount::direct_query) {
+      rasterizer::invalidate(ctx, target);
       ctx.begin_query(query);
       region.draw(ctx, target, luminance_range_pipeline_state(C.reject, LuminancePass::query), Test{&params, pixels});
       ctx.end_query();
     } else {
+      rasterizer::clear_depth_stencil(ctx, target, 1.0f, 0);
       region.draw(ctx, target, luminance_range_pipeline_state(C.reject, LuminancePass::stencil_mark), Test{&params, pixels});
       ctx.begin_query(query);
       region.draw(ctx, target, luminance_range_pipeline_state(C.reject, LuminancePass::stencil_count), NoPixelWrite{});

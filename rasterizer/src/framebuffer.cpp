@@ -237,6 +237,11 @@ void clear_depth(Context& ctx, DepthStencilTarget& target, float depth, const Sc
   record_depth_clear(ctx, target, depth, std::nullopt, region);
 }
 
+void invalidate(Context& ctx, DepthStencilTarget& target) {
+  queue_for(ctx, target.layout());
+  ctx.refer(target, Context::Access::whole_clear);
+}
+
 void load_image(Context& ctx, const Image& image, ColorTarget& target) {
   if (image.width != target.width() || image.height != target.height()) {
     throw std::invalid_argument("load_image: a " + std::to_string(image.width) + "x" + std::to_string(image.height) +

@@ -223,5 +223,34 @@ TEST(TileMemory, ADiscardOutlivesTheFlushesTheContextMakes) {
   EXPECT_THROW(resolve(ctx, e), std::logic_error);
 }
 
+// invalidate() stands for a whole clear without its fill: a frame whose draws read nothing of the
+// target (no depth or stencil test; the luminance histogram's counting draw) keeps it in tile
+// memory and counts every sample, on any thread count, with the fast path on and off; and it
+// makes a discarded target usable again, as a whole clear does.
+TEST(TileMemory, AnInvalidatedTargetCountsLikeAClearedOneWithoutTheFill) {
+  const int W = 100, H = 70, S = 4;
+  PipelineState st;
+  st.rasterizer.cull = CullMode::None;
+  st.depth_stencil.depth_enable = false;
+  st.blend.write_mask = 0;
+  for (FastPaths paths : {FastPaths(), FastPaths::all_but(FastPath::TileMemory)}) {
+    for (int threads : {1, 2}) {
+      Context ctx = make_context(threads, paths);
+      DepthStencilTarget ds(W, H, S);
+      for (int frame = 0; frame < 2; ++frame) {  // the second starts from the first's discard
+        ctx.reset_stats();
+        OcclusionQuery q;
+        invalidate(ctx, ds);
+        ctx.begin_query(q);
+        draw(ctx, Framebuffer{nullptr, &ds}, st, Geometry::non_indexed(3), CoverVS{}, WhitePS{});
+        ctx.end_query();
+        discard(ctx, ds);
+        EXPECT_EQ(ctx.query_result(q), uint64_t(W) * H * S) << threads << " threads, frame " << frame;
+        EXPECT_EQ(ctx.stats().tile_memory_targets, paths.on(FastPath::TileMemory) ? 1u : 0u) << threads << " threads";
+      }
+    }
+  }
+}
+
 }  // namespace
 }  // namespace luxel::rasterizer::test
