@@ -19,6 +19,8 @@ namespace luxel::scenes::test {
 
 namespace fs = std::filesystem;
 
+using json = nlohmann::json;
+
 /// Source inches per glTF meter.
 inline constexpr double kInches = double(kInchesPerMeter);
 
@@ -34,7 +36,6 @@ inline GltfImportOptions no_defaults() {
   o.default_camera = o.default_lights = false;
   return o;
 }
-using json = nlohmann::json;
 
 /// The copied-in assets (tests/data/gltf, see its SOURCES.md).
 inline std::string asset(const std::string& relative) { return std::string(LUXEL_TEST_DATA) + "/gltf/" + relative; }

@@ -246,11 +246,10 @@ void clear_depth_stencil(Context& ctx, DepthStencilTarget& target, float depth, 
 void clear_depth(Context& ctx, DepthStencilTarget& target, float depth, const Scissor& region = {});
 
 /// Declares the target's samples undefined from here on (Vulkan's load op DONT_CARE): recorded
-/// like a whole clear, without the fill. A frame that also discards the target keeps it in tile
-/// memory, where the fill of a 4x MSAA target costs as much as a light pass. Only for a frame in
-/// which nothing reads the samples before writing them, such as draws with the depth and stencil
-/// tests off (the luminance histogram's counting draw): what such a read returns is undefined,
-/// and may differ from one run or thread count to the next.
+/// like a whole clear, without the fill, so a frame that also discards the target keeps it in
+/// tile memory. Only for a frame in which nothing reads the samples before writing them, such as
+/// draws with the depth and stencil tests off (the luminance histogram's counting draw): what
+/// such a read returns is undefined, and may differ from one run or thread count to the next.
 void invalidate(Context& ctx, DepthStencilTarget& target);
 
 /// Declares that the target's samples are not needed after the frame being recorded
