@@ -26,19 +26,16 @@ void RecordStream::grow(size_t needed) {
 }
 
 size_t ChunkBins::bytes() const {
-  size_t bytes = tile_records.size() * sizeof(RecordStream);
+  size_t bytes = size_t(tile_count) * sizeof(RecordStream);
   for (uint32_t t : touched_tiles) bytes += tile_records[t].size();
   return bytes;
 }
 
-void ChunkBins::reset(int tile_count) {
-  if (static_cast<int>(tile_records.size()) != tile_count) {
-    tile_records.clear();
-    tile_records.resize(tile_count);
-  } else {
-    for (uint32_t t : touched_tiles) tile_records[t].clear();
-  }
+void ChunkBins::reset(int tiles) {
+  for (uint32_t t : touched_tiles) tile_records[t].clear();
   touched_tiles.clear();
+  if (tile_records.size() < size_t(tiles)) tile_records.resize(size_t(tiles));
+  tile_count = tiles;
 }
 
 namespace {

@@ -428,6 +428,33 @@ TEST(Robustness, InterleavedTargetsOfDifferentLayouts) {
   EXPECT_EQ(b.sample(39, 23, 3), rgba8(0, 255, 0, 255));
 }
 
+// The front end's bins keep their streams from one tiling to the next (ChunkBins::reset): draws
+// after a smaller tiling and back find every stream empty, the tiles the smaller one did not have
+// included.
+TEST(Robustness, BinsOfAnEarlierTilingLeaveNoRecords) {
+  Context ctx(2);
+  ColorTarget big(256, 256, 1), small(64, 64, 1);  // 16 tiles, then 1
+  PipelineState st;
+  st.rasterizer.cull = CullMode::None;
+  const auto fill = [&](ColorTarget& target, const glm::vec4 (&triangle)[3], glm::vec4 color) {
+    clear_color(ctx, target, glm::vec4(0.0f));
+    draw(ctx, Framebuffer{&target, nullptr}, st, Geometry::non_indexed(3), PositionVS{triangle}, ConstantPS{color});
+    ctx.flush();
+  };
+  fill(big, kFull, {1, 0, 0, 1});  // every tile binned
+  EXPECT_EQ(big.sample(250, 250, 0), rgba8(255, 0, 0, 255));
+  fill(small, kFull, {0, 1, 0, 1});
+  const ViewportMap map(Viewport{}, 256, 256);
+  const glm::vec4 corner[3] = {map.clip_from_screen(0, 0), map.clip_from_screen(32, 0), map.clip_from_screen(0, 32)};
+  fill(big, corner, {0, 0, 1, 1});  // the first tile only
+  EXPECT_EQ(big.sample(2, 2, 0), rgba8(0, 0, 255, 255));
+  EXPECT_EQ(big.sample(250, 250, 0), rgba8(0, 0, 0, 0));
+  EXPECT_EQ(big.sample(100, 100, 0), rgba8(0, 0, 0, 0));
+  fill(big, kFull, {0, 1, 0, 1});  // every tile again, each stream from its start
+  EXPECT_EQ(big.sample(250, 250, 0), rgba8(0, 255, 0, 255));
+  EXPECT_EQ(big.sample(100, 100, 0), rgba8(0, 255, 0, 255));
+}
+
 /// Triangle t covers the center sample of pixel (5, 7) of a 32x32 target when t % 16384 == 0, and
 /// lies off-screen otherwise (computed on the fly: millions of triangles, no memory).
 struct SparseTinyVS {

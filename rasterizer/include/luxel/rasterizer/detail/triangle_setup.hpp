@@ -171,9 +171,13 @@ class RecordStream {
 /// One chunk of a draw's triangles, binned: per tile, the records of the triangles that touch it
 /// back to back in submission order, so that a tile reads its triangles as one stream.
 struct ChunkBins {
-  std::vector<RecordStream> tile_records;
+  std::vector<RecordStream> tile_records;  ///< at least one per tile; the first tile_count in use
   std::vector<uint32_t> touched_tiles;
+  int tile_count = 0;
 
+  /// Empties the chunk for a draw over `tile_count` tiles. The streams keep their buffers whatever
+  /// the tiling: a frame changes tilings from pass to pass, and streams freed at each change made
+  /// the next draws allocate and fault in a buffer per tile again.
   void reset(int tile_count);
   /// The records' bytes and the per-tile streams' own: what the chunk costs until the flush.
   size_t bytes() const;
