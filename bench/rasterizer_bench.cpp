@@ -74,6 +74,29 @@ void BM_FrontEnd(benchmark::State& state) {
 }
 BENCHMARK(BM_FrontEnd)->Unit(benchmark::kMillisecond);
 
+/// The front end of a post pass's draw: a rectangle covering a 1280x720 target (two triangles,
+/// one varying, binned into each of its 240 tiles), after a pass on a quarter-size target (another
+/// tiling), as in a frame. Items are triangles.
+void BM_FrontEndFullscreen(benchmark::State& state) {
+  const std::vector<glm::vec4> quad = {{-1, -1, 0.5f, 1}, {1, -1, 0.5f, 1}, {1, 1, 0.5f, 1},
+                                       {-1, -1, 0.5f, 1}, {1, 1, 0.5f, 1},  {-1, 1, 0.5f, 1}};
+  Context ctx(1);
+  ColorTarget frame(1280, 720, 1), quarter(320, 180, 1);
+  const PipelineState ps = no_cull();
+  for (auto _ : state) {
+    state.PauseTiming();
+    draw(ctx, {&quarter, nullptr}, ps, Geometry::non_indexed(6), ClipVertices{quad.data()}, FlatColor{});
+    ctx.flush();
+    state.ResumeTiming();
+    draw(ctx, {&frame, nullptr}, ps, Geometry::non_indexed(6), ClipVertices{quad.data()}, FlatColor{});
+    state.PauseTiming();
+    ctx.flush();
+    state.ResumeTiming();
+  }
+  state.SetItemsProcessed(state.iterations() * 2);
+}
+BENCHMARK(BM_FrontEndFullscreen)->Unit(benchmark::kMicrosecond)->Iterations(500);  // each flush ~1 ms, untimed
+
 /// Whole draws (front end + rasterization) of small triangles, by sample count.
 void BM_SmallTriangles(benchmark::State& state) {
   const int count = 100000, samples = static_cast<int>(state.range(0));

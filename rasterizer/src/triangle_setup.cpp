@@ -449,6 +449,10 @@ LUXEL_INLINE void emit_record(const DrawConstants& dc, const TriangleLanes& tri,
   const int tx0 = setup.x0[l] >> kTileShift, ty0 = setup.y0[l] >> kTileShift;
   const int tx1 = (setup.x1[l] - 1) >> kTileShift, ty1 = (setup.y1[l] - 1) >> kTileShift;
   const Edge edges[3] = {lane_edge(tri, setup, l, 0), lane_edge(tri, setup, l, 1), lane_edge(tri, setup, l, 2)};
+  const size_t bytes = 16 * size_t(setup.header[l][7] & 0xff);
+  // The record is the same in every tile: written from setup's rows once, copied after (its planes
+  // are computed in double, a dozen per varying).
+  const std::byte* first = nullptr;
   for (int ty = ty0; ty <= ty1; ++ty) {
     for (int tx = tx0; tx <= tx1; ++tx) {
       const int64_t X0 = int64_t(tx) * kTileSize * kSubpixelsPerPixel, X1 = X0 + kTileSize * kSubpixelsPerPixel - 1;
@@ -458,7 +462,17 @@ LUXEL_INLINE void emit_record(const DrawConstants& dc, const TriangleLanes& tri,
         const int64_t emax = e.c + std::max(e.a * X0, e.a * X1) + std::max(e.b * Y0, e.b * Y1);
         outside |= emax < 0;
       }
-      if (!outside) emit_record(dc, tri, setup, l, ty * dc.tiles_x + tx, bins);
+      if (outside) continue;
+      const int tile = ty * dc.tiles_x + tx;
+      RecordStream& records = bins.tile_records[tile];
+      if (records.empty()) bins.touched_tiles.push_back(static_cast<uint32_t>(tile));
+      std::byte* record = records.append(bytes);  // another tile's stream than `first`'s
+      if (first) {
+        std::memcpy(record, first, bytes);
+      } else {
+        write_record(dc, tri, setup, l, record);
+        first = record;
+      }
     }
   }
 }
