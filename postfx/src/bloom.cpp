@@ -56,9 +56,9 @@ void Bloom::require_copy(const char* pass) const {
 }
 
 void Bloom::small_pass(rasterizer::Context& ctx, int index, const std::function<void()>& draw) {
-  // Cleared (each draw covers it anyway) and discarded once resolved: the small target lives in
-  // tile memory only (rasterizer/framebuffer.hpp).
-  rasterizer::clear_color(ctx, *small_target_, glm::vec4(0.0f));
+  // Invalidated (each draw writes every pixel) and discarded once resolved: the small target
+  // lives in tile memory only, and is never filled (rasterizer/framebuffer.hpp).
+  rasterizer::invalidate(ctx, *small_target_);
   draw();
   rasterizer::discard(ctx, *small_target_);
   rasterizer::resolve_into(ctx, *small_target_, *small_texture_[index]);

@@ -83,13 +83,13 @@ std::vector<rasterizer::Texture> set_lookups(std::span<const WeightedLut> luts, 
 template <class Combo, template <Combo> class Shader, class Params>
 void draw_pass(rasterizer::Context& ctx, int width, int height, size_t luts, const auto& rectangle, const Params& params,
                const ShaderTally& tally, rasterizer::Image& out, auto for_each_combo, auto measure) {
-  // Cleared (the draw covers it anyway) and discarded once resolved: the target lives in tile
-  // memory only (rasterizer/framebuffer.hpp).
+  // Invalidated (the draw writes every pixel) and discarded once resolved: the target lives in
+  // tile memory only, and is never filled (rasterizer/framebuffer.hpp).
   rasterizer::ColorTarget target(width, height);
   for_each_combo([&]<Combo C>() {
     if (C.luts != int(luts)) return;
     counted_draw<Shader<C>>(tally, C.name(), measure.template operator()<C>(), [&](std::atomic<uint64_t>* pixels) {
-      rasterizer::clear_color(ctx, target, glm::vec4(0.0f));
+      rasterizer::invalidate(ctx, target);
       draw_screen_rectangle(ctx, target, post_pass_state(), rectangle, Shader<C>{&params, pixels});
       rasterizer::discard(ctx, target);
       rasterizer::resolve_into(ctx, target, out);  // flushes: the draw reads `params` and `pixels`

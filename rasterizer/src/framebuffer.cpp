@@ -237,6 +237,11 @@ void clear_depth(Context& ctx, DepthStencilTarget& target, float depth, const Sc
   record_depth_clear(ctx, target, depth, std::nullopt, region);
 }
 
+void invalidate(Context& ctx, ColorTarget& target) {
+  queue_for(ctx, target.layout());
+  ctx.refer(target, Context::Access::whole_clear);
+}
+
 void invalidate(Context& ctx, DepthStencilTarget& target) {
   queue_for(ctx, target.layout());
   ctx.refer(target, Context::Access::whole_clear);

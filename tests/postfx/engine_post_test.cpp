@@ -11,6 +11,7 @@
 #include "luxel/postfx/color_correction.hpp"
 #include "luxel/postfx/full_frame.hpp"
 #include "luxel/postfx/lut_source.hpp"
+#include "luxel/rasterizer/framebuffer.hpp"
 
 #include <gtest/gtest.h>
 
@@ -103,6 +104,28 @@ TEST(EnginePost, DiffersFromAddingThenCorrectingOnlyWhereTheRoundedSumLosesSomet
   EXPECT_GT(far_below_one, 1000);
   EXPECT_EQ(far_differs, 0);
   EXPECT_GT(above_one_differs, 0) << "a sum above 1 keeps its share of the frame's weight";
+}
+
+// The bloom's and the color correction's targets are invalidated, not cleared: their draws must
+// write every pixel. After a frame that left magenta in every thread's tile memory, the passes
+// give the bytes of a fresh context.
+TEST(EnginePost, ThePassesWriteEveryPixelOfTheirInvalidatedTargets) {
+  const Lut warm = resolve_lut("builtin:warm");
+  const WeightedLut luts[] = {{&warm, 0.7f}};
+  const rasterizer::Image frame = bright_frame(301, 170, 11);  // not whole tiles or stamps
+  const auto passes = [&](rasterizer::Context& ctx) {
+    Bloom bloom;
+    EXPECT_TRUE(bloom.blur(ctx, frame, 1.0f));
+    return color_correct(ctx, bloom, luts).rgba;
+  };
+  rasterizer::Context fresh(2), used(2);
+  rasterizer::ColorTarget magenta(301, 170, 4);  // four samples: more tile memory than the passes use
+  rasterizer::clear_color(used, magenta, glm::vec4(1, 0, 1, 1));
+  rasterizer::discard(used, magenta);
+  const rasterizer::Image filled = rasterizer::resolve(used, magenta);
+  ASSERT_EQ(filled.pixel(300, 169)[1], 0);
+  EXPECT_EQ(used.stats().tile_memory_targets, 1u);
+  EXPECT_EQ(passes(used), passes(fresh));
 }
 
 TEST(EnginePost, SameBytesForAnyThreadCount) {

@@ -252,5 +252,28 @@ TEST(TileMemory, AnInvalidatedTargetCountsLikeAClearedOneWithoutTheFill) {
   }
 }
 
+// A color target invalidated, drawn over whole and discarded lives in tile memory without a
+// fill, and resolves to what the draw wrote, after a frame that left other samples there.
+TEST(TileMemory, AnInvalidatedColorTargetResolvesToWhatTheDrawWrote) {
+  const int W = 100, H = 70;
+  PipelineState st;
+  st.rasterizer.cull = CullMode::None;
+  st.depth_stencil.depth_enable = false;
+  for (int threads : {1, 2}) {
+    Context ctx = make_context(threads);
+    ColorTarget earlier(W, H, 4), target(W, H, 1);
+    clear_color(ctx, earlier, glm::vec4(1, 0, 1, 1));
+    discard(ctx, earlier);
+    (void)resolve(ctx, earlier);
+    ctx.reset_stats();
+    invalidate(ctx, target);
+    draw(ctx, Framebuffer{&target, nullptr}, st, Geometry::non_indexed(3), CoverVS{}, WhitePS{});
+    discard(ctx, target);
+    const Image image = resolve(ctx, target);
+    EXPECT_EQ(ctx.stats().tile_memory_targets, 1u) << threads << " threads";
+    EXPECT_EQ(image.rgba, std::vector<uint8_t>(size_t(W) * H * 4, 255)) << threads << " threads";
+  }
+}
+
 }  // namespace
 }  // namespace luxel::rasterizer::test

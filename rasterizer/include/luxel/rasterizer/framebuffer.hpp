@@ -247,9 +247,11 @@ void clear_depth(Context& ctx, DepthStencilTarget& target, float depth, const Sc
 
 /// Declares the target's samples undefined from here on (Vulkan's load op DONT_CARE): recorded
 /// like a whole clear, without the fill, so a frame that also discards the target keeps it in
-/// tile memory. Only for a frame in which nothing reads the samples before writing them, such as
-/// draws with the depth and stencil tests off (the luminance histogram's counting draw): what
+/// tile memory. Only for a frame in which nothing reads the samples before writing them: draws
+/// with the depth and stencil tests off (the luminance histogram's counting draw), or a draw that
+/// writes every sample without blending (a post pass's rectangle over the whole target). What
 /// such a read returns is undefined, and may differ from one run or thread count to the next.
+void invalidate(Context& ctx, ColorTarget& target);
 void invalidate(Context& ctx, DepthStencilTarget& target);
 
 /// Declares that the target's samples are not needed after the frame being recorded
