@@ -8,6 +8,7 @@
 #include "texture_internal.hpp"
 
 #include <algorithm>
+#include <atomic>
 #include <bit>
 #include <cstring>
 #include <cmath>
@@ -153,11 +154,15 @@ struct ResolvedPixels {
   uint8_t* pixel(int x, int y) const { return first + size_t(y) * row_bytes + size_t(x) * 4; }
 };
 
-/// Box filter of one tile's samples into the pixels (a plain copy for one sample).
+/// Box filter of one tile's samples into the pixels (a plain copy for one sample). With
+/// `below_max`, a tile that wrote an alpha below 255 sets it: whether the pixels are opaque, found
+/// by the threads as they write them instead of by a pass over them afterwards.
 class ResolveCommand final : public detail::Command {
  public:
-  ResolveCommand(const ColorTarget& target, ResolvedPixels pixels, ResolveAlpha alpha, const Scissor& region)
-      : target_(target), pixels_(pixels), opaque_(alpha == ResolveAlpha::opaque ? int32_t(0xff000000u) : 0), region_(region) {}
+  ResolveCommand(const ColorTarget& target, ResolvedPixels pixels, ResolveAlpha alpha, const Scissor& region,
+                 std::atomic<bool>* below_max)
+      : target_(target), pixels_(pixels), opaque_(alpha == ResolveAlpha::opaque ? int32_t(0xff000000u) : 0), region_(region),
+        below_max_(below_max) {}
   void execute(int tile, detail::ThreadCounters&) override {
     using simd::Int;
     const SurfaceLayout& L = target_.layout();
@@ -184,6 +189,8 @@ class ResolveCommand final : public detail::Command {
       return rb | (ga << 8) | opaque;
     };
     constexpr int kStampsPerRow = kTileSize / simd::kStampWidth;
+    Int written_and(-1);  // of every pixel written: alpha 255 in all of them when its top byte is
+    uint32_t edge_and = ~0u;
     for (int sy = 0; sy < height; sy += simd::kStampHeight) {
       const bool whole_rows = sy + simd::kStampHeight <= height;
       uint8_t* const top = pixels_.pixel(x0, y0 + sy);
@@ -192,14 +199,25 @@ class ResolveCommand final : public detail::Command {
         const Int rows = simd::to_row_major(resolved(stamp));  // the stamp's two rows of pixels
         if (whole_rows && sx + simd::kStampWidth <= width) {
           simd::store_stamp_rows(rows, top + 4 * sx, top + pixels_.row_bytes + 4 * sx);
+          written_and &= rows;
           continue;
         }
         alignas(64) uint32_t out[simd::kLanes];
         rows.store_aligned(reinterpret_cast<int32_t*>(out));
-        for (int y = sy; y < std::min(sy + simd::kStampHeight, height); ++y)
-          for (int x = sx; x < std::min(sx + simd::kStampWidth, width); ++x)
-            std::memcpy(pixels_.pixel(x0 + x, y0 + y), &out[(y - sy) * simd::kStampWidth + (x - sx)], 4);
+        for (int y = sy; y < std::min(sy + simd::kStampHeight, height); ++y) {
+          for (int x = sx; x < std::min(sx + simd::kStampWidth, width); ++x) {
+            const uint32_t pixel = out[(y - sy) * simd::kStampWidth + (x - sx)];
+            std::memcpy(pixels_.pixel(x0 + x, y0 + y), &pixel, 4);
+            edge_and &= pixel;
+          }
+        }
       }
+    }
+    if (below_max_) {
+      alignas(64) uint32_t lanes[simd::kLanes];
+      written_and.store_aligned(reinterpret_cast<int32_t*>(lanes));
+      for (uint32_t lane : lanes) edge_and &= lane;
+      if (edge_and >> 24 != 0xffu) below_max_->store(true, std::memory_order_relaxed);
     }
   }
 
@@ -208,6 +226,7 @@ class ResolveCommand final : public detail::Command {
   ResolvedPixels pixels_;
   int32_t opaque_;  ///< or-ed into every pixel: alpha 255, or nothing
   Scissor region_;
+  std::atomic<bool>* below_max_;
 };
 
 }  // namespace
@@ -259,10 +278,11 @@ void load_image(Context& ctx, const Image& image, ColorTarget& target) {
 }
 
 namespace {
-void record_resolve(Context& ctx, const ColorTarget& target, ResolvedPixels pixels, ResolveAlpha alpha, const Scissor& region) {
+void record_resolve(Context& ctx, const ColorTarget& target, ResolvedPixels pixels, ResolveAlpha alpha, const Scissor& region,
+                    std::atomic<bool>* below_max = nullptr) {
   detail::CommandQueue& queue = queue_for(ctx, target.layout());
   ctx.refer(target, Context::Access::resolve);  // runs another context's pending frame on it first
-  queue.push(std::make_unique<ResolveCommand>(target, pixels, alpha, region));
+  queue.push(std::make_unique<ResolveCommand>(target, pixels, alpha, region, below_max));
   ctx.flush();
 }
 }  // namespace
@@ -279,7 +299,15 @@ void resolve_into(Context& ctx, const ColorTarget& target, Texture& texture, Res
     throw std::invalid_argument("resolve_into: a " + std::to_string(target.width()) + "x" + std::to_string(target.height()) +
                                 " target resolves into an RGBA8 2D texture of one level and its size");
   }
-  record_resolve(ctx, target, {TextureAccess::level0(texture).data(), size_t(texture.width()) * 4}, alpha, region);
+  const ResolvedPixels pixels{TextureAccess::level0(texture).data(), size_t(texture.width()) * 4};
+  if (!region.enable) {
+    // Every pixel written: whether the level is opaque is what the tiles found.
+    std::atomic<bool> below_max{false};
+    record_resolve(ctx, target, pixels, alpha, region, &below_max);
+    TextureAccess::level_written(texture, alpha == ResolveAlpha::opaque || !below_max.load(std::memory_order_relaxed));
+    return;
+  }
+  record_resolve(ctx, target, pixels, alpha, region);
   // The rows the resolve wrote: those of the tiles holding the region (see tile_holds).
   int y0 = 0, y1 = target.height();
   if (region.enable) {

@@ -43,6 +43,25 @@ TEST(LoadImage, EverySampleTakesItsPixelAndResolveGivesTheImageBack) {
   }
 }
 
+// A whole resolve into a texture finds opaque() from the pixels the tiles write: one pixel's
+// alpha below 255, inside a whole stamp or on a partial one at the edge, is enough to lose it.
+TEST(ResolveIntoTexture, OpaqueFollowsTheAlphaOfEveryPixel) {
+  Context ctx(2);
+  const int W = 2 * kTileSize + 9, H = kTileSize + 21;
+  for (int samples : {1, 4}) {
+    for (const glm::ivec2 below : {glm::ivec2(-1, -1), glm::ivec2(70, 3), glm::ivec2(W - 1, H - 1), glm::ivec2(0, H - 2)}) {
+      Image image = random_image(W, H, 7);
+      for (size_t p = 3; p < image.rgba.size(); p += 4) image.rgba[p] = 255;
+      if (below.x >= 0) image.pixel(below.x, below.y)[3] = 254;
+      ColorTarget target(W, H, samples);
+      load_image(ctx, image, target);
+      Texture texture = Texture::create_2d(W, H, TextureFormat::RGBA8, 1);
+      resolve_into(ctx, target, texture, ResolveAlpha::samples);
+      EXPECT_EQ(texture.opaque(), below.x < 0) << samples << " samples, alpha 254 at " << below.x << ", " << below.y;
+    }
+  }
+}
+
 TEST(ResolveIntoTexture, WritesTheImagesBytesInPlaceAndKeepsOpaqueTrue) {
   // A 4-sample target whose samples differ within each pixel (an image in sample 0's place, its
   // bytes reversed in the others) resolves into a texture to the bytes it resolves to in an
