@@ -450,8 +450,8 @@ LUXEL_INLINE void emit_record(const DrawConstants& dc, const TriangleLanes& tri,
   const int tx1 = (setup.x1[l] - 1) >> kTileShift, ty1 = (setup.y1[l] - 1) >> kTileShift;
   const Edge edges[3] = {lane_edge(tri, setup, l, 0), lane_edge(tri, setup, l, 1), lane_edge(tri, setup, l, 2)};
   const size_t bytes = 16 * size_t(setup.header[l][7] & 0xff);
-  // The record is the same in every tile: written from setup's rows once, copied after (its planes
-  // are computed in double, a dozen per varying).
+  // The record is the same in every tile: written from setup's rows once (its planes are computed
+  // in double), copied after.
   const std::byte* first = nullptr;
   for (int ty = ty0; ty <= ty1; ++ty) {
     for (int tx = tx0; tx <= tx1; ++tx) {
