@@ -256,15 +256,17 @@ void clear_depth(Context& ctx, DepthStencilTarget& target, float depth, const Sc
   record_depth_clear(ctx, target, depth, std::nullopt, region);
 }
 
-void invalidate(Context& ctx, ColorTarget& target) {
+namespace {
+/// A whole clear recorded without its command (invalidate()).
+template <class Target>
+void record_invalidate(Context& ctx, Target& target) {
   queue_for(ctx, target.layout());
   ctx.refer(target, Context::Access::whole_clear);
 }
+}  // namespace
 
-void invalidate(Context& ctx, DepthStencilTarget& target) {
-  queue_for(ctx, target.layout());
-  ctx.refer(target, Context::Access::whole_clear);
-}
+void invalidate(Context& ctx, ColorTarget& target) { record_invalidate(ctx, target); }
+void invalidate(Context& ctx, DepthStencilTarget& target) { record_invalidate(ctx, target); }
 
 void load_image(Context& ctx, const Image& image, ColorTarget& target) {
   if (image.width != target.width() || image.height != target.height()) {

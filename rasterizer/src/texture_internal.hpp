@@ -32,12 +32,12 @@ struct TextureAccess {
   }
   /// Level 0 of a 2D texture, to be written in place (a resolve into it: framebuffer.cpp).
   static std::span<uint8_t> level0(Texture& t) { return t.level_span(0, 0); }
-  /// Records that rows [y0, y1) of level 0 of a 2D texture were written in place: whether it is
-  /// opaque follows from those rows' alpha (`alpha_at_max`: known to be at the maximum), and from
-  /// the other rows' as they were.
   /// Records that all of level 0 of a 2D texture was written in place, its alpha at the maximum
   /// everywhere or not (`alpha_at_max`).
   static void level_written(Texture& t, bool alpha_at_max) { t.set_level_opaque(0, 0, alpha_at_max); }
+  /// Records that rows [y0, y1) of level 0 of a 2D texture were written in place: whether it is
+  /// opaque follows from those rows' alpha (`alpha_at_max`: known to be at the maximum), and from
+  /// the other rows' as they were.
   static void rows_written(Texture& t, int y0, int y1, bool alpha_at_max) {
     const size_t row_bytes = size_t(t.width()) * size_t(bytes_per_texel(t.format()));
     const auto rows = t.level_span(0, 0).subspan(size_t(y0) * row_bytes, size_t(y1 - y0) * row_bytes);

@@ -434,12 +434,20 @@ LUXEL_INLINE void write_record(const DrawConstants& dc, const TriangleLanes& tri
   for (int i = 0; i < dc.varyings; ++i) std::memcpy(tail + 16 * i, tri.data[0][l] + 4 * (1 + i), 16);
 }
 
+/// Room for a record of `bytes` at the end of `tile`'s stream.
+LUXEL_INLINE std::byte* append_to_tile(ChunkBins& bins, int tile, size_t bytes) {
+  RecordStream& records = bins.tile_records[tile];
+  if (records.empty()) bins.touched_tiles.push_back(static_cast<uint32_t>(tile));
+  return records.append(bytes);
+}
+
+/// The bytes of triangle l's record.
+LUXEL_INLINE size_t record_bytes(const SetupLanes& setup, int l) { return 16 * size_t(setup.header[l][7] & 0xff); }
+
 /// Appends triangle l's record to `tile`'s stream.
 LUXEL_INLINE void emit_record(const DrawConstants& dc, const TriangleLanes& tri, const SetupLanes& setup, int l,
                               int tile, ChunkBins& bins) {
-  RecordStream& records = bins.tile_records[tile];
-  if (records.empty()) bins.touched_tiles.push_back(static_cast<uint32_t>(tile));
-  write_record(dc, tri, setup, l, records.append(16 * size_t(setup.header[l][7] & 0xff)));
+  write_record(dc, tri, setup, l, append_to_tile(bins, tile, record_bytes(setup, l)));
 }
 
 /// Writes triangle l's record (set up and not rejected) into every tile it touches (less those
@@ -449,7 +457,7 @@ LUXEL_INLINE void emit_record(const DrawConstants& dc, const TriangleLanes& tri,
   const int tx0 = setup.x0[l] >> kTileShift, ty0 = setup.y0[l] >> kTileShift;
   const int tx1 = (setup.x1[l] - 1) >> kTileShift, ty1 = (setup.y1[l] - 1) >> kTileShift;
   const Edge edges[3] = {lane_edge(tri, setup, l, 0), lane_edge(tri, setup, l, 1), lane_edge(tri, setup, l, 2)};
-  const size_t bytes = 16 * size_t(setup.header[l][7] & 0xff);
+  const size_t bytes = record_bytes(setup, l);
   // The record is the same in every tile: written from setup's rows once (its planes are computed
   // in double), copied after.
   const std::byte* first = nullptr;
@@ -463,10 +471,7 @@ LUXEL_INLINE void emit_record(const DrawConstants& dc, const TriangleLanes& tri,
         outside |= emax < 0;
       }
       if (outside) continue;
-      const int tile = ty * dc.tiles_x + tx;
-      RecordStream& records = bins.tile_records[tile];
-      if (records.empty()) bins.touched_tiles.push_back(static_cast<uint32_t>(tile));
-      std::byte* record = records.append(bytes);  // another tile's stream than `first`'s
+      std::byte* record = append_to_tile(bins, ty * dc.tiles_x + tx, bytes);  // another stream than `first`'s
       if (first) {
         std::memcpy(record, first, bytes);
       } else {
