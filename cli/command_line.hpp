@@ -4,6 +4,7 @@
 // alone, so that any argument vector a user can type is either accepted or refused with one line.
 
 #include "commands.hpp"
+#include "run.hpp"
 
 #include <CLI/CLI.hpp>
 
@@ -28,8 +29,5 @@ class CommandLine {
   CLI::App app_;
   std::vector<Runner> runners_;
 };
-
-/// parse() then run(): what `luxel` does.
-int run(int argc, const char* const* argv);
 
 }  // namespace luxel::cli

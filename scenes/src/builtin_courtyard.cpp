@@ -27,7 +27,6 @@ namespace luxel::scenes::builtin {
 
 namespace {
 
-constexpr float kPi = std::numbers::pi_v<float>;
 constexpr int kTextureSize = 256;
 
 uint8_t byte(float x) { return static_cast<uint8_t>(std::lround(std::clamp(x, 0.0f, 1.0f) * 255.0f)); }

@@ -11,7 +11,6 @@ namespace luxel::scenes::builtin {
 
 namespace {
 
-constexpr float kPi = std::numbers::pi_v<float>;
 
 std::vector<uint16_t>& indices16(Mesh& m) {
   auto& idx = std::get<std::vector<uint16_t>>(m.indices);

@@ -5,9 +5,12 @@
 #include "luxel/scenes/scene.hpp"
 
 #include <cstdint>
+#include <numbers>
 #include <vector>
 
 namespace luxel::scenes::builtin {
+
+inline constexpr float kPi = std::numbers::pi_v<float>;
 
 class ChartPacker;
 

@@ -5,6 +5,7 @@
 #include "luxel/rasterizer/framebuffer.hpp"
 #include "luxel/rasterizer/texture.hpp"
 
+#include <glm/glm.hpp>
 #include <gtest/gtest.h>
 
 #include <algorithm>

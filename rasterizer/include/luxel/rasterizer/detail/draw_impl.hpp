@@ -832,7 +832,8 @@ auto recorded_pixel_shader(const PS& ps) {
 template <int N, class PS>
 std::unique_ptr<Command> make_draw_command(const DrawPlan& plan, const PipelineState& state, const PS& ps,
                                            std::vector<ChunkBins*> chunks, int query_slot) {
-  if constexpr (kCalledPixelShader<PS>) return make_called_draw_command<N>(plan, state, ps, std::move(chunks), query_slot);
+  if constexpr (kCalledPixelShader<PS> && precompiled_varying_count(N))
+    return make_called_draw_command<N>(plan, state, ps, std::move(chunks), query_slot);
   else return std::make_unique<DrawCommand<PS, N>>(plan, state, ps, std::move(chunks), query_slot);
 }
 
