@@ -3,6 +3,7 @@
 // so both succeed, exactly one bakes, and the folder holds one whole bake. Without the lock both
 // bake and write the same files while the other reads them (a CI run failed so).
 
+#include "test_paths.hpp"
 #include "cli/run_luxel.hpp"
 
 #include <gtest/gtest.h>
@@ -32,7 +33,7 @@ TEST(BakeFolder, TwoBakesAtOnceBakeOnceAndBothSucceed) {
       std::filesystem::temp_directory_path() / ("luxel-bake-folder-" + std::to_string(::getpid()));
   std::filesystem::remove_all(dir);
   std::filesystem::create_directories(dir);
-  const std::string bake = std::string(LUXEL_BINARY) + " bake --scene builtin:courtyard --quick --threads 1 --out " +
+  const std::string bake = luxel::test::luxel_binary() + " bake --scene builtin:courtyard --quick --threads 1 --out " +
                            (dir / "bake").string();
   const std::string a = (dir / "a.txt").string(), b = (dir / "b.txt").string();
   const std::string script = "(" + bake + " > " + a + " 2>&1; echo exit=$? >> " + a + ") & (" + bake + " > " + b +

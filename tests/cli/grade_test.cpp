@@ -3,6 +3,7 @@
 // postfx::color_correct_exact's floats in an EXR; --save-lut writes the engine's lattice as .cube
 // or .raw.
 
+#include "test_paths.hpp"
 #include "cli/run_luxel.hpp"
 #include "scenes/temp_dir.hpp"
 
@@ -29,7 +30,7 @@ rasterizer::Image write_random_png(const std::string& path) {
   return image;
 }
 
-const std::string kCrosstalk = LUXEL_TEST_DATA "/luts/opencolorio/crosstalk.3dl";
+const std::string kCrosstalk = luxel::test::data_dir() + "/luts/opencolorio/crosstalk.3dl";
 
 TEST(GradeCommand, EngineWayWritesTheLibrarysBytesForAnyThreadCount) {
   const scenes::test::TempDir dir;

@@ -1,6 +1,7 @@
 #pragma once
-// Runs the `luxel` binary under test (LUXEL_BINARY, set by tests/CMakeLists.txt) through the shell.
+// Runs the `luxel` binary under test (test_paths.hpp) through the shell.
 
+#include "test_paths.hpp"
 #include <sys/wait.h>
 
 #include <array>
@@ -19,7 +20,7 @@ struct Process {
 /// `luxel ARGS`, ARGS being shell words (redirections allowed).
 inline Process run_luxel(const std::string& args) {
   Process r;
-  FILE* pipe = popen((std::string(LUXEL_BINARY) + " " + args).c_str(), "r");
+  FILE* pipe = popen((luxel::test::luxel_binary() + " " + args).c_str(), "r");
   if (!pipe) return r;
   std::array<char, 4096> buf;
   size_t n;

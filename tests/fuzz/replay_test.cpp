@@ -3,6 +3,7 @@
 // from (tests/data: glTF assets, LUTs, images). Each must be read, or refused with its reader's
 // one-line error naming the file; a Finding names the input.
 
+#include "test_paths.hpp"
 #include "fuzz_support.hpp"
 #include "inputs.hpp"
 
@@ -21,7 +22,7 @@ namespace {
 
 namespace fs = std::filesystem;
 
-const fs::path kData = LUXEL_TEST_DATA;
+const fs::path kData = luxel::test::data_dir();
 
 std::vector<uint8_t> bytes_of(const fs::path& file) {
   std::ifstream in(file, std::ios::binary);

@@ -4,6 +4,7 @@
 // own lattice, the engine's 32^3 8-bit way against the exact path within a measured bound, a LUT
 // composed with a transform, and the argument checks.
 
+#include "test_paths.hpp"
 #include "lut_support.hpp"
 #include "scenes/temp_dir.hpp"
 
@@ -295,7 +296,7 @@ TEST(ColorCorrection, EngineWayAgreesWithExactWithinTheStatedBound) {
   }
   for (const char* file : {"freshluts/teal_and_orange_cinema.cube", "opencolorio/crosstalk.3dl",
                            "opencolorio/discreet-3d-lut.3dl"}) {
-    std::printf(", %s %d", file, engine_vs_exact(std::string(LUXEL_TEST_DATA "/luts/") + file, frame, ctx));
+    std::printf(", %s %d", file, engine_vs_exact(luxel::test::data_dir() + "/luts/" + file, frame, ctx));
   }
   std::printf("\n");
 }

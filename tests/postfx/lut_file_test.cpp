@@ -4,6 +4,7 @@
 // tests/data/luts loads, an exported .cube reads back to the same LUT, and every kind of bad file
 // gives one line naming it.
 
+#include "test_paths.hpp"
 #include "lut_support.hpp"
 #include "scenes/temp_dir.hpp"
 
@@ -117,7 +118,7 @@ TEST(LutFile, OneDimensionalCubeInterpolatesEachChannel) {
 
 TEST(LutFile, EveryFileOfTheTestDataLoads) {
   int files = 0;
-  for (const auto& entry : std::filesystem::recursive_directory_iterator(LUXEL_TEST_DATA "/luts")) {
+  for (const auto& entry : std::filesystem::recursive_directory_iterator(luxel::test::data_dir() + "/luts")) {
     const std::string ext = entry.path().extension().string();
     if (ext != ".cube" && ext != ".3dl") continue;
     const ColorTransform t = read_lut_file(entry.path().string());
@@ -131,7 +132,7 @@ TEST(LutFile, EveryFileOfTheTestDataLoads) {
 
 TEST(LutFile, OpenColorIOTestFilesMeanWhatTheirFormatsSay) {
   // iridas_3d.cube: a 2^3 LUT doubling each channel over DOMAIN_MIN (0, 1, 0) .. DOMAIN_MAX (2, 2, 1).
-  const ColorTransform t = read_lut_file(LUXEL_TEST_DATA "/luts/opencolorio/iridas_3d.cube");
+  const ColorTransform t = read_lut_file(luxel::test::data_dir() + "/luts/opencolorio/iridas_3d.cube");
   std::vector<glm::vec3> c = {glm::vec3(0.5f, 0.25f, 0.75f), glm::vec3(1.0f, 1.0f, 0.2f)};
   t.apply(c);
   // r: 2 (r - 0) / 2; g below its domain clamps to 0; b: 2 (b - 0) / 1.

@@ -2,6 +2,7 @@
 // here), Source materials survive through extras, lights and cameras come back where they were,
 // exports are deterministic, and the Khronos glTF-Validator reports 0 errors on each export.
 
+#include "test_paths.hpp"
 #include "gltf_support.hpp"
 
 #include "luxel/scenes/builtin.hpp"
@@ -458,7 +459,7 @@ TEST(GltfExport, BadPathsAreNamed) {
 
 // --- The Khronos glTF-Validator ----------------------------------------------------------------
 
-std::string tools() { return LUXEL_TEST_TOOLS; }
+std::string tools() { return luxel::test::tools_dir(); }
 
 bool validator_installed() {
   return std::system("node --version > /dev/null 2>&1") == 0 &&

@@ -2,6 +2,7 @@
 // Helpers for the glTF tests: a temporary folder, and glTF files built from JSON with their
 // buffers as base64 data URIs or side files, so each test states its whole input.
 
+#include "test_paths.hpp"
 #include "luxel/scenes/gltf.hpp"
 #include "temp_dir.hpp"
 
@@ -38,7 +39,7 @@ inline GltfImportOptions no_defaults() {
 }
 
 /// The copied-in assets (tests/data/gltf, see its SOURCES.md).
-inline std::string asset(const std::string& relative) { return std::string(LUXEL_TEST_DATA) + "/gltf/" + relative; }
+inline std::string asset(const std::string& relative) { return luxel::test::data_dir() + "/gltf/" + relative; }
 
 
 inline void write_bytes(const std::string& path, const std::vector<uint8_t>& bytes) {
