@@ -46,7 +46,7 @@ float3<L> phong(const L* a) {
   return lerp(float3<L>(0.2f, 0.3f, 0.4f), float3<L>(half_lambert * half_lambert), L(0.75f)) + spec;
 }
 
-/// SOURCE_FACTS 2.1's ambient cube.
+/// The ambient cube (docs/fidelity.md#ambient-cube).
 template <class L>
 float3<L> ambient(const L* a, const AmbientCube& cube) {
   const float3<L> n(a[0], a[1], a[2]);

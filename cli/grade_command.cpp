@@ -10,8 +10,8 @@
 // where OUT's format holds them (.exr), else rounded to 8 bits.
 //
 // Weights: one per LUT, each in [0, 1], summing to at most 1 (beyond 1 the blend no longer mixes
-// but brightens); the frame keeps 1 - sum (luxel's rule, SOURCE_FACTS §9.2 leaves it closed).
-// Without --weight, the LUTs share the frame equally (1/n each).
+// but brightens); the frame keeps 1 - sum (luxel's rule; the SDK's is closed,
+// docs/fidelity.md#color-correction). Without --weight, the LUTs share the frame equally (1/n each).
 //
 // Exit codes: 2 for bad arguments (weights, counts, an unknown builtin:NAME), 1 for files that
 // cannot be read or written; one line on stderr each.

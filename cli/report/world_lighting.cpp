@@ -1,9 +1,9 @@
 // The report's section "world_lighting": how well a bump-mapped world surface's lightmaps give the
 // light arriving for its bumped normal. Radiosity normal mapping (three directional maps combined
-// as LightmappedGeneric does, SOURCE_FACTS 1.3: d_i = sat(n . b_i)^2, sum d_i LM_i / sum d_i) and
-// the flat lightmap (what the surface gets without its bump map) against the light computed per
-// point for the bumped normal by the bake's own rule (bake::irradiance_at: the same rays, sky,
-// emitters, final flat map and lights, without the basis).
+// as LightmappedGeneric does, docs/fidelity.md#lightmappedgeneric: d_i = sat(n . b_i)^2,
+// sum d_i LM_i / sum d_i) and the flat lightmap (what the surface gets without its bump map) against
+// the light computed per point for the bumped normal by the bake's own rule (bake::irradiance_at: the
+// same rays, sky, emitters, final flat map and lights, without the basis).
 //
 // Points: kPointsPerGroup per group of surfaces (walls: |n_z| < 0.5 of the triangle's geometric
 // normal; floors: n_z >= 0.5; ceilings: n_z <= -0.5), spread over the world's bump-mapped
@@ -104,8 +104,8 @@ void read_lightmaps(const ReportScene& scene, glm::vec2 uv1, glm::vec3 bump_tang
   const shading::float3<float> w = shading::source::rnm_weights(shading::float3<float>(bump_tangent.x, bump_tangent.y, bump_tangent.z));
   const double d[3] = {w.x, w.y, w.z}, sum = d[0] + d[1] + d[2];
   p.rnm = sum > 0 ? (d[0] * maps[1] + d[1] * maps[2] + d[2] * maps[3]) / sum : glm::dvec3(0.0);
-  // vrad's LinearToBumpedLightmap (SOURCE_FACTS 1.5, never called by vrad): each channel of the
-  // three maps scaled so that their mean is the flat map's, here on the filtered values.
+  // vrad's LinearToBumpedLightmap (docs/fidelity.md#bake-vrad, never called by vrad): each channel of
+  // the three maps scaled so that their mean is the flat map's, here on the filtered values.
   const glm::dvec3 mean = (maps[1] + maps[2] + maps[3]) / 3.0;
   for (int c = 0; c < 3; ++c) p.rnm_rescaled[c] = mean[c] > 0 ? p.rnm[c] * maps[0][c] / mean[c] : p.flat[c];
 }

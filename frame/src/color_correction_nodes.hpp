@@ -7,7 +7,7 @@
 // Each LUT is resolved once (postfx/lut_source.hpp: a built-in grade, a Source .raw file or any
 // file OpenColorIO reads, a relative file name taken from the scene file's folder). The weights at
 // time t are a function of t and the eye's path alone, never of the frames rendered before
-// (postfx/color_correction_weights.hpp has the SDK's rules, SOURCE_FACTS 9.3):
+// (postfx/color_correction_weights.hpp has the SDK's rules, docs/fidelity.md#color-correction):
 //  - a node: its inputs up to t replayed through a postfx::EntityFade, then its falloff at the
 //    eye's distance at t. The fade runs on the node's weight over max_weight (the SDK's fades
 //    exactly, their durations shortened by that ratio), times max_weight, with one difference:

@@ -1,7 +1,7 @@
 #pragma once
-// Private: what lights a model (SOURCE_FACTS 2.2, 3.4): the ambient cube of the irradiance-volume
-// sample nearest its centroid (or the trilinear blend of the eight around it), its two most
-// significant local lights, every other light folded into that cube on the CPU
+// Private: what lights a model (docs/fidelity.md#irradiance-volume-and-lights): the ambient cube of the
+// irradiance-volume sample nearest its centroid (or the trilinear blend of the eight around it), its
+// two most significant local lights, every other light folded into that cube on the CPU
 // (shading/source/light_folding.hpp: significance = delivered luminance at the centroid, ties by
 // scene order), then the hero boost where the material asks; across the frames of a sequence,
 // the volume's cube and the lights' shares of being local lights time-averaged (renderer.hpp).

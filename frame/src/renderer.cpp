@@ -874,7 +874,7 @@ void Renderer::render(Context& ctx) {
         st.bloom->add(ctx, st.image, tally);
       });
     } else {
-      // Blurred only: the color correction adds it (Engine_Post, SOURCE_FACTS 8.3).
+      // Blurred only: the color correction adds it (Engine_Post, docs/fidelity.md#bloom).
       clock.run("bloom", 3, [&] { st.bloom->blur(ctx, st.full_frame.texture(), bloom_amount, tally); });
     }
   }

@@ -2,8 +2,8 @@
 // Private: when the eye enters and leaves each of the scene's color-correction volumes
 // (scenes::ColorCorrectionVolume), as Source's trigger sees the player. The eye's place is tested
 // at every think tick of the scene's clock, 0, 0.01 s, 0.02 s, ... (colorcorrectionvolume.cpp
-// thinks every 0.01 s, SOURCE_FACTS 9.3), bounds inclusive, the eye outside every volume before
-// 0; a tick where the answer changes is an enter or a leave at that tick's time.
+// thinks every 0.01 s, docs/fidelity.md#color-correction), bounds inclusive, the eye outside every
+// volume before 0; a tick where the answer changes is an enter or a leave at that tick's time.
 //
 // The crossings are a function of the eye's path alone. They are found by replaying the path
 // tick by tick from 0 (no rendering), kept, and extended when the clock goes further, so the

@@ -169,7 +169,7 @@ WaterMaterial water_material(const scenes::Material& m) {
   w.refract_amount = m.refract_amount;
   w.fog_start = m.water_fog_start;
   w.fog_end = m.water_fog_end;
-  w.exposure = WaterReflectionExposure::sdk_fixed;  // SOURCE_FACTS §6.4
+  w.exposure = WaterReflectionExposure::sdk_fixed;  // docs/fidelity.md#water
   return w;
 }
 

@@ -10,7 +10,7 @@
 //    the water plane, seen from the camera, so that the reflection of what lies along a pixel's
 //    reflected ray lands on that pixel (the SDK flips its camera instead and its vertex shader
 //    flips the lookup; the texels read are the same). At the reflection exposure of
-//    SOURCE_FACTS §6.4 (INTEGER HDR): 0.25 x the frame's tone-map scale, the water's reflect tint
+//    docs/fidelity.md#water (INTEGER HDR): 0.25 x the frame's tone-map scale, the water's reflect tint
 //    x 4 (water.hpp's sdk_fixed). The scene's fog, the sky. Geometry below the plane is clipped.
 //  - refraction (always: the water shader reads its alpha as the water's depth, even in a
 //    reflect-only combo): what lies below the plane, from the camera, at the frame's exposure,

@@ -28,7 +28,7 @@ rasterizer::Sampler bilinear_clamped() {
   return s;
 }
 
-/// An RGBA8 texture of one level, read as stored (no sRGB decode: gamma values, §10.1).
+/// An RGBA8 texture of one level, read as stored (no sRGB decode: gamma values).
 rasterizer::Texture gamma_texture(int width, int height) {
   return rasterizer::Texture::create_2d(width, height, rasterizer::TextureFormat::RGBA8, 1);
 }

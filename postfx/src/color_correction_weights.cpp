@@ -1,4 +1,4 @@
-// Color-correction entity weights (color_correction_weights.hpp, SOURCE_FACTS §9.3).
+// Color-correction entity weights (color_correction_weights.hpp, docs/fidelity.md#color-correction).
 
 #include "luxel/postfx/color_correction_weights.hpp"
 

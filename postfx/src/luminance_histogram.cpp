@@ -46,7 +46,7 @@ struct RegionDraw {
   }
 };
 
-/// The samples of `target` in the region that fall in one bucket's range (§7.2), counted the way
+/// The samples of `target` in the region that fall in one bucket's range, counted the way
 /// `count` says with the range test's combo C: the test inside the query, or the test marking the
 /// stencil and a counting draw inside the query.
 template <LuminanceRangeCombo C>
@@ -156,7 +156,7 @@ void LuminanceHistogram::issue(rasterizer::Context& ctx, const rasterizer::Textu
   BucketCount& b = buckets_[size_t(bucket)];
   LuminanceRangeParams params;
   params.frame.texture = &frame;
-  params.frame.state.srgb_read = true;  // dev/lumcompare's screenspace_general default (§7.1)
+  params.frame.state.srgb_read = true;  // dev/lumcompare's screenspace_general default
   params.frame.state.min = params.frame.state.mag = rasterizer::Filter::Point;
   params.frame.state.mip = rasterizer::MipFilter::None;
   params.frame.state.u = params.frame.state.v = rasterizer::Address::Clamp;

@@ -1,7 +1,7 @@
 // Color-correction nodes faded by their inputs and volumes ramped as the eye crosses them, in the
 // frame: each frame is the plain frame blended by postfx::color_correct at a weight worked out
-// here from SOURCE_FACTS 9.3 (not by the code under test); a frame's weights depend on the
-// clock's time alone, not on the frames rendered before; a camera path through a volume changes
+// here from docs/fidelity.md#color-correction (not by the code under test); a frame's weights depend on
+// the clock's time alone, not on the frames rendered before; a camera path through a volume changes
 // the weight, and the picture, by a bounded step per frame.
 
 #include "frame/frame_support.hpp"

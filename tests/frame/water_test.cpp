@@ -1,6 +1,6 @@
 // The water (renderer.hpp, frame/src/water_passes.hpp) on a small scene whose pixels are computed
 // here: a water plane at z = 0 over a floor, seen from above; what it reflects and refracts, the
-// Fresnel blend (SOURCE_FACTS §5.3), the reflection's exposure round trip (§6.4), the water's
+// Fresnel blend and the reflection's exposure round trip (docs/fidelity.md#water), the water's
 // depth from the refraction view's alpha, determinism, and what a scene without water draws.
 //
 // Every material is unlit (no bake needed). The normal map is flat with alpha 0, so the
@@ -227,7 +227,7 @@ TEST(Water, ReflectsWhatIsAboveItAtTheMirroredPlace) {
 }
 
 TEST(Water, ReflectionExposureRoundTripsThroughAQuarter) {
-  // SOURCE_FACTS §6.4: the reflection renders at 0.25 s into 8 bits and the water multiplies by
+  // docs/fidelity.md#water: the reflection renders at 0.25 s into 8 bits and the water multiplies by
   // GammaToLinear(tint) x 4. At s = 0.25 a radiance of 3.2 is stored as 0.2 and comes back as
   // 0.8: above 1 before the exposure, inside the target's range after it.
   WaterLook look;
@@ -246,7 +246,7 @@ TEST(Water, ReflectionExposureRoundTripsThroughAQuarter) {
 }
 
 TEST(Water, FresnelBlendsRefractionAndReflectionByTheViewAngle) {
-  // SOURCE_FACTS §5.3: F = (1 - sat(V·N))^5 x sat((depth - 0.05) x 20); result =
+  // docs/fidelity.md#water: F = (1 - sat(V·N))^5 x sat((depth - 0.05) x 20); result =
   // lerp(refraction, reflection, F), refraction lerped toward the fog color by sat(depth - 0.05).
   // The floor has the water's fog color, so the refraction is that color however deep; the
   // ceiling is what the water reflects. The water is deep here (depth > 0.1): F is the angle's

@@ -1,6 +1,6 @@
-// Bloom (SOURCE_FACTS §8): black stays black; a bright spot blooms symmetrically across and,
+// Bloom (docs/fidelity.md#bloom): black stays black; a bright spot blooms symmetrically across and,
 // with the SDK's vertical step, height/width as far down (symmetric again with the step fixed);
-// the whole pass against a reference written here in double from §8's formulas; 1 and 2 threads
+// the whole pass against a reference written here in double from its formulas; 1 and 2 threads
 // give the same bytes; any frame from 4x4 up; the bloom amount's smoothing.
 
 #include "image_plane.hpp"
@@ -46,7 +46,7 @@ TEST(Bloom, OfABlackFrameIsBlackAndAlphaIsKept) {
 // ---- A bright spot ---------------------------------------------------------------------------
 
 /// The first frame texel the downsample's taps read for small texel i along an axis of `frame`
-/// texels (§8.2's rectangle 0..frame-2 over frame/4 texels, centre to centre; taps at +0.5 and
+/// texels (the rectangle 0..frame-2 over frame/4 texels, centre to centre; taps at +0.5 and
 /// +2.5): small texel i reads frame texels first .. first + 3 and no other small texel does.
 int first_texel_read(int i, int frame) {
   const int small = frame / 4;
@@ -144,7 +144,7 @@ TEST(Bloom, VerticalSpreadFollowsTheWidthStepQuirkAndIsSymmetricWithoutIt) {
   // little less than h/w.
   EXPECT_GT(ratio, 0.5625);
   EXPECT_LT(ratio, 0.70);
-  // The down profile with the quirk: the tents of the taps at o * h/w texels (§8.2), in double.
+  // The down profile with the quirk: the tents of the taps at o * h/w texels, in double.
   for (int k = -kSpot; k <= kSpot; ++k) {
     double expected = 0.2013 * std::max(0.0, 1.0 - std::abs(k));
     for (int t = 0; t < 6; ++t) {
@@ -162,7 +162,7 @@ TEST(Bloom, VerticalSpreadFollowsTheWidthStepQuirkAndIsSymmetricWithoutIt) {
 
 // ---- Against a reference in double -------------------------------------------------------------
 
-/// §8.2 from the formulas: downsample (shaped taps), blur x, blur y x amount, add; 8-bit between.
+/// The bloom from the formulas: downsample (shaped taps), blur x, blur y x amount, add; 8-bit between.
 Plane reference_bloom(const rasterizer::Image& image, double amount, bool quirk) {
   const Plane frame = plane_of(image);
   const int W = frame.width, H = frame.height, w = W / 4, h = H / 4;
@@ -196,7 +196,7 @@ Plane reference_bloom(const rasterizer::Image& image, double amount, bool quirk)
   };
   const Plane blurred = blur(blur(small, 1.0 / w, 0.0, 1.0), 0.0, quirk ? 1.0 / w : 1.0 / h, amount);
   Plane out = frame;
-  // The add's rectangle: small texels (0, -0.5) to (w - 1, h - 1) over the frame (§8.3).
+  // The add's rectangle: small texels (0, -0.5) to (w - 1, h - 1) over the frame.
   const double ax = double(w - 1) / (W - 1), ay = (h - 1 + 0.5) / (H - 1);
   for (int y = 0; y < H; ++y)
     for (int x = 0; x < W; ++x)

@@ -211,7 +211,7 @@ TEST(ColorCorrection, IntoAnImageReplacesItsPixels) {
   EXPECT_EQ(other_size.rgba, want.rgba);
 }
 
-/// The 8-bit LUT's trilinear lookup in double, at an 8-bit color (§9.2's coordinates: c * 31).
+/// The 8-bit LUT's trilinear lookup in double, at an 8-bit color (the shader's coordinates: c * 31).
 glm::dvec3 lookup_reference(const test::Lattice& lut, const uint8_t* rgb) {
   return test::trilinear(lut, glm::dvec3(rgb[0], rgb[1], rgb[2]) / 255.0) / 255.0;
 }

@@ -1,5 +1,6 @@
-// Color-correction entity weights (SOURCE_FACTS §9.3) at times and distances where each rule of
-// the fades, the falloff, the volume ramps and the choice of four gives a number worked out here.
+// Color-correction entity weights (docs/fidelity.md#color-correction) at times and distances
+// where each rule of the fades, the falloff, the volume ramps and the choice of four gives a number
+// worked out here.
 
 #include "luxel/postfx/color_correction_weights.hpp"
 

@@ -1,4 +1,4 @@
-// Bloom and color correction in one pass (Engine_Post, SOURCE_FACTS §8.3): against a reference
+// Bloom and color correction in one pass (Engine_Post, docs/fidelity.md#bloom): against a reference
 // written here in double from the formulas (the frame plus the bloom texture stretched over it,
 // the unrounded sum looked up trilinearly in each LUT, clamped at the volume's edges), the same
 // bytes for any thread count, and where the sum passes 1 the result differs from adding first and

@@ -1,5 +1,5 @@
-// Film grain (SOURCE_FACTS §9.4): the tile is a function of (seed, frame) alone and looks like
-// uniform noise; the blend on a frame matches the shader's formula in double; the same bytes for
+// Film grain (docs/fidelity.md#film-grain): the tile is a function of (seed, frame) alone and looks
+// like uniform noise; the blend on a frame matches the shader's formula in double; the same bytes for
 // 1 and 2 threads; alpha kept.
 
 #include "luxel/postfx/film_grain.hpp"

@@ -1,4 +1,4 @@
-// The histogram's buckets against SOURCE_FACTS §7.3's tables, computed here in double.
+// The histogram's buckets against docs/fidelity.md#auto-exposure's rules, computed here in double.
 
 #include "luxel/postfx/histogram_buckets.hpp"
 

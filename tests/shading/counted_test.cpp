@@ -22,7 +22,7 @@ int slots(ShaderModel model, Body&& body) {
   return cost.arithmetic_slots - (caps(model).output_by_mov_only ? 1 : 0);
 }
 
-// ---- The ambient cube (SOURCE_FACTS 2.1), in our words ---------------------------------------
+// ---- The ambient cube (docs/fidelity.md#ambient-cube), in our words -------------------------
 
 struct AmbientCube {
   glm::vec3 color[6];  ///< +X, -X, +Y, -Y, +Z, -Z

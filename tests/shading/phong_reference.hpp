@@ -1,5 +1,5 @@
 #pragma once
-// The Phong ("skin") shader's lighting in double precision, written from SOURCE_FACTS §3.3 and §4
+// The Phong ("skin") shader's lighting in double precision, written from docs/fidelity.md#phong
 // (not from the shader code): the oracle of the Phong tests.
 
 #include <glm/geometric.hpp>
@@ -11,7 +11,7 @@
 
 namespace luxel::shading::source::testing {
 
-/// One directional light and the material of the skin shader, in double, from SOURCE_FACTS §4
+/// One directional light and the material of the skin shader, in double, from docs/fidelity.md#phong
 /// (written from the formulas, not from the shader code).
 struct PhongReference {
   glm::dvec3 light_dir{0.0, 0.0, 1.0};  // unit, toward the light

@@ -7,10 +7,10 @@
 // directional colours, and the three light probes of Ramamoorthi & Hanrahan 2001 rebuilt from
 // their published coefficients (band-limited, so SH9 must match them to quadrature accuracy: the
 // sharp test of the cosine-lobe constants). Each environment is fitted the two ways — the cube
-// as VRAD fills it (SOURCE_FACTS §2.2, dense-ray limit), SH9 by projection and the cosine
-// convolution — and both are evaluated with the shader's own float code over 1,000 normals.
-// Errors (irradiance_error.hpp): relative to E per channel (max, RMS), and in 8-bit steps after
-// FinalOutput's linear tone-map scale (brightest true value -> 1.0) and sRGB encoding.
+// as VRAD fills it (docs/fidelity.md#irradiance-volume-and-lights, dense-ray limit), SH9 by projection
+// and the cosine convolution — and both are evaluated with the shader's own float code over 1,000
+// normals. Errors (irradiance_error.hpp): relative to E per channel (max, RMS), and in 8-bit steps
+// after FinalOutput's linear tone-map scale (brightest true value -> 1.0) and sRGB encoding.
 // Also: the basis and constants against the paper's, the cube read as SH9, and the cost of both
 // in DX9 slots and registers (and why the combo is ps_3_0 only).
 

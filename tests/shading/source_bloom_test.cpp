@@ -1,4 +1,4 @@
-// The bloom's shaders (SOURCE_FACTS §8.2): the downsample's shaped taps against double math, the
+// The bloom's shaders (docs/fidelity.md#bloom): the downsample's shaped taps against double math, the
 // blur's 13 taps reproducing the 25 per-texel weights on a delta (both axes, with and without the
 // vertical step quirk), bloomadd returning its texel, SIMD vs scalar, and the budgets.
 
@@ -22,7 +22,7 @@ using testing::compare_lanes;
 using testing::Draw;
 using testing::expect_bit_identical;
 
-/// The downsample in double, from §8.2's formula.
+/// The downsample in double, from the formula.
 glm::dvec3 downsample_reference(const std::array<glm::dvec3, 4>& taps, const glm::dvec4& tint) {
   glm::dvec3 sum(0.0);
   for (const glm::dvec3& p : taps) {
@@ -113,7 +113,7 @@ BlurParams delta_blur(const rasterizer::Texture& t, BlurAxis axis, BlurStep step
   return p;
 }
 
-// §8.2's equivalent per-texel weights for |k| = 0..12.
+// The blur's equivalent per-texel weights for |k| = 0..12.
 constexpr double kPerTexel[13] = {0.2013,  0.14495, 0.07355, 0.04684, 0.03526, 0.02644, 0.01966,
                                   0.01478, 0.01142, 0.00901, 0.00719, 0.00571, 0.00449};
 

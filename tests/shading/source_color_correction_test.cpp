@@ -1,4 +1,4 @@
-// The color-correction shader: the volume coordinate lands on texel centers (§9.2), the blend is
+// The color-correction shader: the volume coordinate lands on texel centers, the blend is
 // the formula's at colors where a wrong weight or a missing term shows, SIMD and scalar lanes agree
 // in bits, every combo fits every pixel-shader model with one fetch per LUT behind one dependent
 // read, and a lookup between lattice points is the trilinear mix of its eight neighbours.

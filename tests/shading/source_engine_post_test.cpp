@@ -1,4 +1,4 @@
-// Engine_Post's combine (SOURCE_FACTS §8.3): the bloom is added before the lookups read the sum,
+// Engine_Post's combine (docs/fidelity.md#bloom): the bloom is added before the lookups read the sum,
 // the blend is the formula's at colors where a missing term or the wrong order shows, SIMD and
 // scalar lanes agree in bits, and every combo fits every pixel-shader model with the frame's and
 // the bloom's fetches before the lookups' dependent reads.

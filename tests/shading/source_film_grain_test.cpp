@@ -1,5 +1,5 @@
-// The film-grain shader (SOURCE_FACTS §9.4): its source color and alpha against the formula, its
-// blend state, SIMD vs scalar, and its budget. The blend itself is checked on whole frames in
+// The film-grain shader (docs/fidelity.md#film-grain): its source color and alpha against the formula,
+// its blend state, SIMD vs scalar, and its budget. The blend itself is checked on whole frames in
 // tests/postfx/film_grain_test.cpp.
 
 #include "source_support.hpp"

@@ -99,9 +99,9 @@ TEST(SourceLightmapped, NormalAlongABasisVectorSeesOnlyItsLightmap) {
   }
 }
 
-// The RNM combine of §1.3 in double, from the formula: n = 2 tex - 1, d_i = sat(n · b_i)², diffuse
-// = Σ d_i LM_i / Σ d_i × c12 × albedo. The basis is the exact one (√(2/3), 1/√6, 1/√2, 1/√3), not
-// the shader's float literals.
+// The RNM combine (docs/fidelity.md#lightmappedgeneric) in double, from the formula:
+// n = 2 tex - 1, d_i = sat(n · b_i)², diffuse = Σ d_i LM_i / Σ d_i × c12 × albedo. The basis is
+// the exact one (√(2/3), 1/√6, 1/√2, 1/√3), not the shader's float literals.
 glm::dvec3 rnm_reference(const glm::vec4& bump_texel, const glm::dvec3 (&lightmaps)[3], const glm::dvec3& c12,
                          const glm::dvec3& albedo) {
   const double basis[3][3] = {{std::sqrt(2.0 / 3.0), 0.0, 1.0 / std::sqrt(3.0)},
@@ -219,8 +219,8 @@ glm::dvec3 direction_env_reference(const glm::dvec3& r) {
   return {(d.x * 0.5 + 0.6) * 2.0, d.y * 0.5 + 0.6, (d.z * 0.5 + 0.6) * 3.0};
 }
 
-/// §5.1 in double from the formula: R = 2(N·E)N − (N·N)E, spec = ENV_MAP_SCALE · cube(R) · mask ·
-/// tint, then (full path) contrast, saturation and Fresnel (1 − N·Ê)^5 (1 − R0) + R0.
+/// The world env map in double from the formula: R = 2(N·E)N − (N·N)E, spec = ENV_MAP_SCALE · cube(R) ·
+/// mask · tint, then (full path) contrast, saturation and Fresnel (1 − N·Ê)^5 (1 − R0) + R0.
 struct EnvmapReference {
   glm::dvec3 mask{1.0}, tint{1.0};
   double envmap_scale = 1.0, contrast = 0.0, saturation = 1.0, r0 = 1.0;

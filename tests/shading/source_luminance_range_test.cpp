@@ -63,7 +63,7 @@ TEST(SourceLuminanceRange, WeightsAreTheHistogramOnesAndScaleMultipliesFirst) {
 
 TEST(SourceLuminanceRange, ConstantSubstitutesTheTopBucketAndScalesOnlyInFloatMode) {
   EXPECT_EQ(luminance_range_constant(0.9077f, 1.0f).y, 10000.0f);
-  // The original algorithm's top bound in float (§7.2): no substitution, so white fails.
+  // The original algorithm's top bound in float: no substitution, so white fails.
   const glm::vec3 original = luminance_range_constant(0.85599f, 0.99999982f);
   EXPECT_EQ(original.y, 0.99999982f);
   EXPECT_EQ(run<kAlpha>(glm::vec3(1.0f), original.x, original.y).color.w, 0.0f);
@@ -157,7 +157,7 @@ void check_counts(int samples) {
   rasterizer::DepthStencilTarget ds(W, H, samples);
   const LuminanceRangePixelShader<C> ps{&params};
 
-  // The new algorithm's 16 buckets and the calibration bucket (§7.3).
+  // The new algorithm's 16 buckets and the calibration bucket.
   for (int bucket = 0; bucket <= 16; ++bucket) {
     const float lo = bucket == 16 ? 0.0f : std::pow(bucket / 16.0f, 1.5f);
     const float hi = bucket == 16 ? 100000.0f : std::pow((bucket + 1) / 16.0f, 1.5f);

@@ -131,7 +131,8 @@ TEST(SourceVertexLit, PhongFresnelRangesAndExponentQuirks) {
 }
 
 TEST(SourceVertexLit, SpotBetweenItsConesFollowsTheFalloffExponent) {
-  // §3.2: atten = 1 / (a0 + a1 d + a2 d²) · sat(max(1e-4, (cos θ − cos outer) / (cos inner − cos
+  // docs/fidelity.md#model-lights:
+  // atten = 1 / (a0 + a1 d + a2 d²) · sat(max(1e-4, (cos θ − cos outer) / (cos inner − cos
   // outer))^exponent), with θ between the cones so that the fringe is neither 0 nor 1 and an
   // exponent of 1 or a missing pow would show. Lambert, normal toward the light: N·L = 1.
   constexpr double kInner = 0.95, kOuter = 0.80;

@@ -1,5 +1,5 @@
 #pragma once
-// Ambient cubes on the irradiance-volume grid (SOURCE_FACTS 2.2).
+// Ambient cubes on the irradiance-volume grid (docs/fidelity.md#irradiance-volume-and-lights).
 //
 // Grid: the scene's IrradianceVolume: `counts` samples per axis from `min` at `spacing` (counts
 // derived as floor((max - min) / spacing) + 1 when the volume gives none; spacing from the

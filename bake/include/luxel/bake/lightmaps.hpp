@@ -1,5 +1,6 @@
 #pragma once
-// Radiosity-normal-mapped lightmaps, as vrad made them (SOURCE_FACTS 1.2, 1.6).
+// Radiosity-normal-mapped lightmaps, as vrad made them (docs/fidelity.md#bake-vrad,
+// #rnm-basis-and-lightmaps).
 //
 // What is baked. Every mesh that is world geometry (in no Model) with a LightmappedGeneric
 // material gets luxels in one atlas shared by all of them, addressed by its uv1 (glTF
@@ -41,8 +42,9 @@
 //   bounce k: rays that hit the front of a lightmapped surface see albedo x that surface's flat
 //             map of bounce k-1 (nearest luxel); of another diffuse surface (models), at bounce 1
 //             only, albedo x the direct light of the lights there. Back faces are black.
-// Stopping rule (vrad's): after bounce k >= 1, stop if the light it added (luminance x luxel area,
-// summed over the atlas) is less than `stop_fraction` of all light so far, or at `max_bounces`.
+// Stopping rule (luxel's; vrad's threshold is absolute, docs/fidelity.md#bake-vrad): after
+// bounce k >= 1, stop if the light it added (luminance x luxel area, summed over the atlas) is less
+// than `stop_fraction` of all light so far, or at `max_bounces`.
 //
 // Albedo is vrad's "reflectivity": the material's color times its base texture's mean (decoded
 // from sRGB when the texture is sRGB), clamped to [0, 1].

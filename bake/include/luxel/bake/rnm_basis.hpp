@@ -1,7 +1,7 @@
 #pragma once
-// The radiosity-normal-mapping basis (SOURCE_FACTS 1.1: common_fxc.h bumpBasis, bumpvects.h
-// g_localBumpBasis): three orthonormal directions in tangent space (x = tangent, the texture's
-// S direction; y = bitangent = w cross(n, t), up the image; z = normal), each 54.7356 degrees
+// The radiosity-normal-mapping basis (docs/fidelity.md#rnm-basis-and-lightmaps: common_fxc.h bumpBasis,
+// bumpvects.h g_localBumpBasis): three orthonormal directions in tangent space (x = tangent, the
+// texture's S direction; y = bitangent = w cross(n, t), up the image; z = normal), each 54.7356 degrees
 // from the normal and 120 degrees apart around it.
 
 #include <glm/vec3.hpp>

@@ -2,8 +2,9 @@
 // Looks: a style over the whole finished frame, chosen by whoever renders it (FrameSettings::look,
 // `luxel render --look`), on top of what the scene's own post passes do.
 //
-// archival: old footage, the look Day of Defeat made with film grain and desaturation (SOURCE_FACTS
-// 9.4; its effect code is not in the SDK, so how the parts combine is luxel's):
+// archival: old footage, the look Day of Defeat made with film grain and desaturation
+// (docs/fidelity.md#film-grain: its effect code is not in the SDK, so how the parts combine is
+// luxel's):
 //  - the grade builtin:archival (postfx/grade.hpp: saturation 0.1, faded blacks and whites, a
 //    slight sepia) at full weight, in the color-correction pass, on top of the scene's nodes and
 //    volumes: each of their LUTs is composed with the grade (postfx::compose) and keeps its

@@ -28,7 +28,7 @@
 //    drawn.
 //  - Water (water_ps2x, the expensive water seen from above): before the frame, for each height
 //    at which the camera sees water, a reflection view (the scene mirrored about the water plane,
-//    what lies below it clipped, at 0.25 x the frame's tone-map scale, SOURCE_FACTS §6.4) and a
+//    what lies below it clipped, at 0.25 x the frame's tone-map scale, docs/fidelity.md#water) and a
 //    refraction view (what lies below the plane, in the water's height fog, whose factor opaque
 //    materials write to alpha: the water's depth) are drawn into square one-sample targets
 //    (water_texture_side: the SDK's 1024 x 1024) and copied into 8-bit textures; the water
@@ -58,14 +58,14 @@
 //    _rt_FullFrameFB), which the frame resolves into when any of them runs; the image is then
 //    the color correction's output, or, without it, the copy's pixels (the "frame copy" pass).
 //  - After the histogram pass, on the finished 8-bit frame as Source's INTEGER HDR path runs them
-//    (SOURCE_FACTS 6.5): bloom (FrameSettings::bloom, frames of 4 x 4 and more, postfx/bloom.hpp: the quarter-size
-//    downsample, the two blurs, the additive combine in gamma space), its amount the exposure
-//    controls' bloom scale where the camera is, smoothed once per frame (postfx/bloom_amount.hpp)
-//    from the scale at the first frame (the SDK's starts at 1 once per game);
+//    (docs/fidelity.md#tone-mapping): bloom (FrameSettings::bloom, frames of 4 x 4 and more,
+//    postfx/bloom.hpp: the quarter-size downsample, the two blurs, the additive combine in gamma
+//    space), its amount the exposure controls' bloom scale where the camera is, smoothed once per frame
+//    (postfx/bloom_amount.hpp) from the scale at the first frame (the SDK's starts at 1 once per game);
 //    then color correction (FrameSettings::color_correction): the scene's color-correction nodes
 //    (Source's color_correction: faded in and out by the inputs sent to them up to the clock's
-//    time with the SDK's fades, SOURCE_FACTS 9.3, an enabled node holding max_weight where the
-//    SDK spawns it at 1; weighted by the eye's distance through their falloffs) and volumes
+//    time with the SDK's fades, docs/fidelity.md#color-correction, an enabled node holding max_weight
+//    where the SDK spawns it at 1; weighted by the eye's distance through their falloffs) and volumes
 //    (color_correction_volume: ramped up from when the eye entered, down from when it left, the
 //    eye's place tested every 0.01 s of the clock from 0 as the volume thinks), the four
 //    heaviest blended by Source's colorcorrection pass through 32^3 LUTs
@@ -75,7 +75,7 @@
 //    (FrameSettings::film_grain), its noise seeded by the options' seed and the clock's time. A
 //    look (FrameSettings::look, look.hpp) adds its grade to the color correction, over the
 //    scene's nodes, and its grain. When bloom and color correction both run, the bloom's add and
-//    the correction are one Engine_Post draw, as in the engine (SOURCE_FACTS 8.3): the lookups
+//    the correction are one Engine_Post draw, as in the engine (docs/fidelity.md#bloom): the lookups
 //    read the unrounded sum. Passes "bloom" (3 draws then, 5 with the add), "color correction",
 //    "film grain".
 // Order: the water's views, then opaque meshes in scene order (depth LESS, single-sided materials
@@ -90,22 +90,24 @@
 // material's own cube or the sky cube, never from a cube-map sample (a capture never sees another
 // capture: the result does not depend on the order samples are baked in, nor on cubes attached
 // before); the background scaled by the exposure as the surfaces are (Source scales its clear
-// color by the tone-map scale, SOURCE_FACTS 6.3), so that every exposure sees the same radiance.
+// color by the tone-map scale, docs/fidelity.md#tone-mapping), so that every exposure sees the
+// same radiance.
 // The scene's clock (FrameSettings::time, then Renderer::set_time): models move along their
 // paths (scenes/paths.hpp), the camera along the scene's camera path when asked
 // (FrameSettings::camera_path), the water's normal map scrolls. A sequence of frames is the same
 // renderer with its clock moved forward before each; a model's lighting is then time-averaged
 // across the frames, as Source averages it so that a model's light does not pop when it crosses
 // into another irradiance-volume cell or another light becomes one of its two (the engine's code
-// is closed, SOURCE_FACTS 12; the rule is luxel's): per model, the volume's ambient cube at its
-// centroid and, per scene light, its share s in [0, 1] of being drawn as one of the two local
-// lights (1 while the significance rule keeps it, 0 while it does not) are each moved towards
-// their value at the new time by 1 - exp(-dt / tau), tau = FrameSettings::lighting_time_constant,
-// dt the time since the last frame; the first frame, and any frame whose time is earlier than the
-// last, starts them at their values. The two lights with the largest shares (ties: the more
-// significant) are drawn as local lights at s x their color, and fold (1 - s) of themselves into
-// the cube; every other light folds wholly; the hero boost follows. A model at rest under
-// unchanging light is therefore lit exactly as without averaging.
+// is closed, docs/fidelity.md#irradiance-volume-and-lights; the rule is luxel's): per model, the
+// volume's ambient cube at its centroid and, per scene light, its share s in [0, 1] of being drawn
+// as one of the two local lights (1 while the significance rule keeps it, 0 while it does not) are
+// each moved towards their value at the new time by 1 - exp(-dt / tau),
+// tau = FrameSettings::lighting_time_constant, dt the time since the last frame; the first frame,
+// and any frame whose time is earlier than the last, starts them at their values. The two lights
+// with the largest shares (ties: the more significant) are drawn as local lights at s x their
+// color, and fold (1 - s) of themselves into the cube; every other light folds wholly; the hero
+// boost follows. A model at rest under unchanging light is therefore lit exactly as without
+// averaging.
 // Not drawn yet: water seen from below, cheap water, detail textures, env maps on models,
 // self-illumination; sky-family meshes (the sky is Scene::sky_texture).
 //

@@ -1,5 +1,5 @@
 #pragma once
-// Source's auto exposure (SOURCE_FACTS §7.5-7.7): the tone-map scale each frame is drawn with,
+// Source's auto exposure (docs/fidelity.md#auto-exposure): the tone-map scale each frame is drawn with,
 // measured from the frames before it.
 //
 // After each frame (viewpostprocess.cpp, DoEnginePostProcessing):
@@ -22,7 +22,7 @@
 //     it rises towards `accelerate_down` x rate as the gap grows to 1.5 (min(3r, lerp(r, 3r,
 //     gap / 1.5))); for the percentile algorithm rate x dt is capped at 1/64 per frame so that the
 //     scale does not ride the histogram as it is rebuilt. rate 0 jumps to the goal.
-// The HL2-era chase is in closed materialsystem code (§7.7). Step 4 is the chase Valve published
+// The HL2-era chase is in closed materialsystem code. Step 4 is the chase Valve published
 // with the same two knobs in a later branch's client (Alien Swarm SDK, 2010: viewpostprocess.cpp,
 // CTonemapSystem::SetTonemapScale); luxel takes it as the documented choice. Like the engine's,
 // it depends on the frame rate (alpha is linear in dt, and the cap is per frame).

@@ -1,6 +1,6 @@
 #pragma once
 // Bloom on the tone-mapped 8-bit frame, as Source's INTEGER/LDR path draws it
-// (SOURCE_FACTS §8.2, Generate8BitBloomTexture in viewpostprocess.cpp; §6.5 steps 3-5):
+// (docs/fidelity.md#bloom, Generate8BitBloomTexture in viewpostprocess.cpp):
 //
 //   1. copy      the frame -> _rt_FullFrameFB (resolved when multisampled), read as gamma values,
 //                or the caller's copy of the frame (full_frame.hpp) read as it is;
@@ -18,10 +18,10 @@
 //
 // Rectangles (DrawScreenSpaceRectangle's centre-to-centre mapping): the downsample shows source
 // texels 0..W-2 x 0..H-2 on the W/4 x H/4 target (the "-2" leaves room for the taps reaching past
-// the base texel, §8.2); the blurs show the small target on itself; the add shows the small
+// the base texel); the blurs show the small target on itself; the add shows the small
 // target's texels from (0, -0.5) to (w-1, h-1) on the whole frame (viewpostprocess.cpp's
 // fullViewportPostSrcCorners, which bloomadd and Engine_Post share: the half texel up is Valve's,
-// §8.3, and unexplained there).
+// and unexplained there).
 //
 // Frame sizes: the SDK asserts that the small targets are exactly a quarter of the frame. Here a
 // frame of any size from 4x4 up is accepted: the small targets are floor(W/4) x floor(H/4) and the

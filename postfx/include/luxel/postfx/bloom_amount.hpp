@@ -1,5 +1,5 @@
 #pragma once
-// The bloom amount and its smoothing from frame to frame (SOURCE_FACTS §8.1, GetBloomAmount in
+// The bloom amount and its smoothing from frame to frame (docs/fidelity.md#bloom, GetBloomAmount in
 // viewpostprocess.cpp): the vertical blur multiplies the bloom by it.
 //
 //   smoothed_t = scale * 0.05 + 0.95 * smoothed_{t-1}      (mat_bloomamount_rate 0.05; smoothed_0 = 1)

@@ -1,5 +1,5 @@
 #pragma once
-// Color correction of a finished 8-bit frame (SOURCE_FACTS §9), two ways:
+// Color correction of a finished 8-bit frame (docs/fidelity.md#color-correction), two ways:
 //  - color_correct(): the engine's way. The frame becomes an RGBA8 texture, each LUT a 32^3 RGBA8
 //    volume (lut.hpp), and one full-screen draw of colorcorrection_ps2x
 //    (shading/source/color_correction.hpp) through the rasterizer writes the result with sRGB
@@ -17,8 +17,8 @@
 // in 1.4% of the channels; the 33^3 Lustre .3dl up to 13), which `luxel grade --exact` shows.
 //
 // Weights. The engine blends out = frame * defaultWeight + sum_k LUT_k(frame) * w_k with up to
-// four lookups (§9.2); how it derives defaultWeight from the entities' weights is closed (§9.2,
-// NOT IN SDK). luxel's choice, the obvious reading the facts name: defaultWeight = 1 - sum_k w_k,
+// four lookups; how it derives defaultWeight from the entities' weights is closed (NOT IN SDK).
+// luxel's choice, the obvious reading: defaultWeight = 1 - sum_k w_k,
 // clamped at 0, so weights summing to 1 or more leave none of the ungraded frame (and above 1
 // brighten it, as the shader's sum would).
 
@@ -34,7 +34,7 @@
 
 namespace luxel::postfx {
 
-/// Most lookups one pass blends (§9.2).
+/// Most lookups one pass blends.
 inline constexpr int kMaxLuts = shading::source::kMaxColorCorrectionLuts;
 
 struct WeightedLut {
@@ -62,7 +62,7 @@ rasterizer::Image color_correct(rasterizer::Context& ctx, const rasterizer::Imag
 rasterizer::Image color_correct(rasterizer::Context& ctx, const rasterizer::Texture& frame,
                                 std::span<const WeightedLut> luts, const ShaderTally& tally = {});
 
-/// The engine's pass when the frame also has a bloom (SOURCE_FACTS §8.3; Engine_Post,
+/// The engine's pass when the frame also has a bloom (docs/fidelity.md#bloom; Engine_Post,
 /// shading/source/engine_post.hpp): `bloom` has blurred the frame (Bloom::blur), and one draw adds
 /// the bloom to the frame and color-corrects the sum, unrounded in between. Returns the finished
 /// frame; the draw's shader goes to `tally`. Same argument checks as above; std::logic_error when

@@ -1,5 +1,5 @@
 #pragma once
-// The weights of Source's color-correction entities (SOURCE_FACTS §9.3), which the pass
+// The weights of Source's color-correction entities (docs/fidelity.md#color-correction), which the pass
 // (color_correction.hpp) blends. Times are in seconds; the SDK updates the fades on think ticks
 // (the volume every 0.01 s), luxel evaluates them at the frame's time.
 //
@@ -16,7 +16,7 @@
 //   - entering at time t0 with weight w0 ramps w0 + (t - t0) / ((1 - w0) fade), capped at 1;
 //   - leaving at t1 with weight w1 ramps 1 - min(1, (1 - w1) + (t - t1) / (w1 fade)), so down to 0;
 //   - a fade of 0 (or less) jumps: 1 inside, 0 outside.
-// The engine blends at most four lookups (§9.2); which four when more entities weigh in is closed
+// The engine blends at most four lookups; which four when more entities weigh in is closed
 // (NOT IN SDK): luxel takes the four heaviest, the earlier entity first on a tie.
 
 #include <span>

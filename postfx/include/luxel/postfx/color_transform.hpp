@@ -4,8 +4,8 @@
 // layered operators (grade.hpp), a LUT file read through OpenColorIO (lut_file.hpp) or a Source
 // .raw (raw_lut_file.hpp); lut_source.hpp picks one by name.
 //
-// Colors are the gamma-space values of the 8-bit frame over 255 (SOURCE_FACTS §9.1: LUTs are
-// authored on gamma-space 8-bit colors), so a file's transform is applied to them as they are.
+// Colors are the gamma-space values of the 8-bit frame over 255 (LUTs are authored on gamma-space
+// 8-bit colors, docs/fidelity.md#color-correction), so a file's transform applies to them as is.
 
 #include <glm/vec3.hpp>
 

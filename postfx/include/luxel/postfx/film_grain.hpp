@@ -1,6 +1,6 @@
 #pragma once
 // Film grain on the finished 8-bit frame: the SDK's filmgrain shader and blend
-// (shading/source/film_grain.hpp, SOURCE_FACTS §9.4) over a grain texture that luxel makes.
+// (shading/source/film_grain.hpp, docs/fidelity.md#film-grain) over a grain texture that luxel makes.
 //
 // The SDK reads its grain from a texture file and the effect class that draws it is not in the
 // SDK, so the texture is ours: a tile_size x tile_size RGBA8 tile of uniform noise, each texel's

@@ -1,8 +1,8 @@
 #pragma once
 // _rt_FullFrameFB: the finished frame copied once into a texture (UpdateScreenEffectTexture;
-// SOURCE_FACTS §6.5 step 3, §7.1, §8.2 step 1), which every post pass of the frame then reads:
-// the luminance histogram with sRGB read on (its luminance is linear, §7.1), bloom's downsample
-// and Engine_Post with it off (gamma values, §8.2, §8.3). D3D9 made sRGB decode a sampler state
+// docs/fidelity.md#auto-exposure, #bloom), which every post pass of the frame then reads:
+// the luminance histogram with sRGB read on (its luminance is linear), bloom's downsample
+// and Engine_Post with it off (gamma values). D3D9 made sRGB decode a sampler state
 // (rasterizer::Sampler::srgb_read, D3DSAMP_SRGBTEXTURE), so one RGBA8 copy serves them all.
 
 #include "luxel/rasterizer/context.hpp"

@@ -1,7 +1,7 @@
 #pragma once
 // Grades: color transforms built from layered operators, the way a colorist builds a look in an
 // image editor, then sampled on the engine's lattice (lut.hpp) as Source's color-correction
-// authoring did (SOURCE_FACTS §9.1: gamma-space 8-bit colors in, gamma-space colors out).
+// authoring did (docs/fidelity.md#color-correction: gamma-space 8-bit colors in and out).
 //
 // Operators act on gamma-space RGB in [0, 1], in the grade's order, and each clamps its result to
 // [0, 1] (as an 8-bit editor's layers do), so the next sees what a frame could hold:
@@ -13,7 +13,7 @@
 //                 the Bernstein basis of the luma L (the three weights sum to 1 for every L);
 //   Saturation    L + amount (c - L): 0 grey, 1 unchanged, above 1 more saturated.
 // L is the gamma-space luma with the weights (0.299, 0.587, 0.114), the grey Source's shaders use
-// for saturation (§10.6).
+// for saturation (docs/fidelity.md#gamma-and-colors).
 //
 // Presets (grade_preset): "day-for-night" (night shot by day: desaturated, blue, dark),
 // "archival" (desaturated archival-footage look: faded blacks and whites, a slight sepia),
@@ -63,7 +63,7 @@ struct Grade {
   std::vector<GradeOperator> operators;  ///< applied first to last
 };
 
-/// The gamma-space luma of §10.6.
+/// The gamma-space luma (0.299, 0.587, 0.114).
 float grade_luma(glm::vec3 c);
 
 /// One color through the grade (one that grade_transform accepts).

@@ -1,6 +1,6 @@
 #pragma once
 // The luminance histogram of Source's auto exposure, counted as the engine counts it
-// (SOURCE_FACTS §7.1-7.4; viewpostprocess.cpp, CLuminanceHistogramSystem):
+// (docs/fidelity.md#auto-exposure; viewpostprocess.cpp, CLuminanceHistogramSystem):
 //
 //  - What is measured: the finished frame, tone-mapped, fogged, 8-bit, before bloom (the copy
 //    to _rt_FullFrameFB), read with sRGB decode: luminance is linear.
@@ -16,7 +16,7 @@
 //    the test passes or fails a pixel as a whole (its shader runs once per pixel, and every
 //    sample of a pixel sees the same stencil), for a quarter of the coverage and stencil work at
 //    4x MSAA.
-//  - When (§7.4): each update, buckets never measured are issued first, in order, one per frame;
+//  - When: each update, buckets never measured are issued first, in order, one per frame;
 //    a query is read back once it is `query_latency` frames old (the engine's 3: "current frame
 //    > queued frame + 2"); then, if nothing was issued, the bucket whose last count is oldest is
 //    measured again. A bucket's count is its latest; it is valid from its first result on,
@@ -42,7 +42,7 @@
 
 namespace luxel::postfx {
 
-/// How the in-range samples are counted (§7.2).
+/// How the in-range samples are counted.
 enum class HistogramCount {
   direct_query,  ///< the range test inside the query (mat_tonemapping_occlusion_use_stencil 0, the default)
   stencil,       ///< the range test marks the stencil, a second draw counts stencil == 1 inside the query
@@ -102,7 +102,7 @@ class LuminanceHistogram {
   /// The bucket issued by the last update, or -1.
   int last_issued() const { return last_issued_; }
   /// m_npixels: the pixels of the whole viewport (not the region), which the mean algorithm's
-  /// calibration compares with (§7.6).
+  /// calibration compares with.
   uint64_t viewport_pixels() const { return viewport_pixels_; }
 
  private:

@@ -1,12 +1,12 @@
 #pragma once
-// The engine's color-correction LUT (SOURCE_FACTS §9.1): a 32x32x32 lattice of color24 entries,
-// gamma-space 8-bit in and out. Entry (r, g, b) holds what the color (r/31, g/31, b/31) becomes:
-// the shader's coordinates (§9.2, uvw = c * 31/32 + 0.5/32) put c = i/31 on texel center i, and
-// the volume is filtered trilinearly in between. Other sizes N (c = i/(N-1), uvw = c (N-1)/N +
+// The engine's color-correction LUT (docs/fidelity.md#color-correction): a 32x32x32 lattice of
+// color24 entries, gamma-space 8-bit in and out. Entry (r, g, b) holds what the color (r/31, g/31,
+// b/31) becomes: the shader's coordinates (uvw = c * 31/32 + 0.5/32) put c = i/31 on texel center i,
+// and the volume is filtered trilinearly in between. Other sizes N (c = i/(N-1), uvw = c (N-1)/N +
 // 0.5/N) are luxel's, to measure what the engine's 32 costs against smaller and larger lattices.
 //
-// Entries are stored red fastest, index r + 32 g + 1024 b: the bit layout of the RGBX5551 key
-// (§9.1). The engine's .raw loader is closed, so that order is an inference; it is also the
+// Entries are stored red fastest, index r + 32 g + 1024 b: the bit layout of the RGBX5551 key.
+// The engine's .raw loader is closed, so that order is an inference; it is also the
 // rasterizer's volume layout (x fastest, then y, then slices), so the entries upload as they are.
 
 #include "luxel/postfx/color_transform.hpp"

@@ -1,6 +1,6 @@
 #pragma once
-// Source's own color-correction files (SOURCE_FACTS §9.1): .raw, the engine's 32^3 lattice as
-// 32,768 color24 entries, 98,304 bytes, nothing else. The engine's loader is closed, so the
+// Source's own color-correction files (docs/fidelity.md#color-correction): .raw, the engine's 32^3
+// lattice as 32,768 color24 entries, 98,304 bytes, nothing else. The engine's loader is closed, so the
 // order is an inference: red fastest, then green, then blue (index r + 32 g + 1024 b, the
 // RGBX5551 key's bit order), bytes R, G, B. OpenColorIO does not read the format; it is read and
 // written here byte for byte, and its exact transform is that lattice interpolated trilinearly in

@@ -317,7 +317,7 @@ struct ExposureZone {
 /// each one atlas of the same size, addressed by the meshes' uv1. Attached by `luxel bake`
 /// (bake/), or loaded; absent until then. Values are linear HDR in the shaders' lightmap unit: a
 /// white Lambertian surface shows the value as its radiance (irradiance / pi), so
-/// diffuse = albedo x lightmap (SOURCE_FACTS 1.3, HDR: lightmap scale factor 1).
+/// diffuse = albedo x lightmap (docs/fidelity.md#lightmappedgeneric; HDR: lightmap scale factor 1).
 struct Lightmaps {
   int width = 0, height = 0;
   int flat = -1;                            ///< Scene::textures: irradiance / pi about the surface normal

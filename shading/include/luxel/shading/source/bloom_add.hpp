@@ -1,12 +1,12 @@
 #pragma once
-// The bloom's combine when neither software AA nor color correction runs (SOURCE_FACTS §8.2 step 4;
+// The bloom's combine when neither software AA nor color correction runs (docs/fidelity.md#bloom;
 // bloomadd_ps2x.fxc, material dev/bloomadd): the shader returns the bloom texel, and the draw adds
 // it onto the frame with ONE/ONE blending. The frame is the 8-bit back buffer without sRGB write,
-// so the add happens on gamma values, as on DX9-class hardware (§8.2, §8.3):
+// so the add happens on gamma values, as on DX9-class hardware:
 //
 //   frame' = saturate(frame + bloom)          per channel, 8-bit, rounded
 //
-// bloom_add_pipeline_state() is that draw's state. The dev/bloomadd material is NOT IN SDK (§12);
+// bloom_add_pipeline_state() is that draw's state. The dev/bloomadd material is NOT IN SDK;
 // we write rgb only, so the frame's alpha (whatever the scene stored there) survives the add.
 // Alpha out of the shader: 1 (the SDK's), unused with that mask.
 

@@ -1,9 +1,9 @@
 #pragma once
-// The bloom's blur (SOURCE_FACTS §8.2 step 3; BlurFilter_ps2x.fxc, BlurFilterX.cpp, BlurFilterY.cpp):
+// The bloom's blur (docs/fidelity.md#bloom; BlurFilter_ps2x.fxc, BlurFilterX.cpp, BlurFilterY.cpp):
 // 13 bilinear taps along one axis, a centre and six symmetric pairs. Each pair's tap sits between
 // two texels at the offset where bilinear filtering gives the two texels the weights of a wider
 // kernel, so 13 fetches make a 25-texel kernel (per-texel weights 0.2013, 0.14495, 0.07355, ...;
-// heavy-tailed, not a Gaussian, §8.2):
+// heavy-tailed, not a Gaussian):
 //
 //   out.rgb = scale.rgb * (0.2013 t(0) + sum_k w_k (t(+o_k) + t(-o_k)))
 //   w = 0.2185, 0.0821, 0.0461, 0.0262, 0.0162, 0.0102   at o = 1.3366, 3.4295, 5.4264, 7.4359,
@@ -11,7 +11,7 @@
 //
 // One shader for both passes; blur_constants() sets the axis and the scale:
 //  - horizontal (dev/blurfilterx): step 1/width along u, scale 1;
-//  - vertical (dev/blurfiltery): step along v, scale = the bloom amount (§8.1). The SDK computes
+//  - vertical (dev/blurfiltery): step along v, scale = the bloom amount. The SDK computes
 //    this step from the texture's *width* (BlurFilterY.cpp reads GetActualWidth() into its height),
 //    so a vertical tap lands at o_k * height/width texels: 0.5625 of a texel at 16:9. That quirk is
 //    the default (BlurStep::sdk_width_quirk); BlurStep::true_height steps whole texels.

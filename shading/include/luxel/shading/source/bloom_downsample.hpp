@@ -1,6 +1,6 @@
 #pragma once
-// The bloom's downsample (SOURCE_FACTS §8.2 step 2; Downsample_nohdr_ps2x.fxc, downsample_nohdr.cpp):
-// the tone-mapped 8-bit frame, read as gamma values (sRGB read off, §10.1), to a quarter-size
+// The bloom's downsample (docs/fidelity.md#bloom; Downsample_nohdr_ps2x.fxc, downsample_nohdr.cpp):
+// the tone-mapped 8-bit frame, read as gamma values (sRGB read off), to a quarter-size
 // target. Four bilinear taps at source-texel offsets (0.5, 0.5), (2.5, 0.5), (0.5, 2.5), (2.5, 2.5)
 // from the pixel's base coordinate, each landing between two texels on both axes, so the four
 // cover a 4x4 block. Each tap is shaped before the average, so that bright texels survive and
@@ -8,13 +8,13 @@
 //
 //   lum = dot(p, tint.rgb);   p <- pow(p, tint.w) * lum;   out = average of the 4 shaped taps
 //
-// tint = c0 = (r_bloomtintr, g, b, r_bloomtintexponent) = (0.3, 0.59, 0.11, 2.2) (§10.6); with
+// tint = c0 = (r_bloomtintr, g, b, r_bloomtintexponent) = (0.3, 0.59, 0.11, 2.2); with
 // $bloomtintenable 0 the weights are 0.333 and the exponent 1 (downsample_constant()). The SDK
 // switches this with constants, not a static combo, so there is one shader.
 //
 // Alpha: 1. What the SDK writes there is not read by any later pass (the blur reads rgb, bloomadd
 // does not write alpha), so it is our choice.
-// No FinalOutput tone map (post passes use TONEMAP NONE, §6.3); the 8-bit target stores gamma
+// No FinalOutput tone map (post passes use TONEMAP NONE); the 8-bit target stores gamma
 // values as they are (no sRGB write).
 //
 // Where the taps are: the SDK's vertex shader adds the four offsets (in source texels) to the
@@ -34,7 +34,7 @@
 
 namespace luxel::shading::source {
 
-/// The tap offsets in source texels (§8.2).
+/// The tap offsets in source texels.
 inline constexpr glm::vec2 kDownsampleTapOffsets[4] = {{0.5f, 0.5f}, {2.5f, 0.5f}, {0.5f, 2.5f}, {2.5f, 2.5f}};
 
 /// c0 of the downsample: the tint weights and exponent, or the neutral ones with the tint off.

@@ -1,24 +1,26 @@
 #pragma once
-// Color correction through 3D lookup tables (SOURCE_FACTS §9; colorcorrection_ps2x.fxc, the same
-// lookups Engine_Post_ps2x.fxc makes after the bloom add): one full-screen pass over the
-// gamma-space 8-bit frame that blends up to four 32x32x32 volume lookups with the frame itself.
+// Color correction through 3D lookup tables (docs/fidelity.md#color-correction;
+// colorcorrection_ps2x.fxc, the same lookups Engine_Post_ps2x.fxc makes after the bloom add): one
+// full-screen pass over the gamma-space 8-bit frame that blends up to four 32x32x32 volume lookups with
+// the frame itself.
 //
-//   uvw     = frame.rgb * 31/32 + 0.5/32                              (§9.2: texel centers 0..31)
+//   uvw     = frame.rgb * 31/32 + 0.5/32                              (texel centers 0..31)
 //   out.rgb = frame.rgb * defaultWeight + sum_k tex3D(LUT_k, uvw).rgb * w_k,   k < number of LUTs
 //   out.a   = frame.a
 //
 // The frame and the volumes are read with sRGB decode off and the output is written with sRGB
-// write off (§9.2, §10.1: post passes run in gamma space), so the bytes in are the bytes the LUT
-// was authored for. The volume is filtered trilinearly (the SDK's filter state is closed, §9.2:
+// write off (post passes run in gamma space), so the bytes in are the bytes the LUT
+// was authored for. The volume is filtered trilinearly (the SDK's filter state is closed:
 // trilinear presumed); the frame is read with point filtering, which at the pixel centers this
 // pass samples gives the texel itself, exactly.
 //
 // Static combos (ColorCorrectionCombo): the number of lookups, 1..4 (the SDK's NUM_LOOKUPS; with 0
-// the pass does not run, §9.2). The samplers are s0 (frame) and s1..s4 (LUTs), as in the standalone
+// the pass does not run). The samplers are s0 (frame) and s1..s4 (LUTs), as in the standalone
 // shader. Constants: c0 = (w0, w1, w2, w3), c1.x = defaultWeight; how the SDK packs them and how it
-// normalizes the weights are closed (§9.2): postfx/color_correction.hpp states luxel's rule.
-// The alpha the SDK writes is not in the facts; the frame's alpha passes through here.
-// The same code is measured on ps_2_0, ps_2_b and ps_3_0 (the SDK builds ps20 and ps20b; §11).
+// normalizes the weights are closed: postfx/color_correction.hpp states luxel's rule.
+// The frame's alpha passes through, as colorcorrection_ps2x.fxc keeps baseColor.a.
+// The same code is measured on ps_2_0, ps_2_b and ps_3_0 (the SDK builds ps20 and ps20b;
+// docs/fidelity.md#shader-models).
 
 #include "luxel/rasterizer/draw.hpp"
 #include "luxel/shading/source/common.hpp"
@@ -33,10 +35,10 @@
 
 namespace luxel::shading::source {
 
-/// The edge of the engine's LUT volume (§9.1: RGBX5551 keys, 5 bits per channel). Other edges
+/// The edge of the engine's LUT volume (RGBX5551 keys, 5 bits per channel). Other edges
 /// are luxel's, to measure what the engine's choice costs (`luxel report`, color_correction).
 inline constexpr int kColorCorrectionLutSize = 32;
-/// Most lookups one pass blends (§9.2).
+/// Most lookups one pass blends.
 inline constexpr int kMaxColorCorrectionLuts = 4;
 
 struct ColorCorrectionCombo {
@@ -64,7 +66,7 @@ inline rasterizer::Sampler color_correction_frame_sampler() {
   return s;
 }
 
-/// How a LUT volume is read: trilinear within its one level, clamped (§9.2).
+/// How a LUT volume is read: trilinear within its one level, clamped (luxel's: the SDK's is closed).
 inline rasterizer::Sampler color_correction_lut_sampler() {
   rasterizer::Sampler s;
   s.min = s.mag = rasterizer::Filter::Linear;
@@ -83,7 +85,7 @@ struct ColorCorrectionParams {
   int lut_size = kColorCorrectionLutSize;  ///< the volumes' edge: the literals of the uvw's mad
 };
 
-/// The volume coordinate of a color (§9.2, for the engine's size 32: uvw = c * 31/32 + 0.5/32):
+/// The volume coordinate of a color (for the engine's size 32: uvw = c * 31/32 + 0.5/32):
 /// 0 and 1 land on the first and last texel centers of a volume `size` texels on a side.
 template <Lane L>
 inline float3<L> color_correction_uvw(const float3<L>& color, int size = kColorCorrectionLutSize) {

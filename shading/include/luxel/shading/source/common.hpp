@@ -1,10 +1,10 @@
 #pragma once
 // What every Source DX9 shader shares: the tone-map epilogue (FinalOutput), the 8-bit encoding,
 // the radiosity-normal-mapping basis, the ambient cube, the Fresnel forms.
-// Written once over the lane L (float, simd::Float, Counted); SOURCE_FACTS.md section numbers
+// Written once over the lane L (float, simd::Float, Counted); docs/fidelity.md's sections
 // cite where each formula comes from.
 //
-// Output convention (SOURCE_FACTS §6.3, §10.1):
+// Output convention (docs/fidelity.md#tone-mapping, #gamma-and-colors):
 //   FinalOutput multiplies rgb by LINEAR_LIGHT_SCALE (c30.x) and hands a *linear* color to the
 //   output merger, which encodes it with D3D9's SRGBWRITEENABLE: the exact IEC 61966-2-1 sRGB
 //   curve, then 8 bits (rasterizer: BlendState::srgb_write). World and model shaders write with
@@ -37,7 +37,7 @@ inline constexpr ShaderModel kPixelModels[] = {ShaderModel::ps_2_0, ShaderModel:
 /// FinalOutput's TONEMAP_SCALE_* (common_ps_fxc.h).
 enum class ToneMap { none, linear, gamma };
 
-/// Constant register c30 (SOURCE_FACTS §6.2): x = LINEAR_LIGHT_SCALE, y = LIGHT_MAP_SCALE,
+/// Constant register c30 (docs/fidelity.md#tone-mapping): x = LINEAR_LIGHT_SCALE, y = LIGHT_MAP_SCALE,
 /// z = ENV_MAP_SCALE, w = GAMMA_LIGHT_SCALE (= x^(1/2.2), the client's own convention).
 struct ToneMapConstants {
   glm::vec4 c30{1.0f, 1.0f, 1.0f, 1.0f};
@@ -60,8 +60,8 @@ inline ToneMapConstants ToneMapConstants::for_scale(float s, float lightmap_scal
 //    refraction alpha (water.hpp takes that depth as given) and soft particles; which passes write
 //    it is the frame's decision (issue #8), so the shaders' alpha stays the shader's alpha here.
 
-/// FinalOutput (SOURCE_FACTS §6.3 steps 1-2): rgb x the tone-map scale of type T; alpha passes.
-/// Returns the linear color the output merger encodes; fogged_output() (fog.hpp) adds step 3.
+/// FinalOutput (docs/fidelity.md#tone-mapping, before fog): rgb x the tone-map scale of type T; alpha
+/// passes. Returns the linear color the output merger encodes; fogged_output() (fog.hpp) adds step 3.
 template <ToneMap T, Lane L>
 inline float4<L> final_output(const float4<L>& color, const ToneMapConstants& tm) {
   if constexpr (T == ToneMap::none) {
@@ -103,15 +103,16 @@ inline uint8_t srgb8_reference(double x) {
   return static_cast<uint8_t>(std::floor(rasterizer::linear_to_srgb(x) * 255.0 + 0.5));
 }
 
-/// The RNM basis (SOURCE_FACTS §1.1, common_fxc.h bumpBasis), the shader's literals exactly.
+/// The RNM basis (docs/fidelity.md#rnm-basis-and-lightmaps, common_fxc.h bumpBasis), the shader's
+/// literals exactly.
 inline constexpr float kBumpBasis[3][3] = {
     {0.81649661064147949f, 0.0f, 0.57735025882720947f},
     {-0.40824833512306213f, 0.70710676908493042f, 0.57735025882720947f},
     {-0.40824821591377258f, -0.7071068286895752f, 0.57735025882720947f},
 };
 
-/// The RNM weights of a tangent-space normal (SOURCE_FACTS §1.3): d_i = sat(dot(n, basis_i))^2.
-/// LightmappedGeneric lights with sum d_i LM_i / sum d_i.
+/// The RNM weights of a tangent-space normal (docs/fidelity.md#lightmappedgeneric):
+/// d_i = sat(dot(n, basis_i))^2. LightmappedGeneric lights with sum d_i LM_i / sum d_i.
 template <Lane L>
 inline float3<L> rnm_weights(const float3<L>& n) {
   const float3<L> d(saturate(dot(n, float3<L>(kBumpBasis[0][0], kBumpBasis[0][1], kBumpBasis[0][2]))),
@@ -120,13 +121,13 @@ inline float3<L> rnm_weights(const float3<L>& n) {
   return d * d;
 }
 
-/// Six ambient-cube colors, order +X, -X, +Y, -Y, +Z, -Z (SOURCE_FACTS §2.1), linear.
+/// Six ambient-cube colors, order +X, -X, +Y, -Y, +Z, -Z (docs/fidelity.md#ambient-cube), linear.
 struct AmbientCube {
   std::array<glm::vec3, 6> color{};
 };
 
-/// PixelShaderAmbientLight (SOURCE_FACTS §2.1): n^2 weights, + entry where n >= 0. Nine ps_3_0
-/// slots (mul, cmp, cmp, mul, mad x5), the count in Valve's comment.
+/// PixelShaderAmbientLight (docs/fidelity.md#ambient-cube): n^2 weights, + entry where n >= 0. Nine
+/// ps_3_0 slots (mul, cmp, cmp, mul, mad x5), the count in Valve's comment.
 template <Lane L>
 inline float3<L> ambient_light(const float3<L>& n, const AmbientCube& cube) {
   const float3<L> n2 = n * n;
@@ -144,7 +145,7 @@ inline glm::dvec3 ambient_light_reference(const glm::dvec3& n, const AmbientCube
   return r;
 }
 
-/// Squared Half-Lambert, saturated before squaring (SOURCE_FACTS §3.3, DiffuseTerm).
+/// Squared Half-Lambert, saturated before squaring (docs/fidelity.md#model-lights, DiffuseTerm).
 template <Lane L>
 inline L half_lambert(const L& n_dot_l) {
   const L h = saturate(n_dot_l * 0.5f + 0.5f);

@@ -1,16 +1,16 @@
 #pragma once
-// The engine's combine pass when color correction runs (SOURCE_FACTS §8.2 step 4, §8.3;
+// The engine's combine pass when color correction runs (docs/fidelity.md#bloom, #color-correction;
 // Engine_Post_ps2x.fxc, Engine_Post_dx9.cpp): one full-screen pass that adds the bloom to the
 // frame and color-corrects the sum, so the sum is never rounded to 8 bits in between:
 //
 //   c       = frame.rgb + bloom.rgb * bloomFactor        (gamma values; may exceed 1)
-//   uvw     = c * 31/32 + 0.5/32                          (§9.2)
+//   uvw     = c * 31/32 + 0.5/32
 //   out.rgb = c * defaultWeight + sum_k tex3D(LUT_k, uvw).rgb * w_k
 //   out.a   = frame.a
 //
-// A sum above 1 reads the volume's last texel (its sampler clamps, §9.2) and its own share
+// A sum above 1 reads the volume's last texel (its sampler clamps) and its own share
 // saturates when written. The frame and the bloom are read with sRGB decode off and the result is
-// written with sRGB write off (§8.3); the frame point-sampled at its own texel centers (which a
+// written with sRGB write off; the frame point-sampled at its own texel centers (which a
 // bilinear read there returns exactly), the bloom bilinear and clamped, stretched over the frame as
 // bloomadd stretches it (postfx/bloom.hpp). bloomFactor is 1 or 0 in the SDK (the bloom amount is
 // already in the bloom texture). With bloom and no color correction the engine draws bloomadd
@@ -18,7 +18,7 @@
 // (color_correction.hpp), which is this pass with bloomFactor 0 minus the bloom's fetch.
 //
 // Static combos (EnginePostCombo): the number of lookups, 1..4 (COL_CORRECT_NUM_LOOKUPS). The
-// software AA of §10.5 (off on PC) is not modelled. Samplers: s0 the frame, s1 the bloom, s2..s5
+// software AA (off on PC) is not modelled. Samplers: s0 the frame, s1 the bloom, s2..s5
 // the LUTs, as in the SDK. Constants: c0 = (w0, w1, w2, w3), c1.x = defaultWeight,
 // c1.y = bloomFactor (the SDK's packing is closed).
 

@@ -1,6 +1,6 @@
 #pragma once
-// Film grain (SOURCE_FACTS §9.4; filmgrain_ps20.fxc, filmgrain_dx8_dx9.cpp): a noise texel n and a
-// constant noiseScale (c0) give a source color and a source alpha,
+// Film grain (docs/fidelity.md#film-grain; filmgrain_ps20.fxc, filmgrain_dx8_dx9.cpp): a noise texel n
+// and a constant noiseScale (c0) give a source color and a source alpha,
 //
 //   src.rgb = n.rgb * noiseScale.rgb,   src.a = n.r * (1 - noiseScale.w) + noiseScale.w
 //
@@ -10,11 +10,11 @@
 //
 // so noiseScale.w = 1 adds the scaled noise, noiseScale.w = 0 also darkens the frame by n.r, and
 // values between mix the two. The frame is read and written as gamma values (no sRGB write, as
-// every post pass, §10.1). film_grain_pipeline_state() is that draw's state; the material that
+// every post pass). film_grain_pipeline_state() is that draw's state; the material that
 // sets it (and the screen-space effect class that drives it) is not in the SDK, so two choices
 // are ours: rgb is written and alpha kept (the blend would otherwise fold src.a into the frame's
 // alpha), and the grain texture itself (postfx/film_grain.hpp says how it is made).
-// No FinalOutput tone map (TONEMAP NONE, §6.3).
+// No FinalOutput tone map (TONEMAP NONE).
 
 #include "luxel/rasterizer/draw.hpp"
 #include "luxel/shading/source/common.hpp"

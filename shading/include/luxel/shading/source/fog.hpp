@@ -1,5 +1,5 @@
 #pragma once
-// Fog, step 3 of every DX9 pixel shader's epilogue (SOURCE_FACTS §10.3 and §6.3; common_ps_fxc.h
+// Fog, step 3 of every DX9 pixel shader's epilogue (docs/fidelity.md#fog; common_ps_fxc.h
 // CalcRangeFog, CalcWaterFogAlpha, BlendPixelFog, FinalOutput; common_vs_fxc.h RangeFog), done
 // per shader model as the SDK does it:
 //
@@ -22,8 +22,8 @@
 //    runs from 0 at `start` to 1 at `end`, as the vertex path's (end - z) / range does. (The
 //    #define names it FogEndOverRange, the name of the vertex constant c16.x = end / range.)
 //  - the fog color is linear x LINEAR_LIGHT_SCALE: the client clears an INTEGER-HDR frame to
-//    the fog color x scale^(1/2.2) in gamma space (SOURCE_FACTS §6.3), i.e. linear fog x scale, and
-//    fully fogged geometry should meet that clear color.
+//    the fog color x scale^(1/2.2) in gamma space (docs/fidelity.md#tone-mapping), i.e. linear
+//    fog x scale, and fully fogged geometry should meet that clear color.
 //  - the vertex path's floor c16.z is 1 - maxDensity (RangeFog's max() is on visibility, 1 = clear).
 //
 // Scenes describe fog with FogSettings (no fog by default: the SDK draws unfogged unless a fog

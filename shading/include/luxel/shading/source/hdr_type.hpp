@@ -1,7 +1,7 @@
 #pragma once
-// Source's HDR modes (SOURCE_FACTS §6.1, HDRType_t): which one is active changes constants the
-// C++ side sends (the water's reflection exposure §6.4, the luminance-range scale §7.1), never the
-// shaders' code.
+// Source's HDR modes (docs/fidelity.md#tone-mapping, HDRType_t): which one is active changes
+// constants the C++ side sends (the water's reflection exposure, #water; the luminance-range
+// scale, #auto-exposure), never the shaders' code.
 
 namespace luxel::shading::source {
 

@@ -2,8 +2,8 @@
 // How far an ambient term (cube, SH4, SH9: E/π as the shader computes it) is from the true
 // irradiance E over a set of normals: relative to E per normal and channel (max, mean, RMS), as a
 // fraction of the brightest E, and in 8-bit steps on screen after FinalOutput's linear tone-map
-// scale that puts the brightest true E/π at 1.0 and sRGB encoding (SOURCE_FACTS §6.3). The steps
-// are what a viewer sees; the relative error is what R&H and Probulator report.
+// scale that puts the brightest true E/π at 1.0 and sRGB encoding (docs/fidelity.md#tone-mapping). The
+// steps are what a viewer sees; the relative error is what R&H and Probulator report.
 // Relative errors need E > 0 (any non-negative radiance that is not black over a hemisphere);
 // a channel with E <= 0 makes them infinite.
 

@@ -1,10 +1,11 @@
 #pragma once
 // CPU side of model lighting: light descriptions, their pixel-shader constants, and folding the
-// lights beyond the shader's count into the ambient cube (SOURCE_FACTS §2.2: the SDK shows that
-// DrawModelInfo_t's cube holds "ambient, and lights that aren't in locallight[]", but the folding
-// code and the priority are closed — NOT IN SDK; what follows is luxel's).
+// lights beyond the shader's count into the ambient cube
+// (docs/fidelity.md#irradiance-volume-and-lights: the SDK shows that DrawModelInfo_t's cube holds
+// "ambient, and lights that aren't in locallight[]", but the folding code and the priority are closed —
+// NOT IN SDK; what follows is luxel's).
 //
-// Significance metric: the luminance (0.2125, 0.7154, 0.0721 — the histogram's weights, §10.6)
+// Significance metric: the luminance (0.2125, 0.7154, 0.0721 — the histogram's weights)
 // of the light's color times its attenuation (distance and spot, the SDK formula) at the model's
 // reference point (its bounding-box center). That is the irradiance scale the light delivers to
 // the model; it ignores orientation, because a model has normals in every direction. Ties keep

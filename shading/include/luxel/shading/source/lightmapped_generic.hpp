@@ -2,8 +2,8 @@
 // LightmappedGeneric (world surfaces), DX9 pixel shader: base texture x radiosity-normal-mapped
 // diffuse from three directional lightmaps (or the flat lightmap without a bump map), plus optional
 // cube-map specular with mask, tint, contrast, saturation and Fresnel, ending in FinalOutput.
-// SOURCE_FACTS §1.3 (combine), §1.5 (lightmap scale), §5.1 (envmap), §6.3 (epilogue), §10.3 (fog,
-// fog.hpp: the SDK's PIXELFOGTYPE on every model).
+// docs/fidelity.md#lightmappedgeneric (combine, envmap, alpha), #tone-mapping
+// (lightmap scale, epilogue), #fog (fog.hpp: the SDK's PIXELFOGTYPE on every model).
 //
 // Written once over the lane L; the static combos are the template parameter LightmappedCombo,
 // the dynamic state (constants, textures) is LightmappedGenericParams. The shader is split in
@@ -12,13 +12,13 @@
 //   lightmapped_generic_combine()  everything else, with the cube map read through `env(R)`
 //   lightmapped_generic()          both, with texCUBE as env: the real shader
 //
-// Lightmaps (§1.5): the diffuse is multiplied by c12.rgb = modulation color x lightmap scale
+// Lightmaps: the diffuse is multiplied by c12.rgb = modulation color x lightmap scale
 // factor. HDR: RGBA16F lightmaps hold linear light, factor 1. LDR: VRAD's encoding stores
 // 0.5 L^(1/2.2) (gamma 2.2, overbright 2) in an sRGB-read RGBA8 texture, so the factor that
 // recovers L is 2^2.2 (≈ 4.595): lightmap_scale_factor(). Exact only where the sRGB read curve
 // equals the 2.2 power; see encode_ldr_lightmap() and its test for the measured difference.
 //
-// Fast-path quirk (§5.1): Valve's helper uses the fast path (no contrast except exactly 1, no
+// Fast-path quirk: Valve's helper uses the fast path (no contrast except exactly 1, no
 // saturation, no Fresnel) unless (contrast ∉ {0,1} and saturation ≠ 1), or R0 ≠ 1, or a
 // self-illum tint ≠ 1. choose_lightmapped_combo(material) reproduces that by default
 // (faithful_fast_path = true); pass false to get the intended look (full path whenever any of the
@@ -38,7 +38,7 @@
 
 namespace luxel::shading::source {
 
-/// Where the cube-map specular mask comes from (§5.1).
+/// Where the cube-map specular mask comes from.
 enum class EnvmapMask {
   none,                 ///< 1
   base_alpha_inverted,  ///< $basealphaenvmapmask: 1 - base alpha ("Reversing alpha blows!")
@@ -46,7 +46,7 @@ enum class EnvmapMask {
   texture,              ///< $envmapmask rgb (not allowed with a bump map)
 };
 
-/// The envmap combine (§5.1).
+/// The envmap combine.
 enum class EnvmapPath {
   fast,           ///< tint and mask only
   fast_contrast,  ///< FASTPATHENVMAPCONTRAST: contrast exactly 1, i.e. spec²
@@ -173,7 +173,7 @@ inline float4<L> lightmapped_generic_combine(const LightmappedTexels<L>& t, cons
   const float4<L> c12 = constant<L>(p.tint_lightmap_scale);
   const float3<L> albedo = t.base.rgb();
 
-  // §1.3: n = 2 tex - 1 (no renormalisation), d_i = sat(dot(n, basis_i))², weighted sum / Σd_i.
+  // RNM: n = 2 tex - 1 (no renormalisation), d_i = sat(dot(n, basis_i))², weighted sum / Σd_i.
   float3<L> n(0.0f, 0.0f, 1.0f);
   float3<L> diffuse;
   if constexpr (C.bump) {
@@ -189,7 +189,7 @@ inline float4<L> lightmapped_generic_combine(const LightmappedTexels<L>& t, cons
 
   L alpha = t.base.w * c12.w;
   if constexpr (C.envmap) {
-    // §5.1: R = 2(N·E)N − (N·N)E, N the tangent-space normal rotated to world, not renormalised.
+    // Env map: R = 2(N·E)N − (N·N)E, N the tangent-space normal rotated to world, not renormalised.
     float3<L> world_normal;
     if constexpr (C.bump) {
       world_normal = n.x * in.tangent + n.y * in.binormal + n.z * in.normal;
@@ -278,7 +278,7 @@ struct LightmappedMaterial {
   bool selfillum_tint_not_one = false;
 };
 
-/// Valve's combo choice (§5.1). faithful_fast_path = false: the full path whenever a parameter
+/// Valve's combo choice. faithful_fast_path = false: the full path whenever a parameter
 /// differs from its default (contrast 1 still takes the exact FASTPATHENVMAPCONTRAST shortcut).
 inline LightmappedCombo choose_lightmapped_combo(const LightmappedMaterial& m, bool faithful_fast_path = true) {
   LightmappedCombo c;
@@ -306,13 +306,13 @@ enum class LightmapFormat {
   ldr_srgb8,    ///< RGBA8_sRGB holding 0.5 L^(1/2.2): factor 2^2.2
 };
 
-/// The lightmap scale factor that goes into c12 with the modulation color (§1.5; its value is
+/// The lightmap scale factor that goes into c12 with the modulation color (its value is
 /// NOT IN SDK, this is the derivation from VRAD's encoding).
 inline float lightmap_scale_factor(LightmapFormat f) {
   return f == LightmapFormat::ldr_srgb8 ? std::pow(2.0f, 2.2f) : 1.0f;
 }
 
-/// VRAD's 8-bit lightmap texel (§1.5, ConvertLinearToRGBA8888): linear -> lineartovertex table
+/// VRAD's 8-bit lightmap texel (ConvertLinearToRGBA8888): linear -> lineartovertex table
 /// ((i/1024)^(1/2.2) x 0.5, 4096 entries covering 0..4) -> hue-preserving clamp -> x255 round.
 inline std::array<uint8_t, 3> encode_ldr_lightmap(const glm::vec3& linear) {
   float v[3];

@@ -1,14 +1,14 @@
 #pragma once
-// The luminance-range test of auto exposure (SOURCE_FACTS §7.1-7.2; luminance_compare_ps2x.fxc):
-// one full-screen pass per histogram bucket over the copied, tone-mapped 8-bit frame, inside an
-// occlusion query. The pixel shader outputs 1 where min <= luminance <= max (both inclusive) and 0
-// elsewhere, in all four channels, and depth 0; screenspace_general's alpha test (alpha > 0)
-// discards the zeros, so the query counts only the samples in range.
+// The luminance-range test of auto exposure (docs/fidelity.md#auto-exposure;
+// luminance_compare_ps2x.fxc): one full-screen pass per histogram bucket over the copied, tone-mapped
+// 8-bit frame, inside an occlusion query. The pixel shader outputs 1 where min <= luminance <= max
+// (both inclusive) and 0 elsewhere, in all four channels, and depth 0; screenspace_general's alpha test
+// (alpha > 0) discards the zeros, so the query counts only the samples in range.
 //
-//   luminance = dot(texel.rgb * c0.z, (0.2125, 0.7154, 0.0721))      (§7.1, §10.6)
+//   luminance = dot(texel.rgb * c0.z, (0.2125, 0.7154, 0.0721))
 //   c0 = (min, max, scale): scale is the tone-map scale in FLOAT HDR, else 1 (the measured image
 //   already carries the scale); a bucket whose max is exactly 1.0 tests against 10000 so the top
-//   bucket also collects everything brighter (§7.2) — luminance_range_constant().
+//   bucket also collects everything brighter — luminance_range_constant().
 //
 // No FinalOutput: the SDK compiles this shader with HDRTYPE NONE and returns its result directly.
 // NaN luminance fails both comparisons (DX9's cmp takes NaN >= 0 as false) and is never counted.
@@ -22,11 +22,11 @@
 // The same code is measured on ps_2_0, ps_2_b and ps_3_0 (the SDK builds ps20 and ps20b; ps_3_0
 // cards run ps20b).
 //
-// Counting with the stencil (§7.2, mat_tonemapping_occlusion_use_stencil 1): pass 1 draws this
+// Counting with the stencil (mat_tonemapping_occlusion_use_stencil 1): pass 1 draws this
 // shader with the stencil writing 1 (REPLACE, ALWAYS) where a sample survives; pass 2 draws any
 // shader with stencil EQUAL 1 inside the query. luminance_range_pipeline_state(kind) returns the
 // state of either pass; what else the SDK's dev/lumcompare material sets (blending, color writes)
-// is NOT IN SDK (§7.1): we turn color writes off, which changes no count.
+// is NOT IN SDK: we turn color writes off, which changes no count.
 
 #include "luxel/rasterizer/draw.hpp"
 #include "luxel/shading/source/common.hpp"
@@ -66,10 +66,10 @@ inline void for_each_luminance_range_combo(F&& f) {
   }(std::make_index_sequence<std::size(kLuminanceRangeCombos)>());
 }
 
-/// The luminance weights of the histogram (§7.1, §10.6).
+/// The luminance weights of the histogram.
 inline constexpr float kHistogramLuminance[3] = {0.2125f, 0.7154f, 0.0721f};
 
-/// c0 for the bucket [min, max] (§7.1-7.2): max 1.0 exactly becomes 10000; the scale is the
+/// c0 for the bucket [min, max]: max 1.0 exactly becomes 10000; the scale is the
 /// tone-map scale in FLOAT mode only.
 inline glm::vec3 luminance_range_constant(float min, float max, HdrType hdr = HdrType::integer,
                                           float tonemap_scale = 1.0f) {
@@ -77,7 +77,7 @@ inline glm::vec3 luminance_range_constant(float min, float max, HdrType hdr = Hd
 }
 
 struct LuminanceRangeParams {
-  Sampler2D frame{0};           ///< _rt_FullFrameFB, 8-bit, read with sRGB decode (§7.1)
+  Sampler2D frame{0};           ///< _rt_FullFrameFB, 8-bit, read with sRGB decode
   glm::vec3 min_max_scale{0.0f, 10000.0f, 1.0f};  ///< c0, from luminance_range_constant()
 };
 
@@ -144,7 +144,7 @@ enum class LuminancePass {
   stencil_count, ///< stencil pass 2: counted where the stencil is 1 (any shader; no pixel writes)
 };
 
-/// The fixed-function state of one draw of the count (§7.2). No depth test (the pass is
+/// The fixed-function state of one draw of the count. No depth test (the pass is
 /// screen-space), no color writes (our choice, see above).
 inline rasterizer::PipelineState luminance_range_pipeline_state(LuminanceReject reject, LuminancePass pass) {
   using namespace rasterizer;

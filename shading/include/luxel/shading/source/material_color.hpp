@@ -1,9 +1,9 @@
 #pragma once
 // How Source's C++ turns a material's gamma-space color parameter ($color, $envmaptint,
 // $reflecttint, $refracttint, $fogcolor) into the linear value of a pixel-shader constant
-// (SOURCE_FACTS §10.1): mathlib's GammaToLinear, a 256-entry table of (i / 255)^2.2 indexed by
-// round(x * 255), which returns 0 below 0 and exactly 1.0 from 0.95 up (so 0.96 and 1.0 give the
-// same constant). BaseVSShader converts only values <= 1; larger ones are taken as linear already
+// (docs/fidelity.md#gamma-and-colors): mathlib's GammaToLinear, a 256-entry table of (i / 255)^2.2
+// indexed by round(x * 255), which returns 0 below 0 and exactly 1.0 from 0.95 up (so 0.96 and 1.0 give
+// the same constant). BaseVSShader converts only values <= 1; larger ones are taken as linear already
 // (material_gamma_to_linear). CPU code, double-checked by the tests; not shader code.
 
 #include <glm/vec3.hpp>

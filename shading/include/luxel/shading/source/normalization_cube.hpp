@@ -1,5 +1,5 @@
 #pragma once
-// The normalization cube map ps_2_0 normalizes vectors with (SOURCE_FACTS §3.4, §11;
+// The normalization cube map ps_2_0 normalizes vectors with (docs/fidelity.md#bumped-and-skin-paths;
 // NormalizeWithCubemap in common_ps_fxc.h returns the texel as is, and the DX9 helpers bind
 // TEXTURE_NORMALIZATION_CUBEMAP_SIGNED): each texel holds the unit vector through its center in a
 // signed 8-bit format, so texCUBE(cube, v) is v / |v| up to the texel's quantization and the

@@ -1,6 +1,6 @@
 #pragma once
 // Sky_HDR_DX9, the HDR skybox pixel shader: one texture read, times an input scale, tone-mapped
-// with LINEAR scale and never fogged (SOURCE_FACTS §1.5 end, §6.3; sky_ps2x.fxc,
+// with LINEAR scale and never fogged (docs/fidelity.md#sky; sky_ps2x.fxc,
 // sky_hdr_compressed_rgbs_ps2x.fxc, sky_hdr_dx9.cpp).
 //
 // Static combos (SkyCombo::texture):
@@ -10,22 +10,23 @@
 //   rgbs_compressed  sky_hdr_compressed_rgbs_ps2x: an 8-bit RGBA texture holding rgb x scale in
 //                    alpha, decoded as rgb x a x 8 (c0 = $color x 8); the shader reads the four
 //                    nearest texels with point sampling and interpolates by hand *after*
-//                    decoding (§1.5), since filtering rgb and a separately is not filtering rgb·a.
+//                    decoding, since filtering rgb and a separately is not filtering rgb·a.
 // Alpha: the texel's alpha (hdr16), 1 (rgbs). The same code is measured on ps_2_0, ps_2_b and
 // ps_3_0 (the SDK builds ps20 and ps20b; ps_3_0 cards run ps20b).
 //
-// The 16-bit scale (SOURCE_FACTS is silent on it: §6 says nothing of texture formats; §1.5 names
-// MAX_HDR_OVERBRIGHT = 16 only for the legacy RGB·A·16 helpers): sky_hdr_dx9.cpp multiplies c0 by
-// 16 for IMAGE_FORMAT_RGBA16161616, so a 16-bit UNORM sky covers linear 0..16 in steps of
-// 16 / 65535. It also multiplies by 16 for RGBA16161616F when the HDR type is INTEGER, which only
-// makes sense if the closed texture loader re-encodes float skies as value / 16 in that mode; luxel
-// keeps an RGBA16F texture as uploaded (linear), so its scale stays $color in every mode.
+// The 16-bit scale (MAX_HDR_OVERBRIGHT = 16 is only the legacy RGB·A·16 helpers'): sky_hdr_dx9.cpp
+// multiplies c0 by 16 for IMAGE_FORMAT_RGBA16161616, so a 16-bit UNORM sky covers linear 0..16 in
+// steps of 16 / 65535. It also multiplies by 16 for RGBA16161616F when the HDR type is INTEGER,
+// which only makes sense if the closed texture loader re-encodes float skies as value / 16 in that
+// mode; luxel keeps an RGBA16F texture as uploaded (linear), so its scale stays $color in every
+// mode.
 //
 // The rgbs interpolants (four texel coordinates and the pixel-space coordinate) come from
-// sky_vs20, which is not in the SDK snapshot we read; sky_rgbs_coordinates() reconstructs them
-// from the constants sky_hdr_dx9.cpp sends (c1 = (0.5/w - fudge, 0.5/h - fudge, w, h),
-// fudge = 0.01 / max(w, h)): the four texels around uv x size - 0.5, which is what bilinear
-// filtering would read.
+// sky_vs20.fxc (lines 47-60) and the constants sky_hdr_dx9.cpp sends (c1 = (0.5/w - fudge,
+// 0.5/h - fudge, w, h), fudge = 0.01 / max(w, h)): the four texels uv ± c1.xy, which is what
+// bilinear filtering would read, and the pixel coordinate (uv - c1.xy) x c1.zw.
+// sky_rgbs_coordinates() computes the same texels; its pixel coordinate is uv x size - 0.5,
+// without the fudge (docs/fidelity.md#sky: at most 0.01 texel in the interpolation fraction).
 //
 // Not implemented: $hdrcompressedtexture0..2 (compression method B), WRITE_DEPTH_TO_DESTALPHA
 // (ps_2_b: alpha = saturate(1e20 x c29.w) = 1), CONVERT_TO_SRGB (see common.hpp).

@@ -1,6 +1,7 @@
 #pragma once
 // SH9 ambient: irradiance as nine spherical-harmonic coefficients per color channel (bands
-// l = 0..2), the option ps_3_0 offers beside the ambient cube (SOURCE_FACTS §2.1; issue #3).
+// l = 0..2), the option ps_3_0 offers beside the ambient cube (docs/fidelity.md#ambient-cube;
+// issue #3).
 //
 // The method is Ramamoorthi & Hanrahan, "An Efficient Representation for Irradiance Environment
 // Maps", SIGGRAPH 2001: irradiance E(n) = ∫ L(ω) max(0, n·ω) dω is the radiance L convolved with
@@ -8,15 +9,16 @@
 // 0..2 (L_lm = ∫ L Y_lm dω) and scaling each band by the cosine lobe's Â_l gives E to a few percent
 // for any smooth L: E_lm = Â_l L_lm, Â_0 = π, Â_1 = 2π/3, Â_2 = π/4.
 //
-// Units. The ambient cube's six colors are cosine-weighted mean radiances (VRAD, §2.2), i.e.
-// E(n)/π for n along an axis, and the shader multiplies the cube's value by the albedo: a Lambert
-// surface's exitance. The SH9 path produces the same quantity, E(n)/π, so it is a drop-in for the
-// cube (VertexLitCombo::sh9_ambient) and the two can be compared directly.
+// Units. The ambient cube's six colors are cosine-weighted mean radiances (VRAD,
+// docs/fidelity.md#irradiance-volume-and-lights), i.e. E(n)/π for n along an axis, and the shader
+// multiplies the cube's value by the albedo: a Lambert surface's exitance. The SH9 path produces the
+// same quantity, E(n)/π, so it is a drop-in for the cube (VertexLitCombo::sh9_ambient) and the two can
+// be compared directly.
 //
 // CPU side (double): the basis, projection of sampled radiance (sphere_quadrature.hpp: a
 // function on an equal-area grid, or an environment image's pixels), the cosine convolution,
 // an ambient cube's SH9 (so cube data — VRAD's samples, folded lights — can feed the SH9 combo),
-// and the ambient cube VRAD would compute from the same radiance (§2.2's cosine-weighted average
+// and the ambient cube VRAD would compute from the same radiance (vrad's cosine-weighted average
 // per side), for comparing the two.
 //
 // Pixel-shader side: the irradiance polynomial the coefficients expand to,
@@ -120,9 +122,9 @@ inline Sh9 project_sh9(Function&& f, int rows = 256) {
   return project_sh9(sample_sphere_grid(f, rows));
 }
 
-/// The ambient cube VRAD computes at a sample (SOURCE_FACTS §2.2): per side j,
-/// C_j = Σ L_i c_ij / Σ c_ij over ray directions with c_ij = dot(dir_i, axis_j) > 0. VRAD fires 162
-/// rays; here the rays are the samples, each weighted by its solid angle (equal on the grid, so
+/// The ambient cube VRAD computes at a sample (docs/fidelity.md#irradiance-volume-and-lights):
+/// per side j, C_j = Σ L_i c_ij / Σ c_ij over ray directions with c_ij = dot(dir_i, axis_j) > 0.
+/// VRAD fires 162 rays; here the rays are the samples, each weighted by its solid angle (equal on the grid, so
 /// equal weights as in VRAD's sum), i.e. the dense limit: C_j = E(axis_j) / π, the
 /// cosine-weighted mean radiance.
 inline AmbientCube fit_ambient_cube(const SampledRadiance& samples) {
@@ -148,7 +150,7 @@ inline AmbientCube fit_ambient_cube(Radiance&& radiance, int rows = 256) {
   return fit_ambient_cube(sample_sphere_grid(radiance, rows));
 }
 
-/// The irradiance SH9 of an ambient cube, read as what VRAD makes it (§2.2): six irradiance samples,
+/// The irradiance SH9 of an ambient cube, read as what VRAD makes it (above): six irradiance samples,
 /// C[a±] = E(±axis_a)/π. With S_a = (C[a+] + C[a−])/2 and D_a = (C[a+] − C[a−])/2, the SH9 function
 /// E/π = Σ_a S_a n_a² + D_a n_a passes exactly through the six samples (n = ±axis_a gives S_a ± D_a)
 /// and spends its 9 coefficients as SH9 irradiance does: band 0 and the z², x²−y² terms from the

@@ -5,9 +5,9 @@
 // vertexlit_and_unlit_generic_ps2x.fxc with DIFFUSELIGHTING = 0 (ps20, ps20b and ps30 builds),
 // and VertexLitGeneric without a bump map from the same file with DIFFUSELIGHTING = 1: the
 // lighting then comes per vertex from vertexlit_vertex_shader.hpp (two lights and the ambient
-// cube, SOURCE_FACTS §3.4) through the same i.color interpolant a vertex color uses, and only
-// multiplies the albedo here. SOURCE_FACTS §5.2 (envmap on models), §10.1 (gamma of constants and
-// detail), §10.4 (detail modes), §6.3 (epilogue), §10.3 (fog).
+// cube, docs/fidelity.md#non-bumped-models) through the same i.color interpolant a vertex color
+// uses, and only multiplies the albedo here. docs/fidelity.md#unlitgeneric-and-detail (envmap,
+// detail modes), #gamma-and-colors (gamma of constants and detail), #tone-mapping (epilogue), #fog.
 //
 //   albedo   = detail_combine(base) x c1.rgb ($color, gamma -> linear on the CPU)
 //   diffuse  = albedo x i.color.rgb (VERTEXCOLOR: the vertex color; DIFFUSELIGHTING: the vertex
@@ -15,11 +15,11 @@
 //   spec     = c30.z x cube(R) x mask x c0.rgb ($envmaptint, gamma -> linear), R = 2(N·E)N - (N·N)E
 //   spec     = lerp(spec, spec², contrast); spec = lerp(grey(spec), spec, saturation)
 //   alpha    = c1.a x base.a (not with $basealphaenvmapmask), lerp(alpha, alpha x vertex.a, c12.w)
-// Unlike LightmappedGeneric (§5.1) there is no fast path: contrast and saturation are always
+// Unlike LightmappedGeneric there is no fast path: contrast and saturation are always
 // applied, and there is no Fresnel.
 //
-// Detail (TextureCombine, §10.4): mode 0 mod2x, base.rgb x lerp(1, 2 detail.rgb, blend), with the
-// detail read raw (sRGB off, §10.1: 0.5 grey is neutral); mode 1 additive, base.rgb + blend x
+// Detail (TextureCombine): mode 0 mod2x, base.rgb x lerp(1, 2 detail.rgb, blend), with the
+// detail read raw (sRGB off: 0.5 grey is neutral); mode 1 additive, base.rgb + blend x
 // detail.rgb, with the detail sRGB-decoded (on for mode 1 on models). detail.rgb is multiplied by
 // $detailtint (c10) first.
 //

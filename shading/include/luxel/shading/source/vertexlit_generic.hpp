@@ -2,8 +2,9 @@
 // VertexLitGeneric (models), DX9 pixel shader with per-pixel lighting: albedo x (ambient cube +
 // Σ local lights with squared Half-Lambert or Lambert), and on ps_2_b / ps_3_0 the Phong ("skin")
 // terms: exponent and mask textures, Fresnel ranges, rim lighting; on ps_3_0 optionally SH9
-// ambient instead of the cube (spherical_harmonics.hpp). SOURCE_FACTS §2.1 (ambient cube), §3.2
-// (attenuation, spot), §3.3 (diffuse), §3.4 (light counts), §4.1-4.6 (Phong), §6.3.
+// ambient instead of the cube (spherical_harmonics.hpp). docs/fidelity.md#ambient-cube,
+// #model-lights (attenuation, diffuse, counts), #bumped-and-skin-paths, #phong, #phong-defaults,
+// #tone-mapping.
 //
 // Static combos: the template parameter VertexLitCombo (light count, bump, Phong, exponent
 // texture, rim, Half-Lambert, where the attenuation is computed); the shader model is a separate
@@ -13,7 +14,7 @@
 // would refuse it: that, not a rule written here, is what keeps the heavier per-pixel-attenuated
 // combos off ps_2_0 (their arithmetic exceeds its 64 slots; two Lambert lights still fit).
 //
-// Lights (§3.2): the SDK computes attenuation per vertex and N·L per pixel. luxel's default for
+// Lights: the SDK computes attenuation per vertex and N·L per pixel. luxel's default for
 // two lights computes the attenuation per pixel too (pixel_attenuation = true: a light close to a
 // coarse mesh is not smeared across the triangle); the SDK's per-vertex attenuation (an
 // interpolated float4, one component per light, vertex_light_attenuation() in the vertex stage)
@@ -23,8 +24,8 @@
 // A directional light's position register holds the unit vector toward the light with w = 0, so
 // one mad gives L for every type: L = pos.xyz - worldPos * pos.w.
 //
-// Normalisation (§3.4, §11): ps_2_b and ps_3_0 normalize the interpolated normal and the light
-// vectors with nrm; ps_2_0 reads them from the signed normalization cube map
+// Normalisation (docs/fidelity.md#bumped-and-skin-paths): ps_2_b and ps_3_0 normalize the interpolated
+// normal and the light vectors with nrm; ps_2_0 reads them from the signed normalization cube map
 // (NormalizeWithCubemap: one texture slot for nrm's three arithmetic slots, and a dependent
 // read), as the SDK's bump shader does, so ps_2_0 lighting carries the cube map's filtering and
 // 8-bit error (normalization_cube.hpp). The combo's normalization_cube flag is that choice, and
@@ -36,8 +37,8 @@
 // and the DIFFUSELIGHTING combos of unlit_generic.hpp. The per-pixel combos here without a bump
 // map are luxel's (per-pixel attenuation and lighting of smooth models).
 //
-// Not implemented: envmap on models (§5.2), lightwarp, phong warp, self-illum, detail, albedo
-// tint ($phongalbedotint), $blendtintbybasealpha.
+// Not implemented: envmap on models (docs/fidelity.md#env-maps-on-models), lightwarp, phong warp,
+// self-illum, detail, albedo tint ($phongalbedotint), $blendtintbybasealpha.
 
 #include "luxel/shading/source/common.hpp"
 #include "luxel/shading/source/fog.hpp"
@@ -73,9 +74,9 @@ struct VertexLitCombo {
     if (phong && !half_lambert) return false;
     if (lights > 2 && pixel_attenuation) return false;
     // SH9 ambient is the ps_3_0 option (issue #3), where the SDK's separate VertexLitGeneric
-    // ps_3_0 builds live (SOURCE_FACTS §11). A product choice, not a budget: it costs 2 slots and
-    // 3 constant registers more than the cube, and even the largest combo would fit ps_2_b with it
-    // (25 of 32 constants, measured in sh9_test.cpp).
+    // ps_3_0 builds live (docs/fidelity.md#shader-models). A product choice, not a budget: it costs 2
+    // slots and 3 constant registers more than the cube, and even the largest combo would fit ps_2_b
+    // with it (25 of 32 constants, measured in sh9_test.cpp).
     if (sh9_ambient && m != ShaderModel::ps_3_0) return false;
     return true;
   }
@@ -168,7 +169,7 @@ struct VertexLitParams {
   SamplerCube normalization_cube{5, nullptr, normalization_cube_sampler()};
 };
 
-/// The CPU re-encoding of $phongfresnelranges (§4.4).
+/// The CPU re-encoding of $phongfresnelranges (docs/fidelity.md#phong).
 inline glm::vec4 encode_fresnel_ranges(float min, float mid, float max) {
   return glm::vec4((mid - min) * 2.0f, mid, (max - mid) * 2.0f, 0.0f);
 }
@@ -183,7 +184,7 @@ struct VertexLitInputs {
   L proj_z = L(0.0f);           ///< projected z, the .w beside world_pos (pixel fog combos)
 };
 
-/// The SDK's attenuation (§3.2, VertexAttenInternal) of one light at a point, over any lane:
+/// The SDK's attenuation (VertexAttenInternal) of one light at a point, over any lane:
 /// 1 / (a0 + a1 d + a2 d²), × spot sat(max(1e-4, (dot(axis, -L) - cosOuter) invRange)^exponent),
 /// selected per light type by color.w / spot.w. Also returns the unit vector toward the light
 /// (0 for a light exactly at the point: normalize(0) = 0, distance factor 1 / a0).
@@ -281,7 +282,7 @@ inline float4<L> vertexlit_combine(const VertexLitTexels<L>& t, const VertexLitI
     const L term = C.half_lambert ? half_lambert(n_dot_l) : saturate(n_dot_l);
     diffuse = diffuse + color * term;
     if constexpr (C.phong) {
-      // §4.1: R = 2 N (N·V) - V; s = sat(R·L)^exp · sat(N·L) · color · atten.
+      // Phong: R = 2 N (N·V) - V; s = sat(R·L)^exp · sat(N·L) · color · atten.
       const float3<L> r = (2.0f * dot(n, view)) * n - view;
       const L r_dot_l = saturate(dot(r, to_light));
       const float3<L> lit = color * saturate(n_dot_l);
@@ -293,7 +294,7 @@ inline float4<L> vertexlit_combine(const VertexLitTexels<L>& t, const VertexLitI
   const float3<L> albedo = t.base.rgb() * modulation.rgb();
   float3<L> color = albedo * diffuse;
   if constexpr (C.phong) {
-    // §4.4: f = sat(1 - N·V)²; ranges piecewise linear around 0.5.
+    // Fresnel ranges: f = sat(1 - N·V)²; ranges piecewise linear around 0.5.
     const L one_minus = saturate(1.0f - dot(n, view));
     const L f = one_minus * one_minus;
     const float4<L> ranges = constant<L>(p.fresnel_ranges);
@@ -303,7 +304,7 @@ inline float4<L> vertexlit_combine(const VertexLitTexels<L>& t, const VertexLitI
     const float4<L> tint_boost = constant<L>(p.phong_tint_boost);
     spec = spec * (mask * fresnel * tint_boost.w);
     if constexpr (C.rim) {
-      // §4.5: rim fresnel (1 - N·V)^4, mask, max with the specular, then ambient along V gated by N.z.
+      // Rim: fresnel (1 - N·V)^4, mask, max with the specular, then ambient along V gated by N.z.
       const float4<L> pp = constant<L>(p.phong_params);
       const L rim_fresnel = f * f;
       const L rim_mask = C.exponent_texture ? L(lerp(L(1.0f), t.exponent.w, pp.w)) : L(1.0f);

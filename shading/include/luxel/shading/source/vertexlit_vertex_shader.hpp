@@ -1,9 +1,9 @@
 #pragma once
 // VertexLitGeneric's vertex shader for models without a bump map, lit per vertex as the SDK does
 // it (vertexlit_and_unlit_generic_vs20.fxc; common_vs_fxc.h DoLightingUnrolled, DoLightInternal,
-// CosineTermInternal, VertexAttenInternal, AmbientLight, RangeFog; SOURCE_FACTS §2.1, §3.2-3.4,
-// §10.3). Written in the lane language like the pixel shaders and counted on the Counted lane
-// against vs_2_0 and vs_3_0 (shader_model.hpp).
+// CosineTermInternal, VertexAttenInternal, AmbientLight, RangeFog; docs/fidelity.md#ambient-cube,
+// #model-lights, #non-bumped-models, #fog). Written in the lane language like the pixel shaders and
+// counted on the Counted lane against vs_2_0 and vs_3_0 (shader_model.hpp).
 //
 // Per vertex:
 //   world     = cModel (4x3) x position; normal = normalize(cModel x normal)   (no skinning here)

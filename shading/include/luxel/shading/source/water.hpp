@@ -2,8 +2,8 @@
 // Water (the expensive DX9 water, water_ps2x.fxc / water_ps2x_helper.h / water.cpp): a normal map
 // bends the screen-space coordinates of the reflection and refraction render targets; the two
 // are blended with a Fresnel term; the refraction fades toward the fog color with depth.
-// SOURCE_FACTS §5.3 (Fresnel, fog), §6.3 (epilogue: TONEMAP NONE, then the pixel fog of the
-// combo, fog.hpp, as water_ps2x.fxc's FinalOutput does), §6.4 (reflection exposure).
+// docs/fidelity.md#water (Fresnel, fog, reflection exposure; epilogue: TONEMAP NONE, then the
+// pixel fog of the combo, fog.hpp, as water_ps2x.fxc's FinalOutput does).
 //
 // Order of operations (per pixel):
 //   n      = 2 tex(normal).xyz - 1, n.a kept (MULTITEXTURE: 0.33 x the sum of three reads first)
@@ -35,7 +35,7 @@
 //    water's output clips anyway, and the target's 8 bits are spent on the displayed range. The
 //    other channels clip with it (a grey radiance past the range shows tint / rho, the tint's hue)
 //    where sdk_fixed keeps them up to s L = 4. rho <= 0 (no reflection) keeps s.
-//  - sdk_fixed (water.cpp, viewrender.cpp; SOURCE_FACTS §6.4: the SDK has no exposure that depends
+//  - sdk_fixed (water.cpp, viewrender.cpp; docs/fidelity.md#water: the SDK has no exposure that depends
 //    on the reflectivity): the view renders with 0.25 s and the tint is GammaToLinear(tint) x 4, so
 //    a reflected radiance L arrives as s L up to s L = 4 and clips there, whatever the tint; 2 bits
 //    of the target's precision go to that headroom. The blurry variant multiplies by the
@@ -230,7 +230,7 @@ inline float4<L> water_combine(const WaterNormalTexels<L>& t, const WaterInputs<
     if constexpr (C.above_water) depth = r.w;
   }
 
-  // §5.3: Fresnel (1 - sat(V·N))^5, faded to 0 where the water is shallow.
+  // Fresnel (1 - sat(V·N))^5, faded to 0 where the water is shallow.
   const L n_dot_v = saturate(dot(normalize(in.tangent_eye), n.xyz()));
   const L fresnel = pow(1.0f - n_dot_v, L(5.0f)) * saturate((depth - 0.05f) * 20.0f);
   L fog_amount;
