@@ -100,9 +100,19 @@ std::array<int, 2> local_light_slots(std::span<const size_t> significance, std::
   return slots;
 }
 
+shading::source::VertexLitMaterial vertexlit_material(const scenes::Material& material) {
+  shading::source::VertexLitMaterial m;
+  m.phong = material.phong;
+  m.bump = material.bump.bound();
+  m.base_map_alpha_phong_mask = material.base_map_alpha_phong_mask;
+  m.half_lambert = material.half_lambert;
+  return m;
+}
+
 ModelLighting light_model(std::span<const LightDesc> lights, const glm::vec3& centroid, const scenes::Material& material,
-                          const AveragedLighting& averaged) {
-  const bool half_lambert = material.half_lambert || material.phong;
+                          shading::ShaderModel card, const AveragedLighting& averaged) {
+  const shading::source::VertexLitMaterial vm = vertexlit_material(material);
+  const bool half_lambert = shading::source::vertexlit_half_lambert(vm, shading::source::vertexlit_path(vm, card));
   ModelLighting m;
   const std::vector<size_t> significance = shading::source::significance_order(lights, centroid);
   m.local = local_light_slots(significance, averaged.shares);

@@ -17,6 +17,7 @@
 #include "luxel/frame/renderer.hpp"
 #include "luxel/scenes/scene.hpp"
 #include "luxel/shading/source/light_folding.hpp"
+#include "luxel/shading/source/vertexlit_dispatch.hpp"
 
 #include <array>
 #include <span>
@@ -58,8 +59,13 @@ void step_towards(AveragedLighting& averaged, const AveragedLighting& target, fl
 /// in `significance` (light_folding.hpp's significance_order at the model's centroid).
 std::array<int, 2> local_light_slots(std::span<const size_t> significance, std::span<const float> shares);
 
-/// The shader's lighting of a model drawn with `material`, from its averaged lighting.
+/// The parameters of a VertexLitGeneric material that choose its shader (vertexlit_dispatch.hpp).
+shading::source::VertexLitMaterial vertexlit_material(const scenes::Material& material);
+
+/// The shader's lighting of a model drawn with `material` on a card of model `card`, from its
+/// averaged lighting: the lights folded into the cube with the Half-Lambert of the material's
+/// path (vertexlit_dispatch.hpp).
 ModelLighting light_model(std::span<const shading::source::LightDesc> lights, const glm::vec3& centroid,
-                          const scenes::Material& material, const AveragedLighting& averaged);
+                          const scenes::Material& material, shading::ShaderModel card, const AveragedLighting& averaged);
 
 }  // namespace luxel::frame

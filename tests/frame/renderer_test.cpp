@@ -137,7 +137,22 @@ TEST(Renderer, AmbientFromTheNearestSampleOrTrilinear) {
   EXPECT_GT(std::abs(nearest[1] - trilinear[1]), 3.0) << "the two must differ for the test to mean anything";
 }
 
-TEST(Renderer, Ps20DropsPhongAndTheOtherModelsAgree) {
+/// `s` with a flat normal map (every texel (0, 0, 1)) on its first material.
+void add_flat_bump_map(scenes::Scene& s) {
+  scenes::Texture t;
+  t.name = "flat normals";
+  t.color_space = scenes::ColorSpace::linear;
+  scenes::PixelImage image;
+  image.width = image.height = 4;
+  for (int i = 0; i < 16; ++i) image.rgba8.insert(image.rgba8.end(), {128, 128, 255, 255});
+  t.faces = {image};
+  s.textures.push_back(t);
+  s.materials[0].bump.texture = static_cast<int>(s.textures.size()) - 1;
+}
+
+// The SDK's helper gives a $phong material the Phong ("skin") shader only with a bump map (or
+// $basemapalphaphongmask, or a lightwarp), and only from ps_2_b on (docs/fidelity.md#which-shader-a-model-gets).
+TEST(Renderer, PhongOnlyForBumpedModelsFromPs2b) {
   scenes::Scene s = lit_by_cube_and_sun(true);
   s.materials[0].phong = true;
   s.materials[0].phong_exponent = 4;
@@ -145,6 +160,14 @@ TEST(Renderer, Ps20DropsPhongAndTheOtherModelsAgree) {
   s.cameras[0].projection = scenes::Projection::perspective;  // a view vector that varies
   s.cameras[0].position = {0.3f, -2.0f, 3.0f};
   s.cameras[0].vertical_fov = 1.0f;
+  // Without a bump map, $phong changes nothing, on any model.
+  scenes::Scene without = s;
+  without.materials[0].phong = false;
+  for (shading::ShaderModel model : {shading::ShaderModel::ps_2_0, shading::ShaderModel::ps_2_b, shading::ShaderModel::ps_3_0})
+    EXPECT_TRUE(render_as(s, model).rgba == render_as(without, model).rgba)
+        << shading::caps(model).name << ": $phong without a bump map got specular";
+  // With one: Phong on ps_2_b and ps_3_0 (the same combo), none on ps_2_0.
+  add_flat_bump_map(s);
   const rasterizer::Image ps30 = render_as(s, shading::ShaderModel::ps_3_0);
   const rasterizer::Image ps2b = render_as(s, shading::ShaderModel::ps_2_b);
   const rasterizer::Image ps20 = render_as(s, shading::ShaderModel::ps_2_0);
