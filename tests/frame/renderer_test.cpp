@@ -10,6 +10,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <utility>
 #include <cstdint>
@@ -34,15 +35,21 @@ void expect_everywhere(const rasterizer::Image& image, int x0, int x1, const dou
   EXPECT_EQ(off, 0) << what;
 }
 
-TEST(Renderer, UnlitBaseTextureRoundTripsThroughSrgb) {
-  scenes::Scene s = top_down();
+/// A 4x4 texture of one texel value.
+scenes::Texture solid_texture(const char* name, scenes::ColorSpace space, std::array<uint8_t, 4> texel) {
   scenes::Texture t;
-  t.name = "solid";
+  t.name = name;
+  t.color_space = space;
   scenes::PixelImage image;
   image.width = image.height = 4;
-  for (int i = 0; i < 16; ++i) image.rgba8.insert(image.rgba8.end(), {200, 100, 50, 255});
+  for (int i = 0; i < 16; ++i) image.rgba8.insert(image.rgba8.end(), texel.begin(), texel.end());
   t.faces = {image};
-  s.textures = {t};
+  return t;
+}
+
+TEST(Renderer, UnlitBaseTextureRoundTripsThroughSrgb) {
+  scenes::Scene s = top_down();
+  s.textures = {solid_texture("solid", scenes::ColorSpace::srgb, {200, 100, 50, 255})};
   scenes::Material m;
   m.family = scenes::ShaderFamily::unlit_generic;
   m.base.texture = 0;
@@ -139,14 +146,7 @@ TEST(Renderer, AmbientFromTheNearestSampleOrTrilinear) {
 
 /// `s` with a flat normal map (every texel (0, 0, 1)) on its first material.
 void add_flat_bump_map(scenes::Scene& s) {
-  scenes::Texture t;
-  t.name = "flat normals";
-  t.color_space = scenes::ColorSpace::linear;
-  scenes::PixelImage image;
-  image.width = image.height = 4;
-  for (int i = 0; i < 16; ++i) image.rgba8.insert(image.rgba8.end(), {128, 128, 255, 255});
-  t.faces = {image};
-  s.textures.push_back(t);
+  s.textures.push_back(solid_texture("flat normals", scenes::ColorSpace::linear, {128, 128, 255, 255}));
   s.materials[0].bump.texture = static_cast<int>(s.textures.size()) - 1;
 }
 
@@ -205,14 +205,8 @@ TEST(Renderer, LightmappedReadsTheFlatMapOrWeighsTheBasisMaps) {
   scenes::Scene s = top_down();
   const glm::vec3 basis[3] = {{0.3f, 0.1f, 0.2f}, {0.6f, 0.2f, 0.1f}, {0.9f, 0.3f, 0.05f}};
   attach_lightmaps(s, {0.2f, 0.4f, 0.6f}, basis);
-  scenes::Texture bump;  // a tilted normal: (160, 100, 230) -> n = 2 t - 1
-  bump.name = "bump";
-  bump.color_space = scenes::ColorSpace::linear;
-  scenes::PixelImage image;
-  image.width = image.height = 4;
-  for (int i = 0; i < 16; ++i) image.rgba8.insert(image.rgba8.end(), {160, 100, 230, 255});
-  bump.faces = {image};
-  s.textures.push_back(bump);
+  // A tilted normal: (160, 100, 230) -> n = 2 t - 1.
+  s.textures.push_back(solid_texture("bump", scenes::ColorSpace::linear, {160, 100, 230, 255}));
   scenes::Material flat, bumped;
   flat.family = bumped.family = scenes::ShaderFamily::lightmapped_generic;
   flat.color = bumped.color = {0.5f, 1.0f, 0.8f, 1.0f};
