@@ -1,7 +1,6 @@
 #pragma once
 // SH9 ambient: irradiance as nine spherical-harmonic coefficients per color channel (bands
-// l = 0..2), the option ps_3_0 offers beside the ambient cube (docs/fidelity.md#ambient-cube;
-// issue #3).
+// l = 0..2), the option ps_3_0 offers beside the ambient cube (docs/fidelity.md#ambient-cube).
 //
 // The method is Ramamoorthi & Hanrahan, "An Efficient Representation for Irradiance Environment
 // Maps", SIGGRAPH 2001: irradiance E(n) = ∫ L(ω) max(0, n·ω) dω is the radiance L convolved with
@@ -227,7 +226,7 @@ inline float3<L> sh9_ambient_light(const float3<L>& n, const Sh9Ambient& sh) {
 // ---- Linear SH (bands 0-1) -----------------------------------------------------------------------
 
 /// Four float3 constant registers: E(n)/π truncated to bands 0 and 1, k0 + k1 x + k2 y + k3 z. Four
-/// RGB coefficients, the linear SH issue #16 says Max Payne 2 stored (no source for that is at
+/// RGB coefficients, the linear SH that Max Payne 2 is said to have stored (no source for that is at
 /// hand here), beside the cube's six and SH9's nine.
 struct Sh4Ambient {
   std::array<glm::vec3, 4> k{};

@@ -73,7 +73,7 @@ struct VertexLitCombo {
     if ((rim || exponent_texture) && !phong) return false;
     if (phong && !half_lambert) return false;
     if (lights > 2 && pixel_attenuation) return false;
-    // SH9 ambient is the ps_3_0 option (issue #3), where the SDK's separate VertexLitGeneric
+    // SH9 ambient is luxel's ps_3_0 option, where the SDK's separate VertexLitGeneric
     // ps_3_0 builds live (docs/fidelity.md#shader-models). A product choice, not a budget: it costs 2
     // slots and 3 constant registers more than the cube, and even the largest combo would fit ps_2_b
     // with it (25 of 32 constants, measured in sh9_test.cpp).
