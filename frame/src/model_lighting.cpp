@@ -110,9 +110,7 @@ shading::source::VertexLitMaterial vertexlit_material(const scenes::Material& ma
 }
 
 ModelLighting light_model(std::span<const LightDesc> lights, const glm::vec3& centroid, const scenes::Material& material,
-                          shading::ShaderModel card, const AveragedLighting& averaged) {
-  const shading::source::VertexLitMaterial vm = vertexlit_material(material);
-  const bool half_lambert = shading::source::vertexlit_half_lambert(vm, shading::source::vertexlit_path(vm, card));
+                          bool half_lambert, const AveragedLighting& averaged) {
   ModelLighting m;
   const std::vector<size_t> significance = shading::source::significance_order(lights, centroid);
   m.local = local_light_slots(significance, averaged.shares);

@@ -62,10 +62,10 @@ std::array<int, 2> local_light_slots(std::span<const size_t> significance, std::
 /// The parameters of a VertexLitGeneric material that choose its shader (vertexlit_dispatch.hpp).
 shading::source::VertexLitMaterial vertexlit_material(const scenes::Material& material);
 
-/// The shader's lighting of a model drawn with `material` on a card of model `card`, from its
-/// averaged lighting: the lights folded into the cube with the Half-Lambert of the material's
-/// path (vertexlit_dispatch.hpp).
+/// The shader's lighting of a model drawn with `material`, from its averaged lighting: the lights
+/// folded into the cube with squared Half-Lambert or Lambert, as the shader the material gets
+/// lights (vertexlit_half_lambert).
 ModelLighting light_model(std::span<const shading::source::LightDesc> lights, const glm::vec3& centroid,
-                          const scenes::Material& material, shading::ShaderModel card, const AveragedLighting& averaged);
+                          const scenes::Material& material, bool half_lambert, const AveragedLighting& averaged);
 
 }  // namespace luxel::frame

@@ -542,12 +542,13 @@ class FrameBuilder {
     // does not move, and is lit as it is now.
     const int model = model_of_mesh_[index];
     const glm::vec3 centroid = model >= 0 ? st_.model_states[static_cast<size_t>(model)].centroid : mesh_center(mesh, glm::vec3(0.0f));
-    const ModelLighting lighting =
-        model >= 0 ? light_model(lights_, centroid, m, model_, st_.model_lighting[static_cast<size_t>(model)])
-                   : light_model(lights_, centroid, m, model_, lighting_at(scene_, lights_, centroid, st_.settings.ambient));
     // The SDK helper's choice of shader (vertexlit_dispatch.hpp): Phong only in the skin shader.
     const VertexLitMaterial vm = vertexlit_material(m);
     const VertexLitPath path = vertexlit_path(vm, model_);
+    const bool half_lambert = vertexlit_half_lambert(vm, path);
+    const ModelLighting lighting =
+        model >= 0 ? light_model(lights_, centroid, m, half_lambert, st_.model_lighting[static_cast<size_t>(model)])
+                   : light_model(lights_, centroid, m, half_lambert, lighting_at(scene_, lights_, centroid, st_.settings.ambient));
     const bool phong = path == VertexLitPath::skin;
     VertexLitCombo wanted;
     wanted.lights = lighting.kept > 0 ? 2 : 0;
@@ -555,7 +556,7 @@ class FrameBuilder {
     wanted.phong = phong;
     wanted.exponent_texture = phong && m.phong_exponent_texture.bound();
     wanted.rim = phong && m.rim;
-    wanted.half_lambert = vertexlit_half_lambert(vm, path);
+    wanted.half_lambert = half_lambert;
     wanted.pixel_attenuation = !st_.settings.vertex_attenuation;
     wanted.fog = fog_;
     wanted.normalization_cube = model_ == shading::ShaderModel::ps_2_0;
