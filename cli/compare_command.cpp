@@ -20,6 +20,7 @@
 
 #include "luxel/frame/image_difference.hpp"
 #include "luxel/frame/renderer.hpp"
+#include "luxel/shading/source/binaries.hpp"
 #include "luxel/scenes/image_io.hpp"
 #include "luxel/shading/shader_model.hpp"
 
@@ -84,7 +85,11 @@ nlohmann::json to_json(const CompareOptions& o, const std::vector<ModelRun>& run
   for (const ModelRun& r : runs) {
     nlohmann::json uses = nlohmann::json::array();
     for (const frame::ShaderUse& u : r.uses)
-      uses.push_back({{"family", u.family}, {"combo", u.combo}, {"pixels", u.pixels}, {"slots", u.slots}});
+      uses.push_back({{"family", u.family},
+                      {"combo", u.combo},
+                      {"binary", std::string(shading::source::binary_name(u.binary))},
+                      {"pixels", u.pixels},
+                      {"slots", u.slots}});
     j["models"].push_back({{"model", r.name},
                            {"ms_per_frame", r.median_ms()},
                            {"ms_min", r.ms.front()},

@@ -1,16 +1,18 @@
 // luxel cost [--shader all|<family>] [--pixels N] [--repeats R]: every Source shader variant of
-// the shading catalog (catalog.hpp), fog variants included, on every shader model the SDK's rules
-// allow it on — pixel shaders on ps_2_0 / ps_2_b / ps_3_0, the per-vertex VertexLitGeneric vertex
-// shader (--shader vertexlit_vs) on vs_2_0 / vs_3_0 — with counted DX9 slots, temps, constants,
-// the model's limits, whether it fits and why not, and ns per pixel (per vertex for vertex
-// shaders) on the SIMD and scalar lanes (the combine stage: texture sampling excluded), then the
-// ambient cube's counts beside Valve's published ones. A report, not a benchmark:
+// the shading catalog (catalog.hpp), fog variants included, on every card the SDK's rules allow
+// it on — pixel shaders on ps_2_0 / ps_2_b / ps_3_0, the per-vertex VertexLitGeneric vertex
+// shader (--shader vertexlit_vs) on vs_2_0 / vs_3_0 — with the SDK binary that card runs
+// (binaries.hpp: a ps_3_0 card runs LightmappedGeneric's ps20b), that binary's counted DX9 slots,
+// temps, constants, its model's limits, whether it fits and why not, and ns per pixel (per vertex
+// for vertex shaders) on the SIMD and scalar lanes (the combine stage: texture sampling excluded),
+// then the ambient cube's counts beside Valve's published ones. A report, not a benchmark:
 // bench/shading_source_bench.cpp has the careful numbers.
 //
 // luxel cost --scene SCENE [--model M] [render's size, MSAA, thread and bake options] [--repeats R]:
 // instead, what one frame of the scene costs on each pixel-shader model (or M): the pixels each
 // shader combo shaded with its counted slots and slots x pixels (the frame's passes, post passes
-// included), the median ms of each pass and of the frame over R frames after one, and the totals.
+// included) with the binary each ran, the median ms of each pass and of the frame over R frames
+// after one, and the totals.
 // Measured as `luxel compare` measures (frame_measurement.hpp), so its numbers are compare's.
 //
 // Rows are '|'-separated columns, so that scripts and the test (tests/cli/cost_test.cpp) can read
@@ -62,16 +64,18 @@ void print_header(const CostOptions& o) {
   std::printf("lanes: %s, %d floats; ns/pixel (vertex shaders: ns/vertex): median of %d runs of %d pixels, combine stage "
               "only (texel values as inputs, texture sampling excluded)\n",
               rasterizer::simd::kIsaName, rasterizer::simd::kLanes, o.repeats, o.pixels);
-  std::printf("%-19s | %-46s | %-6s | %5s | %3s | %5s | %6s | %5s | %-16s | %-4s | %8s | %8s | %s\n", "shader", "variant",
-              "model", "arith", "tex", "temps", "consts", "indir", "limits slots/t/c", "fits", "ns simd", "ns scal",
-              "why not");
+  std::printf("%-19s | %-46s | %-6s | %-6s | %5s | %3s | %5s | %6s | %5s | %-16s | %-4s | %8s | %8s | %s\n", "shader",
+              "variant", "card", "binary", "arith", "tex", "temps", "consts", "indir", "limits slots/t/c", "fits", "ns simd",
+              "ns scal", "why not");
 }
 
-void print_row(const src::ShaderVariant& v, ShaderModel m, const Cost& c, const src::LaneTimes& t) {
-  const shading::ShaderModelCaps& k = shading::caps(m);
+/// One card's row: the binary it runs (`binary`), counted (`c`) and checked against that binary's limits.
+void print_row(const src::ShaderVariant& v, ShaderModel card, ShaderModel binary, const Cost& c, const src::LaneTimes& t) {
+  const shading::ShaderModelCaps& k = shading::caps(binary);
   const shading::Verdict verdict = shading::fits(c, k);
-  std::printf("%-19s | %-46s | %-6s | %5d | %3d | %5d | %6d | %5d | %-16s | %-4s | %8.1f | %8.1f | %s\n",
-              v.family.c_str(), v.variant.c_str(), std::string(k.name).c_str(), c.arithmetic_slots, c.texture_slots,
+  std::printf("%-19s | %-46s | %-6s | %-6s | %5d | %3d | %5d | %6d | %5d | %-16s | %-4s | %8.1f | %8.1f | %s\n",
+              v.family.c_str(), v.variant.c_str(), std::string(shading::caps(card).name).c_str(),
+              std::string(src::binary_name(binary)).c_str(), c.arithmetic_slots, c.texture_slots,
               c.temps, c.constant_registers(), c.texture_indirections, limits_of(k).c_str(), verdict ? "yes" : "NO",
               t.simd_ns, t.scalar_ns, verdict.reason.c_str());
 }
@@ -108,14 +112,15 @@ void print_frame_costs(const std::vector<FrameCost>& costs, const CostOptions& o
   std::printf("frame: %s, %dx%d, %d samples per pixel, %d threads; ms: median of %d frames after one, each pass run to its "
               "end before the next\n",
               o.frame.scene.c_str(), s.width, s.height, s.samples, threads, o.repeats);
-  std::printf("\n%-6s | %-20s | %-54s | %10s | %5s | %14s | %6s\n", "model", "shader", "combo", "pixels", "slots",
-              "slots x pixels", "share");
+  std::printf("\n%-6s | %-20s | %-54s | %-6s | %10s | %5s | %14s | %6s\n", "model", "shader", "combo", "binary", "pixels",
+              "slots", "slots x pixels", "share");
   for (const FrameCost& c : costs) {
     const uint64_t total = c.m.shading_totals().slot_pixels;
     for (const frame::ShaderUse& u : c.m.uses) {
       const uint64_t sp = u.pixels * uint64_t(u.slots);
-      std::printf("%-6s | %-20s | %-54s | %10llu | %5d | %14llu | %5.1f%%\n", c.model.c_str(), u.family.c_str(), u.combo.c_str(),
-                  static_cast<unsigned long long>(u.pixels), u.slots, static_cast<unsigned long long>(sp),
+      std::printf("%-6s | %-20s | %-54s | %-6s | %10llu | %5d | %14llu | %5.1f%%\n", c.model.c_str(), u.family.c_str(),
+                  u.combo.c_str(), std::string(src::binary_name(u.binary)).c_str(), static_cast<unsigned long long>(u.pixels),
+                  u.slots, static_cast<unsigned long long>(sp),
                   total ? 100.0 * double(sp) / double(total) : 0.0);
     }
   }
@@ -193,7 +198,10 @@ Runner add_cost_command(CLI::App& app) {
     for (const src::ShaderVariant& v : src::shader_catalog()) {
       if (options->shader != "all" && options->shader != v.option) continue;
       const src::LaneTimes t = v.time(options->pixels, options->repeats);
-      for (ShaderModel m : v.models) print_row(v, m, v.measure(m), t);
+      for (ShaderModel card : v.models) {
+        const ShaderModel binary = *v.builds.binary_for(card);
+        print_row(v, card, binary, v.measure(binary), t);
+      }
     }
     report_ambient_cube();
     return 0;

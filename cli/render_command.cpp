@@ -13,6 +13,7 @@
 #include "line_plot.hpp"
 
 #include "luxel/frame/renderer.hpp"
+#include "luxel/shading/source/binaries.hpp"
 #include "luxel/rasterizer/fast_paths.hpp"
 #include "luxel/rasterizer/image.hpp"
 #include "luxel/scenes/image_io.hpp"
@@ -144,7 +145,8 @@ void print_stats(const frame::Renderer& renderer, const rasterizer::ContextOptio
             << " stamps_shaded=" << s.stamps_shaded << " tile_memory_targets=" << s.tile_memory_targets
             << " fast_paths_off=" << rasterizer::fast_paths_off_names(context_options.fast_paths) << "\n";
   for (const frame::ShaderUse& u : renderer.shader_uses())
-    std::cout << "shader=" << u.family << " combo=" << u.combo << " pixels=" << u.pixels << " slots=" << u.slots
+    std::cout << "shader=" << u.family << " combo=" << u.combo << " binary=" << shading::source::binary_name(u.binary)
+              << " pixels=" << u.pixels << " slots=" << u.slots
               << " slot_pixels=" << u.pixels * static_cast<uint64_t>(u.slots) << "\n";
   for (const frame::PassTime& p : renderer.pass_times())
     std::cout << "pass=" << p.pass << " draws=" << p.draws << " ms=" << p.ms << "\n";

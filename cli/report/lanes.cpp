@@ -54,7 +54,7 @@ SectionResult run_lanes(const ReportSettings& s) {
                         a.differing > 0 ? v.variant : "",
                         "the scalar lane (float, one pixel at a time) on the same inputs, texel and interpolant values "
                         "drawn in [0.05, 1]; SIMD lane " + lanes,
-                        {double(v.measure(model).total_slots()), t.simd_ns, t.scalar_ns, a.max_abs, double(a.max_steps),
+                        {double(v.measure(*v.builds.binary_for(model)).total_slots()), t.simd_ns, t.scalar_ns, a.max_abs, double(a.max_steps),
                          a.pixels ? double(a.differing) / double(a.pixels) : 0.0}});
   }
   out.notes.push_back(std::to_string(agreeing) + " of " + std::to_string(out.rows.size()) +

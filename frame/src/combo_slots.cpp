@@ -35,40 +35,40 @@ int kept(const char* family, const Combo& combo, shading::ShaderModel model, Cou
 
 }  // namespace
 
-int lightmapped_slots(const LightmappedCombo& combo, shading::ShaderModel model) {
-  return kept<kLightmappedSpace>("LightmappedGeneric", combo, model, []<LightmappedCombo C>(shading::ShaderModel m) {
+int lightmapped_slots(const LightmappedCombo& combo, shading::ShaderModel binary) {
+  return kept<kLightmappedSpace>("LightmappedGeneric", combo, binary, []<LightmappedCombo C>(shading::ShaderModel m) {
     return measure_lightmapped_generic<C>(m).total_slots();
   });
 }
 
-int vertexlit_slots(const VertexLitCombo& combo, shading::ShaderModel model) {
-  return kept<kVertexLitSpace>("VertexLitGeneric", combo, model, []<VertexLitCombo C>(shading::ShaderModel m) {
+int vertexlit_slots(const VertexLitCombo& combo, shading::ShaderModel binary) {
+  return kept<kVertexLitSpace>("VertexLitGeneric", combo, binary, []<VertexLitCombo C>(shading::ShaderModel m) {
     return measure_vertexlit_generic<C>(m).total_slots();
   });
 }
 
-bool vertexlit_fits(const VertexLitCombo& combo, shading::ShaderModel model) {
+bool vertexlit_fits(const VertexLitCombo& combo, shading::ShaderModel binary) {
   if (index_in<kVertexLitSpace>(combo) < 0) return false;
-  return kept<kVertexLitSpace>("VertexLitGeneric", combo, model, [&]<VertexLitCombo C>(shading::ShaderModel m) {
+  return kept<kVertexLitSpace>("VertexLitGeneric", combo, binary, [&]<VertexLitCombo C>(shading::ShaderModel m) {
            return int(vertexlit_compiles<C>(m));
          }) == 1;
 }
 
-int unlit_slots(const UnlitCombo& combo, shading::ShaderModel model) {
-  return kept<kUnlitSpace>("UnlitGeneric", combo, model, []<UnlitCombo C>(shading::ShaderModel m) {
+int unlit_slots(const UnlitCombo& combo, shading::ShaderModel binary) {
+  return kept<kUnlitSpace>("UnlitGeneric", combo, binary, []<UnlitCombo C>(shading::ShaderModel m) {
     return measure_unlit_generic<C>(m).total_slots();
   });
 }
 
-int water_slots(const WaterCombo& combo, shading::ShaderModel model) {
-  return kept<kWaterSpace>("Water", combo, model, []<WaterCombo C>(shading::ShaderModel m) {
+int water_slots(const WaterCombo& combo, shading::ShaderModel binary) {
+  return kept<kWaterSpace>("Water", combo, binary, []<WaterCombo C>(shading::ShaderModel m) {
     return measure_water<C>(m).total_slots();
   });
 }
 
-int sky_slots(shading::ShaderModel model) {
+int sky_slots(shading::ShaderModel binary) {
   static constexpr std::array kSkySpace{SkyPixelShader::kCombo};  // the frame's one Sky_HDR combo
-  return kept<kSkySpace>("Sky_HDR", SkyPixelShader::kCombo, model, []<SkyCombo C>(shading::ShaderModel m) {
+  return kept<kSkySpace>("Sky_HDR", SkyPixelShader::kCombo, binary, []<SkyCombo C>(shading::ShaderModel m) {
     return measure_sky<C>(m).total_slots();
   });
 }

@@ -13,15 +13,16 @@
 
 namespace luxel::frame::detail {
 
-/// Counted slots per pixel of a combo of the frame's space on `model` (std::logic_error outside it).
-int lightmapped_slots(const shading::source::LightmappedCombo& combo, shading::ShaderModel model);
-int vertexlit_slots(const shading::source::VertexLitCombo& combo, shading::ShaderModel model);
-int unlit_slots(const shading::source::UnlitCombo& combo, shading::ShaderModel model);
-int water_slots(const shading::source::WaterCombo& combo, shading::ShaderModel model);
-int sky_slots(shading::ShaderModel model);
+/// Counted slots per pixel of the binary of model `binary` of a combo of the frame's space
+/// (std::logic_error outside it). Which binary a card runs: binaries.hpp.
+int lightmapped_slots(const shading::source::LightmappedCombo& combo, shading::ShaderModel binary);
+int vertexlit_slots(const shading::source::VertexLitCombo& combo, shading::ShaderModel binary);
+int unlit_slots(const shading::source::UnlitCombo& combo, shading::ShaderModel binary);
+int water_slots(const shading::source::WaterCombo& combo, shading::ShaderModel binary);
+int sky_slots(shading::ShaderModel binary);
 
-/// Whether a VertexLit combo of the frame's space exists on `model`: allowed by the SDK's rules and
-/// within the model's limits (vertexlit_compiles); false outside the space.
-bool vertexlit_fits(const shading::source::VertexLitCombo& combo, shading::ShaderModel model);
+/// Whether a VertexLit combo of the frame's space has a binary of model `binary`: allowed by the
+/// SDK's rules and within the model's limits (vertexlit_compiles); false outside the space.
+bool vertexlit_fits(const shading::source::VertexLitCombo& combo, shading::ShaderModel binary);
 
 }  // namespace luxel::frame::detail

@@ -13,7 +13,9 @@ SourceDraw lightmapped_draw(const LightmappedCombo& combo, shading::ShaderModel 
   SourceDraw d;
   const bool found = detail::with_combo<detail::kLightmappedSpace>(combo, [&]<LightmappedCombo C>() {
     LightmappedPixelShader<C> ps{params, page, eye};
-    d = detail::make_source_draw(ps, target, "LightmappedGeneric", C.name(), detail::lightmapped_slots(C, model));
+    const shading::ShaderModel binary = detail::binary_for(C, model);
+    d = detail::make_source_draw(ps, target, "LightmappedGeneric", C.name(), binary,
+                                 detail::lightmapped_slots(C, binary));
   });
   if (!found) detail::outside_space("LightmappedGeneric", combo.name());
   return d;

@@ -31,7 +31,8 @@ namespace luxel::frame {
 struct SourceDraw {
   std::string family;  ///< the catalog's family name
   std::string combo;   ///< the combo's name
-  int slots = 0;       ///< counted DX9 slots per pixel on the frame's model
+  shading::ShaderModel binary = shading::ShaderModel::ps_2_0;  ///< the SDK binary the frame's card runs (binaries.hpp)
+  int slots = 0;       ///< that binary's counted DX9 slots per pixel
   std::unique_ptr<std::atomic<uint64_t>> pixels = std::make_unique<std::atomic<uint64_t>>(0);
   std::function<void(rasterizer::Context&, const rasterizer::Framebuffer&)> run;
   /// The same draw writing byte `byte` (0 lowest) of each rgb channel's float bits as that
@@ -99,12 +100,24 @@ struct FloatBytes {
   }
 };
 
-/// The draw of pixel functor `ps` (its counter wired when counting).
+/// The model of the binary a card of model `card` runs for `combo` (binaries.hpp). The frame
+/// chooses only combos the card has a binary for: none is a frame bug.
+template <class Combo>
+shading::ShaderModel binary_for(const Combo& combo, shading::ShaderModel card) {
+  const std::optional<shading::ShaderModel> b = combo.builds().binary_for(card);
+  if (!b) throw std::logic_error(combo.name() + ": the SDK builds no binary of it for " + std::string(shading::caps(card).name));
+  return *b;
+}
+
+/// The draw of pixel functor `ps` (its counter wired when counting), running the SDK binary of
+/// model `binary`, which counts `slots`.
 template <class PS>
-SourceDraw make_source_draw(PS ps, const DrawTarget& target, std::string family, std::string combo, int slots) {
+SourceDraw make_source_draw(PS ps, const DrawTarget& target, std::string family, std::string combo,
+                            shading::ShaderModel binary, int slots) {
   SourceDraw d;
   d.family = std::move(family);
   d.combo = std::move(combo);
+  d.binary = binary;
   d.slots = slots;
   if (target.count_pixels) ps.pixels = d.pixels.get();
   if constexpr (requires { ps.water_fog_to_alpha; }) ps.water_fog_to_alpha = target.water_fog_to_alpha;

@@ -13,7 +13,8 @@ SourceDraw unlit_draw(const UnlitCombo& combo, shading::ShaderModel model, const
   SourceDraw d;
   const bool found = detail::with_combo<detail::kUnlitSpace>(combo, [&]<UnlitCombo C>() {
     UnlitPixelShader<C> ps{params, eye};
-    d = detail::make_source_draw(ps, target, "UnlitGeneric", C.name(), detail::unlit_slots(C, model));
+    const shading::ShaderModel binary = detail::binary_for(C, model);
+    d = detail::make_source_draw(ps, target, "UnlitGeneric", C.name(), binary, detail::unlit_slots(C, binary));
   });
   if (!found) detail::outside_space("UnlitGeneric", combo.name());
   return d;
@@ -21,7 +22,8 @@ SourceDraw unlit_draw(const UnlitCombo& combo, shading::ShaderModel model, const
 
 SourceDraw sky_draw(shading::ShaderModel model, const DrawTarget& target, const SkyParams& params) {
   SkyPixelShader ps{params};
-  return detail::make_source_draw(ps, target, "Sky_HDR", SkyPixelShader::kCombo.name(), detail::sky_slots(model));
+  const shading::ShaderModel binary = detail::binary_for(SkyPixelShader::kCombo, model);
+  return detail::make_source_draw(ps, target, "Sky_HDR", SkyPixelShader::kCombo.name(), binary, detail::sky_slots(binary));
 }
 
 }  // namespace luxel::frame

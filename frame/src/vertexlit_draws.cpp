@@ -10,9 +10,11 @@ using namespace shading::source;
 
 std::optional<VertexLitCombo> fitting_vertexlit_combo(VertexLitCombo wanted, shading::ShaderModel model) {
   if (wanted.lights == 0) wanted.half_lambert = wanted.pixel_attenuation = true;
-  if (detail::vertexlit_fits(wanted, model)) return wanted;
+  const std::optional<shading::ShaderModel> binary = wanted.builds().binary_for(model);
+  if (!binary) return std::nullopt;
+  if (detail::vertexlit_fits(wanted, *binary)) return wanted;
   wanted.pixel_attenuation = false;
-  if (wanted.lights > 0 && detail::vertexlit_fits(wanted, model)) return wanted;
+  if (wanted.lights > 0 && detail::vertexlit_fits(wanted, *binary)) return wanted;
   return std::nullopt;
 }
 
@@ -21,7 +23,8 @@ SourceDraw vertexlit_draw(const VertexLitCombo& combo, shading::ShaderModel mode
   SourceDraw d;
   const bool found = detail::with_combo<detail::kVertexLitSpace>(combo, [&]<VertexLitCombo C>() {
     VertexLitPixelShader<C> ps{params};
-    d = detail::make_source_draw(ps, target, "VertexLitGeneric", C.name(), detail::vertexlit_slots(C, model));
+    const shading::ShaderModel binary = detail::binary_for(C, model);
+    d = detail::make_source_draw(ps, target, "VertexLitGeneric", C.name(), binary, detail::vertexlit_slots(C, binary));
   });
   if (!found) detail::outside_space("VertexLitGeneric", combo.name());
   return d;

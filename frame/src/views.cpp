@@ -62,7 +62,8 @@ void add_shader_uses(const PassList& passes, std::vector<ShaderUse>& uses) {
     for (const Pass& p : *list)
       if (p.source)
         shading::source::add_shader_use(
-            uses, {p.source->family, p.source->combo, p.source->pixels->load(std::memory_order_relaxed), p.source->slots});
+            uses, {p.source->family, p.source->combo, p.source->pixels->load(std::memory_order_relaxed), p.source->binary,
+                   p.source->slots});
 }
 
 }  // namespace luxel::frame

@@ -13,7 +13,8 @@ SourceDraw water_draw(const WaterCombo& combo, shading::ShaderModel model, const
   SourceDraw d;
   const bool found = detail::with_combo<detail::kWaterSpace>(combo, [&]<WaterCombo C>() {
     WaterPixelShader<C> ps{params, constants, eye};
-    d = detail::make_source_draw(ps, target, "Water", C.name(), detail::water_slots(C, model));
+    const shading::ShaderModel binary = detail::binary_for(C, model);
+    d = detail::make_source_draw(ps, target, "Water", C.name(), binary, detail::water_slots(C, binary));
   });
   if (!found) detail::outside_space("Water", combo.name());
   return d;

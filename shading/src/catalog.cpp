@@ -21,6 +21,7 @@
 #include <chrono>
 #include <cmath>
 #include <random>
+#include <optional>
 #include <span>
 
 // Each family's constants are a static that the shade lambdas (generic, inside a template lambda)
@@ -112,24 +113,26 @@ LaneAgreement compare_lanes(const Shade& shade, int k, int pixels) {
   return r;
 }
 
-/// The models of `candidates` (the pixel-shader models unless told otherwise) that the combo's
-/// rules allow it on (its valid(model), where the family has one).
+/// The cards of `candidates` (the pixel-shader models unless told otherwise) that have a binary of
+/// the combo (`builds`) which the combo's rules allow (its valid(model), where the family has one).
 template <class Combo>
-std::vector<ShaderModel> models_of(const Combo& combo, std::span<const ShaderModel> candidates) {
+std::vector<ShaderModel> models_of(const Combo& combo, ShaderBuilds builds, std::span<const ShaderModel> candidates) {
   std::vector<ShaderModel> models;
-  for (ShaderModel m : candidates) {
-    if constexpr (requires { combo.valid(m); }) {
-      if (!combo.valid(m)) continue;
+  for (ShaderModel card : candidates) {
+    const std::optional<ShaderModel> binary = builds.binary_for(card);
+    if (!binary) continue;
+    if constexpr (requires { combo.valid(*binary); }) {
+      if (!combo.valid(*binary)) continue;
     }
-    models.push_back(m);
+    models.push_back(card);
   }
   return models;
 }
 
 template <class Combo, class Shade, class Measure>
-ShaderVariant variant(const char* family, const char* option, const Combo& combo, int inputs, Shade shade,
-                      Measure measure, std::span<const ShaderModel> candidates = kPixelModels) {
-  return {family, option, combo.name(), models_of(combo, candidates), measure,
+ShaderVariant variant(const char* family, const char* option, const Combo& combo, ShaderBuilds builds, int inputs,
+                      Shade shade, Measure measure, std::span<const ShaderModel> candidates = kPixelModels) {
+  return {family, option, combo.name(), models_of(combo, builds, candidates), builds, measure,
           [shade, inputs](int pixels, int repeats) { return time_lanes(shade, inputs, pixels, repeats); },
           [shade, inputs](int pixels) { return compare_lanes(shade, inputs, pixels); }};
 }
@@ -155,7 +158,7 @@ void add_lightmapped(std::vector<ShaderVariant>& out) {
       in.fog = FogInputs<L>{get(26), get(27)};
       return lightmapped_generic_combine<C>(t, in, p, [](const float3<L>& r) { return r * r; });
     };
-    out.push_back(variant("LightmappedGeneric", "lightmapped", C, 28, shade,
+    out.push_back(variant("LightmappedGeneric", "lightmapped", C, C.builds(), 28, shade,
                           [](ShaderModel m) { return measure_lightmapped_generic<C>(m); }));
   });
 }
@@ -186,7 +189,7 @@ void add_vertexlit(std::vector<ShaderVariant>& out) {
       in.proj_z = get(28);
       return vertexlit_combine<C>(t, in, p);
     };
-    out.push_back(variant("VertexLitGeneric", "vertexlit", C, 29, shade,
+    out.push_back(variant("VertexLitGeneric", "vertexlit", C, C.builds(), 29, shade,
                           [](ShaderModel m) { return measure_vertexlit_generic<C>(m); }));
   });
 }
@@ -210,7 +213,7 @@ void add_vertexlit_vs(std::vector<ShaderVariant>& out) {
       const VertexLitVsOutputs<L> o = vertexlit_vertex_shader<C>(v, p);
       return float4<L>(o.lighting + o.proj_pos.xyz(), o.fog);
     };
-    out.push_back(variant("VertexLitGeneric_vs", "vertexlit_vs", C, 8, shade,
+    out.push_back(variant("VertexLitGeneric_vs", "vertexlit_vs", C, C.builds(), 8, shade,
                           [](ShaderModel m) { return measure_vertexlit_vertex_shader<C>(m); }, kVertexModels));
   });
 }
@@ -234,7 +237,7 @@ void add_unlit(std::vector<ShaderVariant>& out) {
       in.fog = FogInputs<L>{get(21), get(22)};
       return unlit_generic_combine<C>(t, in, p, [](const float3<L>& r) { return r * r; });
     };
-    out.push_back(variant("UnlitGeneric", "unlit", C, 23, shade, [](ShaderModel m) { return measure_unlit_generic<C>(m); }));
+    out.push_back(variant("UnlitGeneric", "unlit", C, C.builds(), 23, shade, [](ShaderModel m) { return measure_unlit_generic<C>(m); }));
   });
 }
 
@@ -256,7 +259,7 @@ void add_sky(std::vector<ShaderVariant>& out) {
       in.uv_in_texels = float2<L>(get(20), get(21));
       return sky_combine<C>(t, in, p);
     };
-    out.push_back(variant("Sky_HDR", "sky", C, 22, shade, [](ShaderModel m) { return measure_sky<C>(m); }));
+    out.push_back(variant("Sky_HDR", "sky", C, C.builds(), 22, shade, [](ShaderModel m) { return measure_sky<C>(m); }));
   });
 }
 
@@ -277,7 +280,7 @@ void add_water(std::vector<ShaderVariant>& out) {
       auto target = [](const float2<L>& uv) { return float4<L>(uv.x, uv.y, uv.x * uv.y, uv.y); };
       return water_combine<C>(t, in, p, target, target);
     };
-    out.push_back(variant("Water", "water", C, 22, shade, [](ShaderModel m) { return measure_water<C>(m); }));
+    out.push_back(variant("Water", "water", C, C.builds(), 22, shade, [](ShaderModel m) { return measure_water<C>(m); }));
   });
 }
 
@@ -291,7 +294,7 @@ void add_luminance_range(std::vector<ShaderVariant>& out) {
     auto shade = []<class L>(const auto& get) {
       return luminance_range_combine<C>(float3<L>(get(0), get(1), get(2)), p).color;
     };
-    out.push_back(variant(LuminanceRangePixelShader<C>::kFamily, "luminance", C, 3, shade,
+    out.push_back(variant(LuminanceRangePixelShader<C>::kFamily, "luminance", C, LuminanceRangePixelShader<C>::kBuilds, 3, shade,
                           [](ShaderModel m) { return measure_luminance_range<C>(m); }));
   });
 }
@@ -310,7 +313,7 @@ void add_color_correction(std::vector<ShaderVariant>& out) {
       return float4<L>(color_correction_combine<C>(float3<L>(get(0), get(1), get(2)), lookups, p.lut_weights, p.default_weight),
                        L(1.0f));
     };
-    out.push_back(variant(ColorCorrectionPixelShader<C>::kFamily, "colorcorrection", C, 3 + 3 * kMaxColorCorrectionLuts, shade,
+    out.push_back(variant(ColorCorrectionPixelShader<C>::kFamily, "colorcorrection", C, ColorCorrectionPixelShader<C>::kBuilds, 3 + 3 * kMaxColorCorrectionLuts, shade,
                           [](ShaderModel m) { return measure_color_correction<C>(m); }));
   });
 }
@@ -329,7 +332,7 @@ void add_engine_post(std::vector<ShaderVariant>& out) {
       for (int k = 0; k < kMaxColorCorrectionLuts; ++k) lookups[k] = float3<L>(get(6 + 3 * k), get(7 + 3 * k), get(8 + 3 * k));
       return float4<L>(color_correction_combine<C.correction()>(bloomed, lookups, p.lut_weights, p.default_weight), L(1.0f));
     };
-    out.push_back(variant(EnginePostPixelShader<C>::kFamily, "enginepost", C, 6 + 3 * kMaxColorCorrectionLuts, shade,
+    out.push_back(variant(EnginePostPixelShader<C>::kFamily, "enginepost", C, EnginePostPixelShader<C>::kBuilds, 6 + 3 * kMaxColorCorrectionLuts, shade,
                           [](ShaderModel m) { return measure_engine_post<C>(m); }));
   });
 }
@@ -346,7 +349,7 @@ void add_bloom(std::vector<ShaderVariant>& out) {
     for (int i = 0; i < 4; ++i) taps[i] = float3<L>(get(3 * i), get(3 * i + 1), get(3 * i + 2));
     return downsample_combine(taps, downsample_params);
   };
-  out.push_back(variant(DownsamplePixelShader::kFamily, "downsample", SingleVariant{}, 12, downsample_shade, measure_downsample));
+  out.push_back(variant(DownsamplePixelShader::kFamily, "downsample", SingleVariant{}, DownsamplePixelShader::kBuilds, 12, downsample_shade, measure_downsample));
 
   static const BlurParams blur_params = blur_constants(BlurAxis::vertical, 320, 180, BlurStep::sdk_width_quirk, 0.3f);
   auto blur_shade = []<class L>(const auto& get) {
@@ -359,10 +362,10 @@ void add_bloom(std::vector<ShaderVariant>& out) {
     }
     return blur_combine(t, blur_params);
   };
-  out.push_back(variant(BlurPixelShader::kFamily, "blur", SingleVariant{}, 39, blur_shade, measure_blur));
+  out.push_back(variant(BlurPixelShader::kFamily, "blur", SingleVariant{}, BlurPixelShader::kBuilds, 39, blur_shade, measure_blur));
 
   auto add_shade = []<class L>(const auto& get) { return bloom_add_combine(float3<L>(get(0), get(1), get(2))); };
-  out.push_back(variant(BloomAddPixelShader::kFamily, "bloomadd", SingleVariant{}, 3, add_shade, measure_bloom_add));
+  out.push_back(variant(BloomAddPixelShader::kFamily, "bloomadd", SingleVariant{}, BloomAddPixelShader::kBuilds, 3, add_shade, measure_bloom_add));
 }
 
 void add_film_grain(std::vector<ShaderVariant>& out) {
@@ -372,7 +375,7 @@ void add_film_grain(std::vector<ShaderVariant>& out) {
     return q;
   }();
   auto shade = []<class L>(const auto& get) { return film_grain_combine(float4<L>(get(0), get(1), get(2), get(3)), p); };
-  out.push_back(variant(FilmGrainPixelShader::kFamily, "filmgrain", SingleVariant{}, 4, shade, measure_film_grain));
+  out.push_back(variant(FilmGrainPixelShader::kFamily, "filmgrain", SingleVariant{}, FilmGrainPixelShader::kBuilds, 4, shade, measure_film_grain));
 }
 
 }  // namespace

@@ -1,8 +1,9 @@
 // `luxel cost` checked by what it prints: a row for every variant of the shading catalog on every
-// model the catalog lists for it (and no other, pixel or vertex shader model), the counts the Counted lane measures, "fits"
-// exactly when the printed counts are within the model's limits (shader_model.hpp), the reason
-// when not, the ambient-cube line and the CPU line. Table-driven from shader_catalog(), so the
-// variants a family adds are covered without touching this test.
+// card the catalog lists for it (and no other, pixel or vertex shader model), the SDK binary that
+// card runs, the counts the Counted lane measures for that binary, "fits" exactly when the
+// printed counts are within the binary's limits (shader_model.hpp), the reason when not, the
+// ambient-cube line and the CPU line. Table-driven from shader_catalog(), so the variants a family
+// adds are covered without touching this test.
 
 #include "luxel/shading/source/catalog.hpp"
 #include "luxel/shading/source/common.hpp"
@@ -41,7 +42,7 @@ std::map<std::string, std::vector<std::string>> table_rows(const std::string& ou
     std::string f;
     while (std::getline(fields, f, '|')) cols.push_back(trim(f));
     if (!line.empty() && line.back() == '|') cols.push_back("");
-    if (cols.size() != 13 || cols[0] == "shader") continue;
+    if (cols.size() != 14 || cols[0] == "shader") continue;
     table[cols[0] + "|" + cols[1] + "|" + cols[2]] = cols;
     ++rows;
   }
@@ -72,21 +73,23 @@ TEST(CostCommand, PrintsEveryCatalogVariantOnItsModelsWithTheCountedCost) {
       if (m == ShaderModel::vs_2_0 || m == ShaderModel::vs_3_0) ++vertex_rows;
       ASSERT_NE(row, table.end()) << key << " missing from:\n" << run.out;
       const std::vector<std::string>& c = row->second;
-      const Cost cost = v.measure(m);
-      const int arith = std::stoi(c[3]), tex = std::stoi(c[4]), temps = std::stoi(c[5]), consts = std::stoi(c[6]),
-                indir = std::stoi(c[7]);
+      const ShaderModel binary = *v.builds.binary_for(m);
+      EXPECT_EQ(c[3], binary_name(binary)) << key;
+      const Cost cost = v.measure(binary);
+      const int arith = std::stoi(c[4]), tex = std::stoi(c[5]), temps = std::stoi(c[6]), consts = std::stoi(c[7]),
+                indir = std::stoi(c[8]);
       EXPECT_EQ(arith, cost.arithmetic_slots) << key;
       EXPECT_EQ(tex, cost.texture_slots) << key;
       EXPECT_EQ(temps, cost.temps) << key;
       EXPECT_EQ(consts, cost.constant_registers()) << key;
       EXPECT_EQ(indir, cost.texture_indirections) << key;
       // Fits: from the printed counts and the caps table, plus what the table does not print.
-      const ShaderModelCaps& k = caps(m);
+      const ShaderModelCaps& k = caps(binary);
       const bool within = arith <= k.arithmetic_slots && tex <= k.texture_slots && arith + tex <= k.total_slots &&
                           temps <= k.temps && consts <= k.constants && indir <= k.texture_indirections &&
                           cost.samplers <= k.samplers && cost.inputs <= k.inputs && cost.unsupported.empty();
-      EXPECT_EQ(c[9], within ? "yes" : "NO") << key;
-      EXPECT_EQ(c[12], within ? "" : fits(cost, k).reason) << key;
+      EXPECT_EQ(c[10], within ? "yes" : "NO") << key;
+      EXPECT_EQ(c[13], within ? "" : fits(cost, k).reason) << key;
       if (!within) ++refused;
     }
   }
@@ -98,6 +101,42 @@ TEST(CostCommand, PrintsEveryCatalogVariantOnItsModelsWithTheCountedCost) {
   EXPECT_GE(families.size(), 7u);
   EXPECT_TRUE(families.count("VertexLitGeneric_vs")) << "the vertex shader is in the catalog";
   EXPECT_GT(vertex_rows, 0) << "rows on vs_2_0 / vs_3_0, counted against the vertex-shader limits";
+}
+
+// The SDK builds LightmappedGeneric, Water, Sky and the post shaders as ps20 and ps20b only, film
+// grain as ps20 only, and skin as ps20b and ps30 (stdshader_dx9_20b.txt, stdshader_dx9_30.txt): a
+// ps_3_0 card runs and pays for the ps20b binary of the first, a ps_2_b card the ps20 binary of
+// film grain, and no ps_2_0 card runs skin.
+TEST(CostCommand, ACardRunsTheNewestBinaryTheSdkBuilds) {
+  const Process run = run_luxel("cost --pixels 64 --repeats 1 2>&1");
+  ASSERT_EQ(run.exit_code, 0) << run.out;
+  int rows = 0;
+  const auto table = table_rows(run.out, rows);
+  std::map<std::string, std::set<std::string>> binaries_of;  // family|card -> binaries printed
+  for (const auto& [key, c] : table) binaries_of[c[0] + "|" + c[2]].insert(c[3]);
+  for (const char* family : {"LightmappedGeneric", "Water", "Sky_HDR", "bloomadd", "BlurFilter", "Downsample_nohdr",
+                             "ColorCorrection", "Engine_Post", "LuminanceRange"}) {
+    EXPECT_EQ(binaries_of[std::string(family) + "|ps_3_0"], std::set<std::string>{"ps20b"}) << family;
+    EXPECT_EQ(binaries_of[std::string(family) + "|ps_2_b"], std::set<std::string>{"ps20b"}) << family;
+    EXPECT_EQ(binaries_of[std::string(family) + "|ps_2_0"], std::set<std::string>{"ps20"}) << family;
+  }
+  for (const char* card : {"ps_2_0", "ps_2_b", "ps_3_0"})
+    EXPECT_EQ(binaries_of[std::string("filmgrain|") + card], std::set<std::string>{"ps20"}) << card;
+  EXPECT_EQ(binaries_of["VertexLitGeneric|ps_3_0"], std::set<std::string>{"ps30"});
+  EXPECT_EQ(binaries_of["UnlitGeneric|ps_3_0"], std::set<std::string>{"ps30"});
+  // Same binary, same row: the ps_3_0 card's LightmappedGeneric counts are the ps_2_b card's.
+  int same = 0;
+  for (const auto& [key, c] : table) {
+    if (c[0] != "LightmappedGeneric" || c[2] != "ps_3_0") continue;
+    const auto b = table.find(c[0] + "|" + c[1] + "|ps_2_b");
+    ASSERT_NE(b, table.end()) << key;
+    EXPECT_EQ(std::vector<std::string>(c.begin() + 3, c.begin() + 11), std::vector<std::string>(b->second.begin() + 3, b->second.begin() + 11))
+        << key;
+    ++same;
+  }
+  EXPECT_GT(same, 10);
+  for (const auto& [key, c] : table)
+    EXPECT_FALSE(c[0] == "VertexLitGeneric" && c[1].find("+phong") != std::string::npos && c[2] == "ps_2_0") << key;
 }
 
 TEST(CostCommand, PrintsOnlyTheVertexShaderWhenAskedFor) {
@@ -150,7 +189,7 @@ std::vector<std::vector<std::string>> rows_of(const std::string& out, size_t col
   return rows;
 }
 
-// `luxel cost --scene`: per model, the pixels and slots of each combo the frame ran. The post
+// `luxel cost --scene`: per model, the pixels, binary and slots of each combo the frame ran. The post
 // passes' pixels follow from the image size alone (the engine's full-screen pass shades each pixel
 // once; the downsample, a quarter on each side; the blur, that twice), the geometry's from nothing
 // the model changes (the same pixels in the same order on every model), the slots of a combo the
@@ -161,26 +200,34 @@ TEST(CostCommand, SceneFrameCostsPerModelFollowFromTheImageAndTheCatalog) {
                                 "--threads 2 2>/dev/null");
   ASSERT_EQ(run.exit_code, 0) << run.out;
   EXPECT_EQ(run.out.rfind("cpu: ", 0), 0u) << "the first line names the CPU";
-  const auto combos = rows_of(run.out, 7), passes = rows_of(run.out, 4), totals = rows_of(run.out, 6);
+  const auto combos = rows_of(run.out, 8), passes = rows_of(run.out, 4), totals = rows_of(run.out, 6);
   std::map<std::string, std::vector<uint64_t>> pixels_in_order;
   std::map<std::string, uint64_t> pixels_of, slot_pixels_of;
   std::map<std::string, double> share_of;
   int from_catalog = 0;
   for (const auto& c : combos) {
     const std::string& model = c[0];
-    const uint64_t pixels = std::stoull(c[3]), slots = std::stoull(c[4]), slot_pixels = std::stoull(c[5]);
+    const uint64_t pixels = std::stoull(c[4]), slots = std::stoull(c[5]), slot_pixels = std::stoull(c[6]);
     EXPECT_EQ(slot_pixels, pixels * slots) << c[1] << " " << c[2];
     pixels_in_order[model].push_back(pixels);
     pixels_of[model] += pixels, slot_pixels_of[model] += slot_pixels;
-    share_of[model] += std::stod(c[6]);
+    share_of[model] += std::stod(c[7]);
     const uint64_t screen = kWidth * kHeight, quarter = (kWidth / 4) * (kHeight / 4);
-    if (c[1] == "Engine_Post") EXPECT_EQ(pixels, screen) << model;
-    if (c[1] == "Downsample_nohdr") EXPECT_EQ(pixels, quarter) << model;
-    if (c[1] == "BlurFilter") EXPECT_EQ(pixels, 2 * quarter) << model;
+    if (c[1] == "Engine_Post") {
+      EXPECT_EQ(pixels, screen) << model;
+    }
+    if (c[1] == "Downsample_nohdr") {
+      EXPECT_EQ(pixels, quarter) << model;
+    }
+    if (c[1] == "BlurFilter") {
+      EXPECT_EQ(pixels, 2 * quarter) << model;
+    }
     for (const ShaderVariant& v : shader_catalog()) {
       const ShaderModel m = parse_pixel_model(model);
       if (v.family != c[1] || v.variant != c[2] || std::find(v.models.begin(), v.models.end(), m) == v.models.end()) continue;
-      EXPECT_EQ(slots, uint64_t(v.measure(m).total_slots())) << model << " " << c[1] << " " << c[2];
+      const ShaderModel binary = *v.builds.binary_for(m);
+      EXPECT_EQ(c[3], binary_name(binary)) << model << " " << c[1] << " " << c[2];
+      EXPECT_EQ(slots, uint64_t(v.measure(binary).total_slots())) << model << " " << c[1] << " " << c[2];
       ++from_catalog;
     }
   }

@@ -1,7 +1,7 @@
 // The post passes in Renderer::shader_uses, after the 3D draws: the histogram's range test, the
 // bloom's downsample and two blurs, its add and the color correction in one Engine_Post draw, and
-// the film grain, each with the pixels its rectangles cover (worked out here) and the slots the
-// shading catalog counts for it on the frame's model.
+// the film grain, each with the pixels its rectangles cover (worked out here), the SDK binary the
+// frame's card runs and the slots the shading catalog counts for that binary.
 
 #include "frame/frame_support.hpp"
 
@@ -54,12 +54,15 @@ std::vector<ShaderUse> uses_of(const scenes::Scene& s, const FrameSettings& f) {
   return r.shader_uses();
 }
 
-/// The catalog's slots for a combo on `model`.
-int catalog_slots(const std::string& family, const std::string& combo, shading::ShaderModel model) {
+/// The catalog's binary of the combo for a card of model `card`, and its slots.
+std::pair<shading::ShaderModel, int> catalog_binary(const std::string& family, const std::string& combo, shading::ShaderModel card) {
   for (const shading::source::ShaderVariant& v : shading::source::shader_catalog())
-    if (v.family == family && v.variant == combo) return v.measure(model).total_slots();
+    if (v.family == family && v.variant == combo) {
+      const shading::ShaderModel binary = *v.builds.binary_for(card);
+      return {binary, v.measure(binary).total_slots()};
+    }
   ADD_FAILURE() << family << " " << combo << " is not in the catalog";
-  return -1;
+  return {card, -1};
 }
 
 /// `region_pixels`: what the range test shaded, which a multisampled frame's diagonal changes.
@@ -83,7 +86,12 @@ void expect_post_passes(const std::vector<ShaderUse>& uses, const std::string& r
     EXPECT_EQ(u.family, expected[i].family);
     EXPECT_EQ(u.combo, expected[i].combo) << u.family;
     EXPECT_EQ(u.pixels, expected[i].pixels) << u.family;
-    EXPECT_EQ(u.slots, catalog_slots(u.family, u.combo, model)) << u.family;
+    EXPECT_EQ(std::pair(u.binary, u.slots), catalog_binary(u.family, u.combo, model)) << u.family;
+    // The SDK builds these as ps20 and ps20b only, film grain as ps20 only: no card runs a ps30.
+    const shading::ShaderModel built = u.family == "filmgrain" || model == shading::ShaderModel::ps_2_0
+                                           ? shading::ShaderModel::ps_2_0
+                                           : shading::ShaderModel::ps_2_b;
+    EXPECT_EQ(u.binary, built) << u.family;
     EXPECT_GT(u.slots, 0) << u.family;
   }
 }

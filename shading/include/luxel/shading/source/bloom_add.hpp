@@ -10,6 +10,7 @@
 // we write rgb only, so the frame's alpha (whatever the scene stored there) survives the add.
 // Alpha out of the shader: 1 (the SDK's), unused with that mask.
 
+#include "luxel/shading/source/binaries.hpp"
 #include "luxel/rasterizer/draw.hpp"
 #include "luxel/shading/source/common.hpp"
 #include "luxel/shading/source/shader_use.hpp"
@@ -53,6 +54,8 @@ inline rasterizer::PipelineState bloom_add_pipeline_state() {
 /// The shader as a rasterizer pixel functor: varying 0 .xy is the bloom texture's coordinate.
 struct BloomAddPixelShader {
   static constexpr const char* kFamily = "bloomadd";  ///< its name in the shading catalog
+  /// bloomadd_ps2x.fxc: ps20 and ps20b only.
+  static constexpr ShaderBuilds kBuilds = kPs2xBuilds;
   static constexpr bool kCanDiscard = false;
   static constexpr bool kWritesDepth = false;
   const BloomAddParams* params = nullptr;

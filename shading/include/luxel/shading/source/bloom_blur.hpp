@@ -22,6 +22,7 @@
 // interpolated coordinate. The taps are the same; on the Counted lane this costs twelve adds and
 // makes the twelve fetches first-order dependent reads, which every model allows.
 
+#include "luxel/shading/source/binaries.hpp"
 #include "luxel/rasterizer/draw.hpp"
 #include "luxel/shading/source/common.hpp"
 #include "luxel/shading/source/shader_use.hpp"
@@ -116,6 +117,8 @@ inline Cost measure_blur(ShaderModel model) {
 /// The shader as a rasterizer pixel functor: varying 0 .xy is the source coordinate.
 struct BlurPixelShader {
   static constexpr const char* kFamily = "BlurFilter";  ///< its name in the shading catalog
+  /// BlurFilter_ps2x.fxc: ps20 and ps20b only.
+  static constexpr ShaderBuilds kBuilds = kPs2xBuilds;
   static constexpr bool kCanDiscard = false;
   static constexpr bool kWritesDepth = false;
   const BlurParams* params = nullptr;

@@ -22,6 +22,7 @@
 // not dependent reads. The pixel functor below takes them as varyings 0.xy, 0.zw, 1.xy, 1.zw
 // (postfx's screen rectangle writes them).
 
+#include "luxel/shading/source/binaries.hpp"
 #include "luxel/rasterizer/draw.hpp"
 #include "luxel/shading/source/common.hpp"
 #include "luxel/shading/source/shader_use.hpp"
@@ -83,6 +84,8 @@ inline Cost measure_downsample(ShaderModel model) {
 /// The shader as a rasterizer pixel functor: taps in varyings 0.xy, 0.zw, 1.xy, 1.zw.
 struct DownsamplePixelShader {
   static constexpr const char* kFamily = "Downsample_nohdr";  ///< its name in the shading catalog
+  /// Downsample_nohdr_ps2x.fxc: ps20 and ps20b only.
+  static constexpr ShaderBuilds kBuilds = kPs2xBuilds;
   static constexpr bool kCanDiscard = false;
   static constexpr bool kWritesDepth = false;
   const DownsampleParams* params = nullptr;

@@ -15,6 +15,7 @@
 
 #include "luxel/shading/cost.hpp"
 #include "luxel/shading/shader_model.hpp"
+#include "luxel/shading/source/binaries.hpp"
 
 #include <cstdint>
 #include <functional>
@@ -45,7 +46,11 @@ struct ShaderVariant {
   std::string family;               ///< "LightmappedGeneric", "VertexLitGeneric", ...
   std::string option;               ///< the family's name for `luxel cost --shader`: "lightmapped", ...
   std::string variant;              ///< the combo's name
-  std::vector<ShaderModel> models;  ///< the shader models the SDK's rules allow it on
+  /// The cards it runs on: those the SDK builds a binary for (builds) that the combo's rules allow
+  /// it on. Pixel-shader cards ps_2_0 / ps_2_b / ps_3_0, or vertex-shader vs_2_0 / vs_3_0.
+  std::vector<ShaderModel> models;
+  ShaderBuilds builds;  ///< its SDK binaries: a card runs builds.binary_for(card)
+  /// The counted cost of its binary of a model (measure(*builds.binary_for(card)) for a card).
   std::function<Cost(ShaderModel)> measure;
   std::function<LaneTimes(int pixels, int repeats)> time;
   /// The combine stage on both lanes over `pixels` pixels of the timing's inputs, compared.

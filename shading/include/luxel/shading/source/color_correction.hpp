@@ -22,6 +22,7 @@
 // The same code is measured on ps_2_0, ps_2_b and ps_3_0 (the SDK builds ps20 and ps20b;
 // docs/fidelity.md#shader-models).
 
+#include "luxel/shading/source/binaries.hpp"
 #include "luxel/rasterizer/draw.hpp"
 #include "luxel/shading/source/common.hpp"
 #include "luxel/shading/source/shader_use.hpp"
@@ -126,6 +127,8 @@ inline Cost measure_color_correction(ShaderModel model) {
 template <ColorCorrectionCombo C>
 struct ColorCorrectionPixelShader {
   static constexpr const char* kFamily = "ColorCorrection";  ///< its name in the shading catalog
+  /// colorcorrection_ps2x.fxc: ps20 and ps20b only.
+  static constexpr ShaderBuilds kBuilds = kPs2xBuilds;
   static constexpr bool kCanDiscard = false;
   static constexpr bool kWritesDepth = false;
   const ColorCorrectionParams* params = nullptr;

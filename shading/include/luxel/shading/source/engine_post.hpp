@@ -22,6 +22,7 @@
 // the LUTs, as in the SDK. Constants: c0 = (w0, w1, w2, w3), c1.x = defaultWeight,
 // c1.y = bloomFactor (the SDK's packing is closed).
 
+#include "luxel/shading/source/binaries.hpp"
 #include "luxel/shading/source/color_correction.hpp"
 
 namespace luxel::shading::source {
@@ -90,6 +91,8 @@ inline Cost measure_engine_post(ShaderModel model) {
 template <EnginePostCombo C>
 struct EnginePostPixelShader {
   static constexpr const char* kFamily = "Engine_Post";  ///< its name in the shading catalog
+  /// Engine_Post_ps2x.fxc: ps20 and ps20b only.
+  static constexpr ShaderBuilds kBuilds = kPs2xBuilds;
   static constexpr bool kCanDiscard = false;
   static constexpr bool kWritesDepth = false;
   const EnginePostParams* params = nullptr;

@@ -16,6 +16,7 @@
 // alpha), and the grain texture itself (postfx/film_grain.hpp says how it is made).
 // No FinalOutput tone map (TONEMAP NONE).
 
+#include "luxel/shading/source/binaries.hpp"
 #include "luxel/rasterizer/draw.hpp"
 #include "luxel/shading/source/common.hpp"
 #include "luxel/shading/source/shader_use.hpp"
@@ -63,6 +64,8 @@ inline rasterizer::PipelineState film_grain_pipeline_state() {
 /// The shader as a rasterizer pixel functor: varying 0 .xy is the grain texture's coordinate.
 struct FilmGrainPixelShader {
   static constexpr const char* kFamily = "filmgrain";  ///< its name in the shading catalog
+  /// filmgrain_ps20.fxc: ps20 only, so every card runs the ps20 binary.
+  static constexpr ShaderBuilds kBuilds = ShaderBuilds{true, false, false};
   static constexpr bool kCanDiscard = false;
   static constexpr bool kWritesDepth = false;
   const FilmGrainParams* params = nullptr;

@@ -27,6 +27,7 @@
 // Not implemented: ssbump (BUMPMAP == 2), detail textures, $basetexture2 blends, self-illum,
 // vertex color, lightwarp, bicubic lightmaps.
 
+#include "luxel/shading/source/binaries.hpp"
 #include "luxel/shading/source/common.hpp"
 #include "luxel/shading/source/fog.hpp"
 
@@ -70,6 +71,8 @@ struct LightmappedCombo {
   }
   /// ... on model m: the fog type decides (fog.hpp).
   constexpr bool valid(ShaderModel m) const { return valid() && fog_valid(fog, m); }
+  /// lightmappedgeneric_ps2x.fxc: ps20 and ps20b only.
+  static constexpr ShaderBuilds builds() { return kPs2xBuilds; }
   friend constexpr bool operator==(const LightmappedCombo&, const LightmappedCombo&) = default;
   std::string name() const {
     static const char* masks[] = {"", "+basealphamask", "+normalalphamask", "+envmapmask"};

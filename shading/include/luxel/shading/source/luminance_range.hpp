@@ -28,6 +28,7 @@
 // state of either pass; what else the SDK's dev/lumcompare material sets (blending, color writes)
 // is NOT IN SDK: we turn color writes off, which changes no count.
 
+#include "luxel/shading/source/binaries.hpp"
 #include "luxel/rasterizer/draw.hpp"
 #include "luxel/shading/source/common.hpp"
 #include "luxel/shading/source/shader_use.hpp"
@@ -122,6 +123,8 @@ inline Cost measure_luminance_range(ShaderModel model) {
 template <LuminanceRangeCombo C>
 struct LuminanceRangePixelShader {
   static constexpr const char* kFamily = "LuminanceRange";  ///< its name in the shading catalog
+  /// luminance_compare_ps2x.fxc: ps20 and ps20b only.
+  static constexpr ShaderBuilds kBuilds = kPs2xBuilds;
   static constexpr bool kCanDiscard = C.reject == LuminanceReject::texkill;
   static constexpr bool kWritesDepth = true;
   const LuminanceRangeParams* params = nullptr;

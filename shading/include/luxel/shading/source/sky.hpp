@@ -31,6 +31,7 @@
 // Not implemented: $hdrcompressedtexture0..2 (compression method B), WRITE_DEPTH_TO_DESTALPHA
 // (ps_2_b: alpha = saturate(1e20 x c29.w) = 1), CONVERT_TO_SRGB (see common.hpp).
 
+#include "luxel/shading/source/binaries.hpp"
 #include "luxel/shading/source/common.hpp"
 
 #include <glm/vec2.hpp>
@@ -52,6 +53,8 @@ struct SkyCombo {
   SkyTexture texture = SkyTexture::hdr16;
 
   constexpr bool valid() const { return true; }
+  /// sky_ps2x.fxc, sky_hdr_compressed_rgbs_ps2x.fxc: ps20 and ps20b only.
+  static constexpr ShaderBuilds builds() { return kPs2xBuilds; }
   std::string name() const { return texture == SkyTexture::hdr16 ? "hdr16" : "rgbs"; }
   constexpr bool operator==(const SkyCombo&) const = default;
 };

@@ -28,6 +28,7 @@
 // DIFFUSELIGHTING (the SDK's vertex shader then skips the lighting and the pixel shader multiplies
 // by the vertex color twice), which valid() refuses.
 
+#include "luxel/shading/source/binaries.hpp"
 #include "luxel/shading/source/common.hpp"
 #include "luxel/shading/source/fog.hpp"
 
@@ -52,6 +53,8 @@ struct UnlitCombo {
   constexpr bool valid() const { return (envmap || mask == UnlitEnvmapMask::none) && !(vertex_color && diffuse_lighting); }
   /// ... on model m: the fog type decides (fog.hpp).
   constexpr bool valid(ShaderModel m) const { return valid() && fog_valid(fog, m); }
+  /// vertexlit_and_unlit_generic_ps2x.fxc: ps20, ps20b and ps30.
+  static constexpr ShaderBuilds builds() { return kPs2x30Builds; }
   friend constexpr bool operator==(const UnlitCombo&, const UnlitCombo&) = default;
   std::string name() const {
     static const char* details[] = {"", "+detail_mod2x", "+detail_additive"};

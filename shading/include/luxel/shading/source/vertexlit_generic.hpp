@@ -40,6 +40,7 @@
 // Not implemented: envmap on models (docs/fidelity.md#env-maps-on-models), lightwarp, phong warp,
 // self-illum, detail, albedo tint ($phongalbedotint), $blendtintbybasealpha.
 
+#include "luxel/shading/source/binaries.hpp"
 #include "luxel/shading/source/common.hpp"
 #include "luxel/shading/source/fog.hpp"
 #include "luxel/shading/source/normalization_cube.hpp"
@@ -80,6 +81,9 @@ struct VertexLitCombo {
     if (sh9_ambient && m != ShaderModel::ps_3_0) return false;
     return true;
   }
+  /// skin_ps20b.fxc (Phong) is built as ps20b and ps30; the VertexLitGeneric sources as ps20,
+  /// ps20b and ps30.
+  constexpr ShaderBuilds builds() const { return phong ? ShaderBuilds{false, true, true} : kPs2x30Builds; }
   friend constexpr bool operator==(const VertexLitCombo&, const VertexLitCombo&) = default;
   std::string name() const {
     std::string n = std::to_string(lights) + (lights == 1 ? " light" : " lights");

@@ -32,6 +32,7 @@
 // color, seamless and detail coordinates, tree sway, the flashlight, DOWATERFOG (on vs_2_0 the SDK's
 // vertex shader writes 1 there and the pixel shader fogs: Fog::height).
 
+#include "luxel/shading/source/binaries.hpp"
 #include "luxel/shading/source/common.hpp"
 #include "luxel/shading/source/fog.hpp"
 #include "luxel/shading/source/vertexlit_generic.hpp"
@@ -54,6 +55,8 @@ struct VertexLitVsCombo {
     if (m != ShaderModel::vs_2_0 && m != ShaderModel::vs_3_0) return false;
     return lights >= 0 && lights <= (m == ShaderModel::vs_2_0 ? 2 : 4);
   }
+  /// vertexlit_and_unlit_generic_vs20.fxc: vs20 and vs30.
+  static constexpr ShaderBuilds builds() { return {true, false, true}; }
   std::string name() const {
     return std::to_string(lights) + (lights == 1 ? " light" : " lights") + (half_lambert ? "" : "+lambert");
   }

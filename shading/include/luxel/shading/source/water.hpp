@@ -50,6 +50,7 @@
 // Not implemented: BASETEXTURE (lightmapped base on water), cheap water (WaterCheap, envmap
 // only), flow maps, depth to dest alpha, NORMAL_DECODE_MODE != 0.
 
+#include "luxel/shading/source/binaries.hpp"
 #include "luxel/shading/source/common.hpp"
 #include "luxel/shading/source/fog.hpp"
 #include "luxel/shading/source/hdr_type.hpp"
@@ -71,6 +72,8 @@ struct WaterCombo {
   Fog fog = Fog::none;
 
   friend constexpr bool operator==(const WaterCombo&, const WaterCombo&) = default;
+  /// water_ps2x.fxc: ps20 and ps20b only.
+  static constexpr ShaderBuilds builds() { return kPs2xBuilds; }
   constexpr bool valid(ShaderModel m) const {
     if (!reflect && !refract) return false;  // the SDK returns black; never drawn
     if (blurry_refract && (m == ShaderModel::ps_2_0 || !refract)) return false;
