@@ -1,5 +1,5 @@
 #pragma once
-// Errors are one line (README, "Limits and bad input"); what they quote from a file (a name, a
+// Errors are one line (docs/cli.md, "Exit codes and bad input"); what they quote from a file (a name, a
 // URI) or from a library (OpenImageIO's messages) may hold line breaks and other control
 // characters.
 

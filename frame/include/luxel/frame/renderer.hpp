@@ -1,119 +1,21 @@
 #pragma once
-// The frame: renders a scenes::Scene, whatever it holds, into an 8-bit image.
+// The frame: renders a scenes::Scene, whatever it holds, into an 8-bit image, as Source's DX9
+// frame would.
 //
 // A Renderer prepares a scene once (each scenes::Texture uploaded as a rasterizer::Texture with
 // its mips, the camera's view-projection, one draw per mesh) and then renders any number of
-// frames, each what the llvmpipe peer calls a frame: clear, draw, resolve.
+// frames, each what the llvmpipe peer calls a frame: clear, draw, resolve. Every mesh is drawn
+// with its material's Source shader family and static combo, as the frame's shader model
+// (FrameSettings::model) would run it; the passes on the finished frame (histogram, bloom, color
+// correction, film grain) follow. The output bytes do not depend on the context's thread count.
 //
-// The Source frame: every mesh is drawn with its material's Source shader family, the static
-// combo chosen from what the material and the scene have (shading/source/adapter.hpp feeds it),
-// as the frame's shader model (FrameSettings::model) would run it:
-//  - LightmappedGeneric (world surfaces): the scene's baked lightmaps (Scene::lightmaps, flat +
-//    three RNM maps; a scene without them is refused: `luxel bake`, or `luxel render` which bakes
-//    first), the base and bump textures, the env map of the nearest baked cube-map sample (or the
-//    material's own cube; with none baked yet, the sky cube), masks and Valve's fast-path choice.
-//  - VertexLitGeneric (models, and vertex-lit meshes outside any model): per pixel, the ambient
-//    cube of the irradiance-volume sample nearest the model's centroid (or blended trilinearly
-//    from the eight around it, FrameSettings::ambient), the two most significant
-//    lights, every other light folded into the cube, the hero boost; a scene with no light at all
-//    fullbright (model_lighting.hpp); Phong,
-//    exponent texture, rim and Half-Lambert as the material asks, Phong off on ps_2_0 (as Valve's
-//    helper), the normalization cube map on ps_2_0, attenuation per pixel where the combo fits
-//    the model, per vertex (the SDK's way) where only that fits.
-//  - UnlitGeneric: base x $color (x vertex color), env map as above. A material that is unlit,
-//    untextured, opaque, without env map, in a scene without fog at exposure 1 (the peer
-//    workloads) is drawn with a trivial functor computing the same product, the rasterizer's
-//    fastest path.
-//  - The sky cube (Scene::sky_texture): Sky_HDR on six quads at depth 1, where nothing else was
-//    drawn.
-//  - Water (water_ps2x, the expensive water seen from above): before the frame, for each height
-//    at which the camera sees water, a reflection view (the scene mirrored about the water plane,
-//    what lies below it clipped, at 0.25 x the frame's tone-map scale, docs/fidelity.md#water) and a
-//    refraction view (what lies below the plane, in the water's height fog, whose factor opaque
-//    materials write to alpha: the water's depth) are drawn into square one-sample targets
-//    (water_texture_side: the SDK's 1024 x 1024) and copied into 8-bit textures; the water
-//    surface then reads them at the pixel's place on screen,
-//    distorted by its normal map (scrolling with the scene's clock), blended
-//    by Fresnel, its reflect tint x 4; the refraction blurred (25 taps) where the material asks
-//    ($blurrefract) and the model has the combo (ps_2_b, ps_3_0). Reflection only when the
-//    material's reflect tint is not black, the refraction combo only when its refract amount is
-//    not 0. Neither view draws water;
-//    a scene without visible water draws no extra view. Water meshes must be horizontal planes
-//    with a normal map; water at or above the eye is not drawn (frame/src/water_passes.hpp).
-//  - Fog: the scene's range fog on every shader, the combo each model draws it with (ps_2_0: the
-//    fixed-function vertex fog).
-//  - Every shader ends in the tone-map epilogue and writes 8-bit RGBA, sRGB-encoded unless the
-//    material says $linearwrite; MSAA resolves to the image, whose alpha is 255 (the target's
-//    alpha holds what shaders and blending left there, which a screen never shows).
-//  - The tone-map scale: FrameSettings::exposure when set (fixed); else, when the scene's
-//    Exposure or one of its exposure zones leaves a range (min_scale < max_scale), Source's auto
-//    exposure (postfx/auto_exposure.hpp): the first frame is drawn at 1 clamped to the range (or
-//    where start_exposure_at or settle_exposure put the start), and
-//    after each frame the luminance histogram counts one bucket of it (the "histogram" pass) and
-//    the scale moves for the next frame, by the time since the last frame (the clock), under the
-//    controls where the camera is (scenes::exposure_at: the zone holding it, else the scene's);
-//    a clock that goes back starts the exposure again. Without a range anywhere, the one scale,
-//    fixed, and no histogram pass.
-//  - The post passes read one copy of the finished frame (postfx/full_frame.hpp, the engine's
-//    _rt_FullFrameFB), which the frame resolves into when any of them runs; the image is then
-//    the color correction's output, or, without it, the copy's pixels (the "frame copy" pass).
-//  - After the histogram pass, on the finished 8-bit frame as Source's INTEGER HDR path runs them
-//    (docs/fidelity.md#tone-mapping): bloom (FrameSettings::bloom, frames of 4 x 4 and more,
-//    postfx/bloom.hpp: the quarter-size downsample, the two blurs, the additive combine in gamma
-//    space), its amount the exposure controls' bloom scale where the camera is, smoothed once per frame
-//    (postfx/bloom_amount.hpp) from the scale at the first frame (the SDK's starts at 1 once per game);
-//    then color correction (FrameSettings::color_correction): the scene's color-correction nodes
-//    (Source's color_correction: faded in and out by the inputs sent to them up to the clock's
-//    time with the SDK's fades, docs/fidelity.md#color-correction, an enabled node holding max_weight
-//    where the SDK spawns it at 1; weighted by the eye's distance through their falloffs) and volumes
-//    (color_correction_volume: ramped up from when the eye entered, down from when it left, the
-//    eye's place tested every 0.01 s of the clock from 0 as the volume thinks), the four
-//    heaviest blended by Source's colorcorrection pass through 32^3 LUTs
-//    (postfx/color_correction.hpp), when any weight is not 0. The weights are a function of the
-//    clock's time and the camera's path alone (frame/src/color_correction_nodes.hpp): a frame's
-//    do not depend on which frames were rendered before it. Then film grain when asked
-//    (FrameSettings::film_grain), its noise seeded by the options' seed and the clock's time. A
-//    look (FrameSettings::look, look.hpp) adds its grade to the color correction, over the
-//    scene's nodes, and its grain. When bloom and color correction both run, the bloom's add and
-//    the correction are one Engine_Post draw, as in the engine (docs/fidelity.md#bloom): the lookups
-//    read the unrounded sum. Passes "bloom" (3 draws then, 5 with the add), "color correction",
-//    "film grain".
-// Order: the water's views, then opaque meshes in scene order (depth LESS, single-sided materials
-// cull their back faces, front faces counter-clockwise), alpha-tested ones with D3D9's alpha test (GREATEREQUAL
-// $alphatestreference), then the sky, then translucent meshes back to front by the distance of
-// their centers from the eye (blended, no depth write). The background clears to
-// Scene::background, sRGB-encoded.
-// A cube-map capture (FrameSettings::cubemap_capture, frame/cubemaps.hpp) draws what Source's
-// buildcubemaps draws, the world: meshes in no Scene::model, opaque or alpha-tested, not water,
-// and the sky; no fog (the surface that reflects the cube fogs its own result, and fog blended
-// after the tone map would not scale with the exposure a capture is taken at); env maps from the
-// material's own cube or the sky cube, never from a cube-map sample (a capture never sees another
-// capture: the result does not depend on the order samples are baked in, nor on cubes attached
-// before); the background scaled by the exposure as the surfaces are (Source scales its clear
-// color by the tone-map scale, docs/fidelity.md#tone-mapping), so that every exposure sees the
-// same radiance.
-// The scene's clock (FrameSettings::time, then Renderer::set_time): models move along their
-// paths (scenes/paths.hpp), the camera along the scene's camera path when asked
-// (FrameSettings::camera_path), the water's normal map scrolls. A sequence of frames is the same
-// renderer with its clock moved forward before each; a model's lighting is then time-averaged
-// across the frames, as Source averages it so that a model's light does not pop when it crosses
-// into another irradiance-volume cell or another light becomes one of its two (the engine's code
-// is closed, docs/fidelity.md#irradiance-volume-and-lights; the rule is luxel's): per model, the
-// volume's ambient cube at its centroid and, per scene light, its share s in [0, 1] of being drawn
-// as one of the two local lights (1 while the significance rule keeps it, 0 while it does not) are
-// each moved towards their value at the new time by 1 - exp(-dt / tau),
-// tau = FrameSettings::lighting_time_constant, dt the time since the last frame; the first frame,
-// and any frame whose time is earlier than the last, starts them at their values. The two lights
-// with the largest shares (ties: the more significant) are drawn as local lights at s x their
-// color, and fold (1 - s) of themselves into the cube; every other light folds wholly; the hero
-// boost follows. A model at rest under unchanging light is therefore lit exactly as without
-// averaging.
-// Not drawn yet: water seen from below, cheap water, detail textures, env maps on models,
-// self-illumination; sky-family meshes (the sky is Scene::sky_texture).
+// docs/architecture.md ("The frame's passes") states the contract in full: the passes in order,
+// what each shader family draws, the tone-map scale and auto exposure, the post passes, what a
+// cube-map capture draws, the scene's clock and the models' time-averaged lighting, and what is
+// not drawn yet. docs/fidelity.md gives the Source rule behind each.
 //
 // Conventions: the view is Source's (+Z up, right-handed), projections are Direct3D's (depth in
-// [0, 1]). The view-projection matrix is computed in double and rounded once, so that a camera
-// whose exact matrix has float entries (the workloads' orthographic cameras) gets exactly those.
+// [0, 1]). The view-projection matrix is computed in double and rounded once.
 
 #include "luxel/frame/look.hpp"
 #include "luxel/postfx/auto_exposure.hpp"
@@ -157,7 +59,7 @@ struct FrameSettings {
   float time = 0.0f;
   /// Look through Scene::camera_path at the clock's time instead of Scene::cameras[camera].
   bool camera_path = false;
-  /// tau of the models' lighting averaging across frames (above), seconds; 0: no averaging.
+  /// tau of the models' lighting averaging across frames (docs/architecture.md), seconds; 0: no averaging.
   float lighting_time_constant = 0.2f;
   /// The pixel-shader model the Source shaders are drawn as: ps_2_0, ps_2_b or ps_3_0.
   shading::ShaderModel model = shading::ShaderModel::ps_3_0;
@@ -169,13 +71,14 @@ struct FrameSettings {
   /// (D3DSAMP_MIPMAPLODBIAS): log2(k) draws a frame k times larger with the textures at the mips
   /// of the frame k times smaller (`luxel report`'s MSAA references).
   float texture_lod_bias = 0.0f;
-  /// A fixed tone-map scale (LINEAR_LIGHT_SCALE); unset: the scene's Exposure decides (above).
+  /// A fixed tone-map scale (LINEAR_LIGHT_SCALE); unset: the scene's Exposure decides (docs/architecture.md).
   std::optional<float> exposure = std::nullopt;
   /// How auto exposure counts its histogram: target algorithm, counting method, query latency,
   /// region (the scene's Exposure gives the range, rate and percentages).
   postfx::HistogramSettings histogram{};
-  /// Bloom after the histogram (above); nullopt: none (mat_disable_bloom). Off unless asked, so
-  /// that a frame's pixels are its shaders' (`luxel render` asks for it unless --no-bloom).
+  /// Bloom after the histogram (docs/architecture.md); nullopt: none (mat_disable_bloom). Off
+  /// unless asked, so that a frame's pixels are its shaders' (`luxel render` asks for it unless
+  /// --no-bloom).
   std::optional<postfx::BloomOptions> bloom = std::nullopt;
   /// Blend the scene's color-correction nodes into the finished frame (mat_colorcorrection).
   bool color_correction = true;
@@ -194,7 +97,7 @@ struct FrameSettings {
   bool time_passes = false;
   /// Set: the frame looks through this camera, not `camera` nor the camera path (a cube-map face).
   std::optional<scenes::Camera> view = std::nullopt;
-  /// Draw what a cube-map capture draws (above): the world and the sky, unfogged.
+  /// Draw what a cube-map capture draws (docs/architecture.md): the world and the sky, unfogged.
   bool cubemap_capture = false;
   /// The side of the water's reflection and refraction targets, square whatever the frame's size:
   /// each view is drawn over the whole target with the camera's aspect, without multisampling
@@ -215,8 +118,8 @@ struct FrameSettings {
 /// for a million texels a view.
 int water_texture_side(const FrameSettings& settings);
 
-/// A model's lighting in the last frame, after the time averaging (above), before a material's
-/// folding and hero boost.
+/// A model's lighting in the last frame, after the time averaging (docs/architecture.md), before
+/// a material's folding and hero boost.
 struct ModelLightingState {
   std::string model;                   ///< Scene::models[i].name
   glm::vec3 centroid{0.0f};            ///< where its lighting was sampled: its centroid moved along its path
@@ -286,7 +189,7 @@ class Renderer {
   Renderer& operator=(Renderer&&) noexcept;
 
   /// Moves the scene's clock to `seconds` (finite; else std::invalid_argument): the next frame
-  /// is drawn at that time, and the models' lighting averaging steps to it (above).
+  /// is drawn at that time, and the models' lighting averaging steps to it (docs/architecture.md).
   void set_time(float seconds);
   float time() const;
   /// Renders one frame at the clock's time and resolves it into image().
