@@ -67,7 +67,8 @@ inline constexpr auto kLightmappedAll = [] {
 inline constexpr auto kLightmappedSpace = compact<kLightmappedAll>();
 
 /// Two local lights or none (a model gets the two most significant, the rest folded into its
-/// cube); every valid choice of bump, Phong, exponent texture, rim and Half-Lambert; attenuation
+/// cube); every valid choice of bump, Phong (with bump: the skin shader's full path; without:
+/// FASTPATH_NOBUMP), rim and Half-Lambert; attenuation
 /// per pixel (luxel's default) or per vertex (what ps_2_0's budget forces); the ambient cube (SH9
 /// is a ps_3_0 option the frame does not take); unfogged, each model's range fog or the height fog
 /// of the view through water; the normalization cube map exactly on ps_2_0. Without lights, Half-Lambert and attenuation change
@@ -77,19 +78,17 @@ inline constexpr auto kVertexLitAll = [] {
   for (int lights : {0, 2})
     for (bool bump : {false, true})
       for (bool phong : {false, true})
-        for (bool exponent_texture : {false, true})
-          for (bool rim : {false, true})
-            for (bool half_lambert : {false, true})
-              for (bool pixel_attenuation : {false, true})
-                for (Fog fog : {Fog::none, Fog::range, Fog::vertex_range, Fog::height})
-                  for (bool cube : {false, true}) {
-                    if (lights == 0 && !(half_lambert && pixel_attenuation)) continue;
-                    const VertexLitCombo c{lights, bump, phong, exponent_texture, rim, half_lambert, pixel_attenuation,
-                                           false, fog, cube};
-                    bool on_some_model = false;
-                    for (shading::ShaderModel m : kPixelModels) on_some_model = on_some_model || c.valid(m);
-                    if (on_some_model) l.add(c);
-                  }
+        for (bool rim : {false, true})
+          for (bool half_lambert : {false, true})
+            for (bool pixel_attenuation : {false, true})
+              for (Fog fog : {Fog::none, Fog::range, Fog::vertex_range, Fog::height})
+                for (bool cube : {false, true}) {
+                  if (lights == 0 && !(half_lambert && pixel_attenuation)) continue;
+                  const VertexLitCombo c{lights, bump, phong, rim, half_lambert, pixel_attenuation, false, fog, cube};
+                  bool on_some_model = false;
+                  for (shading::ShaderModel m : kPixelModels) on_some_model = on_some_model || c.valid(m);
+                  if (on_some_model) l.add(c);
+                }
   return l;
 }();
 inline constexpr auto kVertexLitSpace = compact<kVertexLitAll>();

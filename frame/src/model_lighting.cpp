@@ -106,6 +106,8 @@ shading::source::VertexLitMaterial vertexlit_material(const scenes::Material& ma
   m.bump = material.bump.bound();
   m.base_map_alpha_phong_mask = material.base_map_alpha_phong_mask;
   m.half_lambert = material.half_lambert;
+  m.exponent_texture = material.phong_exponent_texture.bound();
+  m.rim = material.rim;
   return m;
 }
 

@@ -175,6 +175,7 @@ struct FrameState {
   std::shared_ptr<const SceneTextures> prepared;  // possibly shared with other renderers of the scene
   const std::vector<GpuTexture>& textures = prepared->textures;
   GpuTexture white = white_texture();
+  GpuTexture flat_normal = flat_normal_texture();
   const std::optional<GpuTexture>& lightmaps = prepared->lightmaps;
   const LightmapPage& page = prepared->page;
   std::optional<GpuTexture> normalization_cube;
@@ -552,9 +553,9 @@ class FrameBuilder {
     const bool phong = path == VertexLitPath::skin;
     VertexLitCombo wanted;
     wanted.lights = lighting.kept > 0 ? 2 : 0;
-    wanted.bump = m.bump.bound();
+    // The skin shader's full path reads a normal map, a flat one when the material has none.
+    wanted.bump = phong ? !skin_fast_path(vm) : m.bump.bound();
     wanted.phong = phong;
-    wanted.exponent_texture = phong && m.phong_exponent_texture.bound();
     wanted.rim = phong && m.rim;
     wanted.half_lambert = half_lambert;
     wanted.pixel_attenuation = !st_.settings.vertex_attenuation;
@@ -566,14 +567,16 @@ class FrameBuilder {
                                   " fits " + std::string(shading::caps(model_).name));
     VertexLitParams p;
     p.base = sampler2d(0, m.base);
-    p.bump = sampler2d(3, m.bump);
+    p.bump = m.bump.bound() ? sampler2d(3, m.bump) : Sampler2D{3, &st_.flat_normal.texture, st_.flat_normal.sampler};
     p.phong_exponent = sampler2d(7, m.phong_exponent_texture);
     p.ambient = lighting.cube;
     p.lights = lighting.lights;
     p.eye_position = glm::vec4(eye_, 1.0f);
     p.modulation = m.color;
     p.phong_tint_boost = glm::vec4(m.phong_tint, m.phong_boost);
-    p.phong_params = glm::vec4(m.phong_exponent, m.rim_exponent, m.rim_boost, m.rim_mask ? 1.0f : 0.0f);
+    p.phong_params =
+        glm::vec4(phong_exponent_constant(m.phong_exponent), std::max(m.rim_exponent, 1.0f), m.rim_boost, m.rim_mask ? 1.0f : 0.0f);
+    p.base_map_alpha_phong_mask.x = m.base_map_alpha_phong_mask ? 1.0f : 0.0f;
     p.fresnel_ranges = encode_fresnel_ranges(m.phong_fresnel_ranges.x, m.phong_fresnel_ranges.y, m.phong_fresnel_ranges.z);
     p.tonemap = tonemap_;
     p.fog = fog_constants_;

@@ -54,12 +54,19 @@ GpuTexture upload(const scenes::Texture& t) {
   return g;
 }
 
-GpuTexture white_texture() {
+namespace {
+
+GpuTexture one_texel(const uint8_t (&rgba)[4]) {
   GpuTexture g{rasterizer::Texture::create_2d(1, 1, rasterizer::TextureFormat::RGBA8, 1), {}};
-  const uint8_t white[4] = {255, 255, 255, 255};
-  g.texture.upload(0, std::span<const uint8_t>(white));
+  g.texture.upload(0, std::span<const uint8_t>(rgba));
   return g;
 }
+
+}  // namespace
+
+GpuTexture white_texture() { return one_texel({255, 255, 255, 255}); }
+
+GpuTexture flat_normal_texture() { return one_texel({128, 128, 255, 255}); }
 
 namespace {
 

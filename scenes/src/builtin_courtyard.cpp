@@ -317,7 +317,6 @@ Scene make_courtyard() {
   hero.phong_boost = 4;
   hero.phong_fresnel_ranges = {0.4f, 0.7f, 1.0f};
   hero.phong_exponent_texture.texture = hero_exponent;
-  hero.base_map_alpha_phong_mask = true;
   hero.rim = true;
   hero.rim_exponent = 3;
   hero.rim_boost = 2;

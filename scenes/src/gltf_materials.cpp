@@ -185,7 +185,7 @@ tinygltf::Material material_to_gltf(const Material& m, const std::function<int(i
   info(m.bump, g.normalTexture);
   g.pbrMetallicRoughness.baseColorFactor = {m.color.r, m.color.g, m.color.b, m.color.a};
   // The inverse of the import mapping's exponent, so a viewer shows a similar highlight.
-  const double exponent = std::max(double(m.phong_exponent), 1.0);
+  const double exponent = m.phong_exponent > 0.0f ? std::max(double(m.phong_exponent), 1.0) : 150.0;  // unset: 150
   g.pbrMetallicRoughness.roughnessFactor = m.phong ? std::clamp(std::pow(2.0 / (exponent + 2.0), 0.25), 0.0, 1.0) : 1.0;
   g.pbrMetallicRoughness.metallicFactor = 0.0;
   const float peak = std::max({m.emissive.r, m.emissive.g, m.emissive.b});

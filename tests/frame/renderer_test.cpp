@@ -180,6 +180,40 @@ TEST(Renderer, PhongOnlyForBumpedModelsFromPs2b) {
   EXPECT_GT(brighter, 0) << "Phong adds light on ps_3_0";
 }
 
+// $basemapalphaphongmask: the skin shader takes the normal (0, 0, 1) and the mask from the base
+// (skin_ps20b.fxc), so on ps_2_b and ps_3_0 a bumped material draws as if it had no normal map;
+// ps_2_0, without the skin shader, keeps the normal map's detail.
+TEST(Renderer, BaseMapAlphaPhongMaskDropsTheNormalMapFromPs2b) {
+  scenes::Scene s = lit_by_cube_and_sun(true);
+  s.materials[0].phong = true;
+  s.materials[0].phong_exponent = 4;
+  s.materials[0].phong_boost = 8;
+  s.cameras[0].projection = scenes::Projection::perspective;
+  s.cameras[0].position = {0.3f, -2.0f, 3.0f};
+  s.cameras[0].vertical_fov = 1.0f;
+  // A normal map of two tilts in a checker (z >= 0.8, alpha 1: see below).
+  scenes::Texture bumps = solid_texture("tilted normals", scenes::ColorSpace::linear, {200, 90, 230, 255});
+  for (int i = 0; i < 16; ++i)
+    if ((i + i / 4) % 2) std::copy_n(std::array<uint8_t, 4>{60, 170, 220, 255}.begin(), 4, bumps.faces[0].rgba8.begin() + 4 * i);
+  s.textures.push_back(bumps);
+  const int bump_map = static_cast<int>(s.textures.size()) - 1;
+  scenes::Scene flat = s;  // no normal map: the skin shader's FASTPATH_NOBUMP
+  flat.materials[0].base_map_alpha_phong_mask = true;
+  s.materials[0].bump.texture = bump_map;
+  s.materials[0].base_map_alpha_phong_mask = true;
+  // The full path's lerps land exactly on the fast path's values here: a normal-map z whose
+  // 1 - z is exact, and the normal map's alpha equal to the base's.
+  for (shading::ShaderModel model : {shading::ShaderModel::ps_2_b, shading::ShaderModel::ps_3_0})
+    EXPECT_TRUE(render_as(s, model).rgba == render_as(flat, model).rgba)
+        << shading::caps(model).name << ": the normal map's detail is still drawn";
+  EXPECT_FALSE(render_as(s, shading::ShaderModel::ps_2_0).rgba == render_as(flat, shading::ShaderModel::ps_2_0).rgba)
+      << "ps_2_0 draws the bumped path, with the normal map";
+  scenes::Scene without_flag = s;
+  without_flag.materials[0].base_map_alpha_phong_mask = false;
+  EXPECT_FALSE(render_as(without_flag, shading::ShaderModel::ps_2_b).rgba == render_as(flat, shading::ShaderModel::ps_2_b).rgba)
+      << "without the flag the normal map shows";
+}
+
 /// Four constant lightmaps (flat, then the three basis maps) attached to `s`.
 void attach_lightmaps(scenes::Scene& s, const glm::vec3& flat, const glm::vec3 (&basis)[3]) {
   scenes::Lightmaps maps;

@@ -166,7 +166,9 @@ TEST_F(Courtyard, HasAHeroAndOtherModelsBumpedAndNot) {
     EXPECT_EQ(m.family, ShaderFamily::vertexlit_generic) << model.name;
     if (m.hero_boost > 1.0f) {
       ++heroes;
-      EXPECT_TRUE(m.phong && m.rim && m.rim_mask && m.base_map_alpha_phong_mask) << m.name;
+      // Bumped, with the normal map's alpha as its Phong mask: $basemapalphaphongmask would drop
+      // the normal map's detail (skin_ps20b.fxc).
+      EXPECT_TRUE(m.phong && m.rim && m.rim_mask && !m.base_map_alpha_phong_mask) << m.name;
       EXPECT_TRUE(m.phong_exponent_texture.bound() && m.bump.bound()) << m.name;
     } else {
       (m.bump.bound() ? bumped : plain) += 1;

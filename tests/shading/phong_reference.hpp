@@ -1,7 +1,8 @@
 #pragma once
 // The Phong ("skin") shader's lighting in double precision, written from docs/fidelity.md#phong
-// (not from the shader code): the oracle of the Phong tests.
+// and #phong-defaults (not from the shader code): the oracle of the Phong tests.
 
+#include <glm/common.hpp>
 #include <glm/geometric.hpp>
 #include <glm/vec3.hpp>
 #include <glm/vec4.hpp>
@@ -12,22 +13,36 @@
 namespace luxel::shading::source::testing {
 
 /// One directional light and the material of the skin shader, in double, from docs/fidelity.md#phong
-/// (written from the formulas, not from the shader code).
+/// (written from the formulas, not from the shader code). The normal is the one the shader ends
+/// up with (the normal map's, or the vertex normal under $basemapalphaphongmask and on the fast path).
 struct PhongReference {
   glm::dvec3 light_dir{0.0, 0.0, 1.0};  // unit, toward the light
   glm::dvec3 light_color{1.0};
   glm::dvec3 base{0.0};
-  double mask = 1.0;                    // the specular mask: base alpha, or the normal map's alpha
-  glm::dvec4 exponent_texel{1.0};       // r: exponent 1 + 149 r, a: rim mask
-  bool exponent_texture = false;
-  double exponent_constant = 5.0;
-  glm::dvec3 tint{1.0};
+  double base_alpha = 1.0;
+  double normal_alpha = 1.0;              // the normal map's alpha (the full path's mask)
+  bool base_map_alpha_phong_mask = false;  // the full path's mask from the base alpha instead
+  /// FASTPATH_NOBUMP: mask = base alpha, exponent max(c, 0), tint 1, no rim.
+  bool fast_path = false;
+  glm::dvec4 exponent_texel{1.0};  // r: exponent 1 + 149 r, g: albedo tint, a: rim mask (white: none)
+  double exponent_constant = -1.0;  // c.w: >= 0 the exponent, else from the texel ($phongexponent unset)
+  glm::dvec3 tint{1.0};             // $phongtint; r < 0: the albedo tint lerp(1, base, texel g)
   double boost = 1.0;
   double fresnel_min = 0.0, fresnel_mid = 0.5, fresnel_max = 1.0;
   bool rim = false;
   double rim_exponent = 4.0, rim_boost = 1.0;
   bool rim_mask = false;
-  glm::dvec3 rim_ambient{0.0};          // the ambient cube along V (one color: tests keep it uniform)
+  glm::dvec3 rim_ambient{0.0};  // the ambient cube along V (one color: tests keep it uniform)
+
+  double mask() const { return fast_path || base_map_alpha_phong_mask ? base_alpha : normal_alpha; }
+  double exponent() const {
+    if (fast_path) return std::max(exponent_constant, 0.0);
+    return exponent_constant >= 0.0 ? exponent_constant : 1.0 + 149.0 * exponent_texel.x;
+  }
+  glm::dvec3 specular_tint() const {
+    if (fast_path) return glm::dvec3(1.0);
+    return tint.r >= 0.0 ? tint : glm::mix(glm::dvec3(1.0), base, exponent_texel.y);
+  }
 
   glm::dvec3 operator()(const glm::dvec3& normal, const glm::dvec3& view) const {
     const glm::dvec3 n = glm::normalize(normal), v = glm::normalize(view), l = light_dir;
@@ -36,22 +51,21 @@ struct PhongReference {
     const glm::dvec3 diffuse = base * light_color * (h * h);
     const glm::dvec3 r = 2.0 * glm::dot(n, v) * n - v;
     const double r_dot_l = std::clamp(glm::dot(r, l), 0.0, 1.0);
-    const double exponent = exponent_texture ? 1.0 + 149.0 * exponent_texel.x : exponent_constant;
     const glm::dvec3 lit = light_color * std::clamp(n_dot_l, 0.0, 1.0);
-    glm::dvec3 spec = lit * std::pow(r_dot_l, exponent);
+    glm::dvec3 spec = lit * std::pow(r_dot_l, exponent());
     // Fresnel: f = sat(1 − N·V)², then piecewise linear through (0, min), (0.5, mid), (1, max).
     const double one_minus = std::clamp(1.0 - glm::dot(n, v), 0.0, 1.0);
     const double f = one_minus * one_minus;
     const double fresnel = f < 0.5 ? fresnel_min + (fresnel_mid - fresnel_min) * (f / 0.5)
                                    : fresnel_mid + (fresnel_max - fresnel_mid) * ((f - 0.5) / 0.5);
-    spec *= mask * fresnel * boost;
-    if (rim) {
+    spec *= mask() * fresnel * boost;
+    if (rim && !fast_path) {
       const double m = (rim_mask ? exponent_texel.w : 1.0) * std::pow(one_minus, 4.0);
       const glm::dvec3 rim_light = lit * std::pow(r_dot_l, rim_exponent) * m;
       spec = glm::max(spec, rim_light);
       spec += rim_ambient * rim_boost * std::clamp(m * n.z, 0.0, 1.0);
     }
-    return diffuse + spec * tint;
+    return diffuse + spec * specular_tint();
   }
 };
 

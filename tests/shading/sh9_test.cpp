@@ -283,8 +283,8 @@ TEST(Sh9, SlotsAndRegistersBesideTheCube) {
 }
 
 TEST(Sh9, ComboOnlyOnPs30ThoughItsBudgetFitsPs2b) {
-  constexpr VertexLitCombo kFourSh9{4, true, true, true, true, true, false, true};
-  constexpr VertexLitCombo kAmbientSh9{0, false, false, false, false, true, true, true};
+  constexpr VertexLitCombo kFourSh9{4, true, true, true, true, false, true};
+  constexpr VertexLitCombo kAmbientSh9{0, false, false, false, true, true, true};
   for (ShaderModel m : {ShaderModel::ps_2_0, ShaderModel::ps_2_b}) {
     EXPECT_FALSE(kFourSh9.valid(m));
     EXPECT_FALSE(kAmbientSh9.valid(m));
@@ -293,7 +293,7 @@ TEST(Sh9, ComboOnlyOnPs30ThoughItsBudgetFitsPs2b) {
   // The refusal is the choice, not a limit: the largest combo, with SH9, needs 3 constants
   // and 4 slots (2 per evaluation: N, and V for the rim) more than with the cube, and still fits
   // ps_2_b's 32 constants and 512 slots.
-  constexpr VertexLitCombo kFourCube{4, true, true, true, true, true, false, false};
+  constexpr VertexLitCombo kFourCube{4, true, true, true, true, false, false};
   const Cost with_cube = measure_vertexlit_generic<kFourCube>(ShaderModel::ps_2_b);
   const Cost with_sh9 = measure_vertexlit_generic<kFourSh9>(ShaderModel::ps_2_b);
   std::printf("4 lights+bump+phong+exptex+rim on ps_2_b: cube %d constants %d slots, SH9 %d constants %d slots\n",

@@ -245,7 +245,7 @@ void vertexlit(const Textures& t, const std::string& what) {
 
 TEST(SourceAdapter, VertexLitGenericMatchesItsScalarReference) {
   const Textures t;
-  vertexlit<VertexLitCombo{.lights = 2, .bump = true, .phong = true, .exponent_texture = true, .rim = true,
+  vertexlit<VertexLitCombo{.lights = 2, .bump = true, .phong = true, .rim = true,
                            .half_lambert = true, .pixel_attenuation = true, .fog = Fog::range}>(
       t, "VertexLitGeneric ps_3_0 hero: bump phong exponent rim, range fog");
   vertexlit<VertexLitCombo{.lights = 2, .bump = false, .half_lambert = false, .pixel_attenuation = false,

@@ -146,7 +146,7 @@ struct UnlitWithFog {
 };
 template <Fog F>
 struct VertexLitWithFog {
-  static constexpr VertexLitCombo value{2, true, false, false, false, true, false, false, F};
+  static constexpr VertexLitCombo value{2, true, false, false, true, false, false, F};
 };
 template <Fog F>
 struct WaterWithFog {

@@ -66,8 +66,8 @@ TEST(SourceNormalizationCube, Ps20LightsWithTheCubeAndPs2bWithNrm) {
   p.normalization_cube.texture = &cube;
   p.ambient.color = {glm::vec3(0.9f, 0.1f, 0.1f), glm::vec3(0.1f, 0.8f, 0.1f), glm::vec3(0.1f, 0.1f, 0.7f),
                      glm::vec3(0.6f, 0.6f, 0.1f), glm::vec3(0.1f, 0.5f, 0.5f), glm::vec3(0.4f, 0.1f, 0.4f)};
-  constexpr VertexLitCombo kPs20{0, false, false, false, false, true, true, false, Fog::none, true};
-  constexpr VertexLitCombo kPs2b{0, false, false, false, false, true, true};
+  constexpr VertexLitCombo kPs20{0, false, false, false, true, true, false, Fog::none, true};
+  constexpr VertexLitCombo kPs2b{0, false, false, false, true, true};
   static_assert(kPs20.valid(ShaderModel::ps_2_0) && !kPs20.valid(ShaderModel::ps_2_b));
   static_assert(!kPs2b.valid(ShaderModel::ps_2_0) && kPs2b.valid(ShaderModel::ps_2_b));
   VertexLitInputs<float> in;

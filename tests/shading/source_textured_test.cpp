@@ -73,7 +73,7 @@ TEST(SourceTextured, VertexLitGenericPhongOnBothLanes) {
   p.lights[0].position = glm::vec4(0.0f, 0.0f, 3.0f, 1.0f);
   p.eye_position = glm::vec4(0.0f, 1.0f, 4.0f, 1.0f);
   p.fresnel_ranges = encode_fresnel_ranges(1.0f, 1.0f, 1.0f);  // Fresnel 1 at this near-normal eye
-  constexpr VertexLitCombo C{2, true, true, true, true, true, true};
+  constexpr VertexLitCombo C{2, true, true, true, true, true};
   auto make = [](auto zero) {
     using L = decltype(zero);
     VertexLitInputs<L> in;
@@ -95,8 +95,7 @@ TEST(SourceTextured, VertexLitGenericPhongOnBothLanes) {
   ref.light_dir = glm::normalize(glm::dvec3(0.0, 0.0, 3.0) - point);
   ref.light_color = glm::dvec3(2.0);
   ref.base = glm::dvec3(base.load(0, 0));  // the stored 8-bit sRGB value, decoded
-  ref.mask = 153.0 / 255.0;                 // the bump map's alpha 0.6 in 8 bits
-  ref.exponent_texture = true;
+  ref.normal_alpha = 153.0 / 255.0;         // the bump map's alpha 0.6 in 8 bits: the mask
   ref.exponent_texel = glm::dvec4(51.0 / 255.0, 0.0, 0.0, 1.0);  // r = 0.2: exponent 30.8
   ref.rim = true;
   ref.fresnel_min = ref.fresnel_mid = ref.fresnel_max = 1.0;

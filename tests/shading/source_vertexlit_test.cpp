@@ -1,6 +1,7 @@
 // VertexLitGeneric: ambient cube, local lights (point, spot inside and between its cones,
 // directional) with the SDK's attenuation, squared Half-Lambert, Phong at intermediate Fresnel
-// values with the exponent texture, boost, tint and rim (masked and not) against double math;
+// values on the skin shader's full and fast paths, the exponent's and the tint's choices,
+// $basemapalphaphongmask, boost and rim (masked and not) against double math;
 // light folding into the ambient cube; SIMD vs scalar on random and hard inputs; every combo's
 // DX9 budget; the ambient cube's count beside Valve's published ones.
 
@@ -46,9 +47,9 @@ float4<float> shade(const VertexLitParams& p, const float3<float>& pos, const fl
   return vertexlit_combine<C>(t, in, p);
 }
 
-constexpr VertexLitCombo kAmbientOnly{0, false, false, false, false, true, true};
-constexpr VertexLitCombo kTwoLights{2, false, false, false, false, true, true};
-constexpr VertexLitCombo kTwoLambert{2, false, false, false, false, false, true};
+constexpr VertexLitCombo kAmbientOnly{0, false, false, false, true, true};
+constexpr VertexLitCombo kTwoLights{2, false, false, false, true, true};
+constexpr VertexLitCombo kTwoLambert{2, false, false, false, false, true};
 
 TEST(SourceVertexLit, AmbientCubeAxisNormalsAndDiagonal) {
   VertexLitParams p;
@@ -109,7 +110,7 @@ TEST(SourceVertexLit, SpotConeAndDirectionalLight) {
 }
 
 TEST(SourceVertexLit, PhongFresnelRangesAndExponentQuirks) {
-  constexpr VertexLitCombo kPhong{2, false, true, false, false, true, true};
+  constexpr VertexLitCombo kPhong{2, false, true, false, true, true};
   VertexLitParams p;
   p.eye_position = glm::vec4(0.0f, 0.0f, 10.0f, 1.0f);
   LightDesc d;
@@ -185,16 +186,31 @@ VertexLitParams phong_params(const testing::PhongReference& ref, const glm::dvec
   return p;
 }
 
+/// The skin shader's full path (it reads the normal map; here a flat texel unless told) and
+/// FASTPATH_NOBUMP.
+constexpr VertexLitCombo kSkin{2, true, true, false, true, true};
+constexpr VertexLitCombo kSkinFastPath{2, false, true, false, true, true};
+
 template <VertexLitCombo C>
-void expect_phong(const testing::PhongReference& ref, const glm::dvec3& normal, const glm::dvec3& eye, const char* what) {
+void expect_phong(const testing::PhongReference& ref, const glm::dvec3& normal, const glm::dvec3& eye, const char* what,
+                  const glm::vec3& bump_texel = glm::vec3(0.5f, 0.5f, 1.0f)) {
+  static_assert(C.phong);
+  ASSERT_EQ(ref.fast_path, !C.bump) << what;
   VertexLitTexels<float> t;
-  t.base = float4<float>(float(ref.base.x), float(ref.base.y), float(ref.base.z), float(ref.mask));
+  t.base = float4<float>(float(ref.base.x), float(ref.base.y), float(ref.base.z), float(ref.base_alpha));
+  t.bump = float4<float>(bump_texel.x, bump_texel.y, bump_texel.z, float(ref.normal_alpha));
   t.exponent = float4<float>(float(ref.exponent_texel.x), float(ref.exponent_texel.y), float(ref.exponent_texel.z),
                              float(ref.exponent_texel.w));
-  const VertexLitParams p = phong_params(ref, eye);
+  VertexLitParams p = phong_params(ref, eye);
+  p.base_map_alpha_phong_mask.x = ref.base_map_alpha_phong_mask ? 1.0f : 0.0f;
   const float4<float> got = shade<C>(p, float3<float>(0.0f), float3<float>(float(normal.x), float(normal.y), float(normal.z)), t);
-  // The uniform ambient cube also lights the diffuse: albedo × ambient.
-  const glm::dvec3 want = ref(normal, eye) + ref.base * ref.rim_ambient;
+  // The normal the shader lights with: the texel's, 2 t - 1 in the frame tangent (1, 0, 0),
+  // binormal (0, 1, 0), normal `normal` (shade()), or `normal` itself where the normal map is not
+  // read or is overridden. The uniform ambient cube also lights the diffuse: albedo × ambient.
+  const glm::dvec3 tn = 2.0 * glm::dvec3(bump_texel) - 1.0;
+  const glm::dvec3 lit_normal =
+      ref.fast_path || ref.base_map_alpha_phong_mask ? normal : glm::dvec3(tn.x, tn.y, 0.0) + tn.z * normal;
+  const glm::dvec3 want = ref(lit_normal, eye) + ref.base * ref.rim_ambient;
   for (int c = 0; c < 3; ++c)
     EXPECT_NEAR(got[c], want[c], 2e-5 * std::max(1.0, want[c])) << what << ", channel " << c << ", eye (" << eye.x
                                                                 << ", " << eye.y << ", " << eye.z << ")";
@@ -218,7 +234,8 @@ testing::PhongReference phong_material() {
   ref.light_dir = glm::normalize(glm::dvec3(0.5, 0.3, 0.8));
   ref.light_color = glm::dvec3(1.5, 1.0, 0.7);
   ref.base = glm::dvec3(0.3, 0.2, 0.1);
-  ref.mask = 0.8;
+  ref.normal_alpha = 0.8;  // the full path's mask
+  ref.base_alpha = 0.55;   // the fast path's and $basemapalphaphongmask's
   ref.exponent_constant = 6.0;
   ref.tint = glm::dvec3(1.0, 0.8, 0.5);
   ref.boost = 2.5;
@@ -229,25 +246,60 @@ testing::PhongReference phong_material() {
 }
 
 TEST(SourceVertexLit, PhongAtIntermediateFresnelWithBoostAndTint) {
-  constexpr VertexLitCombo kPhong{2, false, true, false, false, true, true};
-  const testing::PhongReference ref = phong_material();
-  for (const glm::dvec3& eye : phong_eyes()) expect_phong<kPhong>(ref, kPhongNormal, eye, "phong");
+  testing::PhongReference ref = phong_material();
+  for (const glm::dvec3& eye : phong_eyes()) expect_phong<kSkin>(ref, kPhongNormal, eye, "phong");
+  // FASTPATH_NOBUMP: the mask is the base alpha, $phongtint is not applied, and the exponent is the
+  // constant (0 when unset: every lit pixel gets the whole specular).
+  ref.fast_path = true;
+  for (const glm::dvec3& eye : phong_eyes()) expect_phong<kSkinFastPath>(ref, kPhongNormal, eye, "fast path");
+  ref.exponent_constant = -1.0;
+  for (const glm::dvec3& eye : phong_eyes()) expect_phong<kSkinFastPath>(ref, kPhongNormal, eye, "fast path, unset");
 }
 
-TEST(SourceVertexLit, PhongExponentTextureIsOnePlus149Red) {
-  constexpr VertexLitCombo kExpTex{2, false, true, true, false, true, true};
+TEST(SourceVertexLit, PhongExponentConstantOverTheTextureAnd150WhenUnset) {
   testing::PhongReference ref = phong_material();
-  ref.exponent_texture = true;
-  for (double red : {0.0, 0.02, 0.1}) {
+  ref.exponent_constant = -1.0;  // $phongexponent unset: 1 + 149 r
+  for (double red : {0.0, 0.02, 0.1, 1.0}) {  // 1.0: the white texture bound when there is none (150)
     ref.exponent_texel = glm::dvec4(red, 0.0, 0.0, 1.0);
-    for (const glm::dvec3& eye : phong_eyes()) expect_phong<kExpTex>(ref, kPhongNormal, eye, "exponent texture");
+    for (const glm::dvec3& eye : phong_eyes()) expect_phong<kSkin>(ref, kPhongNormal, eye, "exponent texture");
   }
+  ref.exponent_constant = 6.0;  // a constant above 0 overrides the texture
+  ref.exponent_texel = glm::dvec4(0.02, 0.0, 0.0, 1.0);
+  for (const glm::dvec3& eye : phong_eyes()) expect_phong<kSkin>(ref, kPhongNormal, eye, "constant over the texture");
+}
+
+TEST(SourceVertexLit, PhongTintBelowZeroTintsWithTheAlbedo) {
+  testing::PhongReference ref = phong_material();
+  ref.tint = glm::dvec3(-1.0);
+  ref.exponent_texel = glm::dvec4(1.0, 0.6, 0.0, 1.0);  // g: how much albedo
+  for (const glm::dvec3& eye : phong_eyes()) expect_phong<kSkin>(ref, kPhongNormal, eye, "albedo tint");
+}
+
+TEST(SourceVertexLit, BaseMapAlphaPhongMaskDropsTheNormalMapAndMasksWithTheBase) {
+  testing::PhongReference ref = phong_material();
+  ref.base_alpha = 0.3;
+  ref.normal_alpha = 0.9;
+  ref.base_map_alpha_phong_mask = true;
+  const glm::vec3 tilted(0.8f, 0.3f, 0.7f);  // a normal-map texel far from flat: ignored
+  for (const glm::dvec3& eye : phong_eyes()) expect_phong<kSkin>(ref, kPhongNormal, eye, "base alpha mask", tilted);
+  // The alpha out is $alpha alone, the base alpha being the mask.
+  VertexLitParams p = phong_params(ref, phong_eyes()[0]);
+  p.modulation.w = 0.6f;
+  VertexLitTexels<float> t;
+  t.base.w = 0.3f;
+  p.base_map_alpha_phong_mask.x = 1.0f;
+  EXPECT_FLOAT_EQ(shade<kSkin>(p, float3<float>(0.0f), float3<float>(0, 0, 1), t).w, 0.6f);
+  p.base_map_alpha_phong_mask.x = 0.0f;
+  EXPECT_NEAR(shade<kSkin>(p, float3<float>(0.0f), float3<float>(0, 0, 1), t).w, 0.18f, 1e-6f);
+  // Without the flag the texel is the normal and the normal map's alpha the mask.
+  ref.base_map_alpha_phong_mask = false;
+  for (const glm::dvec3& eye : phong_eyes()) expect_phong<kSkin>(ref, kPhongNormal, eye, "normal map", tilted);
 }
 
 TEST(SourceVertexLit, RimLightWithAndWithoutItsMask) {
-  constexpr VertexLitCombo kRim{2, false, true, true, true, true, true};
+  constexpr VertexLitCombo kRim{2, true, true, true, true, true};
   testing::PhongReference ref = phong_material();
-  ref.exponent_texture = true;
+  ref.exponent_constant = -1.0;
   ref.exponent_texel = glm::dvec4(0.05, 0.0, 0.0, 0.35);  // a: the rim mask
   ref.rim = true;
   ref.rim_exponent = 2.0;
@@ -282,8 +334,8 @@ TEST(SourceVertexLit, FoldedDirectionalLightIsExactForAxisNormals) {
     EXPECT_EQ(f.kept[0].color.x, 5.0f) << "the brighter light is kept";
     VertexLitParams folded;
     folded.ambient = f.cube;
-    constexpr VertexLitCombo kHL{2, false, false, false, false, true, true};
-    constexpr VertexLitCombo kL{2, false, false, false, false, false, true};
+    constexpr VertexLitCombo kHL{2, false, false, false, true, true};
+    constexpr VertexLitCombo kL{2, false, false, false, false, true};
     VertexLitParams direct;
     direct.lights[0] = to_local_light(d);
     for (int j = 0; j < 6; ++j) {
@@ -304,8 +356,8 @@ TEST(SourceVertexLit, ALightSplitBetweenASlotAndTheCubeKeepsItsEnergyOnTheAxes) 
     d.type = LightDesc::Type::directional;
     d.direction = glm::normalize(glm::vec3(0.6f, -0.2f, -0.75f));
     d.color = glm::vec3(0.9f, 0.5f, 0.3f);
-    constexpr VertexLitCombo kHL{2, false, false, false, false, true, true};
-    constexpr VertexLitCombo kL{2, false, false, false, false, false, true};
+    constexpr VertexLitCombo kHL{2, false, false, false, true, true};
+    constexpr VertexLitCombo kL{2, false, false, false, false, true};
     VertexLitParams whole;
     whole.lights[0] = to_local_light(d);
     for (float share : {0.25f, 0.7f}) {
@@ -535,7 +587,7 @@ TEST(SourceVertexLit, TheCountAloneKeepsPixelAttenuationOffPs20) {
 
 TEST(SourceVertexLit, FourLightsWithPixelAttenuationWouldNotFitPs2b) {
   // Why the SDK attenuates per vertex: 4 x 5 light registers + the rest > 32 constants.
-  constexpr VertexLitCombo kFourPixel{4, true, true, true, true, true, true};
+  constexpr VertexLitCombo kFourPixel{4, true, true, true, true, true};
   static_assert(!kFourPixel.valid(ShaderModel::ps_2_b));
   const Cost cost = measure_vertexlit_generic<kFourPixel>(ShaderModel::ps_2_b);
   EXPECT_FALSE(fits(cost, caps(ShaderModel::ps_2_b))) << describe(cost);

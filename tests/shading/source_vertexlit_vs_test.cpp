@@ -166,7 +166,7 @@ TEST(SourceVertexLitVs, AgreesWithThePerPixelPathForAUnitNormal) {
   VertexLitParams pp;
   pp.ambient = vp.ambient;
   pp.lights = vp.lights;
-  constexpr VertexLitCombo kPerPixel{2, false, false, false, false, true, true};
+  constexpr VertexLitCombo kPerPixel{2, false, false, false, true, true};
   const DVec world = model_apply(kObjectPos, 1.0);
   const DVec n = glm::normalize(model_apply(kObjectNormal, 0.0));
   const float3<float> w(float(world.x), float(world.y), float(world.z));

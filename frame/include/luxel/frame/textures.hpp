@@ -29,6 +29,11 @@ GpuTexture upload(const scenes::Texture& texture);
 /// A 1x1 opaque white texture: what an untextured material samples.
 GpuTexture white_texture();
 
+/// A 1x1 flat normal map (0.5, 0.5, 1, alpha 1 in 8 bits): what the skin shader's full path
+/// reads for a material without one (the SDK's TEXTURE_NORMALMAP_FLAT; its alpha is not in the
+/// SDK, and the Phong mask then comes from the base, $basemapalphaphongmask).
+GpuTexture flat_normal_texture();
+
 /// The lightmap page LightmappedGeneric samples: the scene's flat and three RNM lightmaps side by
 /// side (RGBA16F, bilinear, no mips, as Source's lightmap pages), each followed by a copy of its
 /// last column and preceded by a copy of its first, so that bilinear reads near a map's edge

@@ -118,7 +118,8 @@ struct Material {
   float fresnel_reflection = 1.0f;  ///< $fresnelreflection (LightmappedGeneric)
 
   bool phong = false;               ///< $phong (VertexLitGeneric)
-  float phong_exponent = 5.0f;      ///< $phongexponent, when there is no exponent texture
+  /// $phongexponent; 0 or less: unset (the exponent texture's, else 150; docs/fidelity.md#phong-defaults)
+  float phong_exponent = 0.0f;
   float phong_boost = 1.0f;         ///< $phongboost
   glm::vec3 phong_fresnel_ranges{0.0f, 0.5f, 1.0f};  ///< $phongfresnelranges
   glm::vec3 phong_tint{1.0f};       ///< $phongtint

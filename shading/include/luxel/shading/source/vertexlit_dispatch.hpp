@@ -4,7 +4,8 @@
 // material that has a bump map, `$basemapalphaphongmask 1` or a lightwarp texture
 // (WantsSkinShader), and only on hardware with ps_2_b or more; every other material takes the
 // ordinary path, bumped or not, without specular, on every model. Half-Lambert is the material's
-// `$halflambert` on the ordinary paths; the skin shader always uses it.
+// `$halflambert` on the ordinary paths; the skin shader always uses it. The skin shader has two
+// forms: its full path, and FASTPATH_NOBUMP for a material with nothing but a base texture.
 //
 // Plain values in, plain values out: the frame reads a scene's material into VertexLitMaterial.
 
@@ -19,6 +20,8 @@ struct VertexLitMaterial {
   bool base_map_alpha_phong_mask = false;  ///< $basemapalphaphongmask 1
   bool lightwarp = false;                  ///< a $lightwarptexture
   bool half_lambert = false;               ///< $halflambert
+  bool exponent_texture = false;           ///< a $phongexponenttexture
+  bool rim = false;                        ///< $rimlight
 };
 
 /// The three ways VertexLitGeneric draws a model.
@@ -39,6 +42,13 @@ constexpr VertexLitPath vertexlit_path(const VertexLitMaterial& m, ShaderModel c
   if (wants_skin_shader(m) && card != ShaderModel::ps_2_0) return VertexLitPath::skin;
   return m.bump || m.lightwarp ? VertexLitPath::bumped : VertexLitPath::plain;
 }
+
+/// Whether the skin shader draws the material with FASTPATH_NOBUMP (skin_dx9_helper.cpp): no
+/// normal map, exponent texture or rim light. The SDK also asks that the base alpha be a Phong
+/// mask or the base opaque, and that there be no tint map, phong warp, detail, self-illum or
+/// $blendtintbybasealpha, none of which luxel models: a skin material without a normal map has
+/// $basemapalphaphongmask here, since luxel draws no lightwarp.
+constexpr bool skin_fast_path(const VertexLitMaterial& m) { return !m.bump && !m.exponent_texture && !m.rim; }
 
 /// Whether the path lights with squared Half-Lambert: always in the skin shader, else as the
 /// material's `$halflambert` asks.

@@ -6,8 +6,8 @@
 // #model-lights (attenuation, diffuse, counts), #bumped-and-skin-paths, #phong, #phong-defaults,
 // #tone-mapping.
 //
-// Static combos: the template parameter VertexLitCombo (light count, bump, Phong, exponent
-// texture, rim, Half-Lambert, where the attenuation is computed); the shader model is a separate
+// Static combos: the template parameter VertexLitCombo (light count, bump, Phong, rim,
+// Half-Lambert, where the attenuation is computed); the shader model is a separate
 // axis: VertexLitCombo::valid(model) says which combos the SDK's rules allow where (ps_2_0: at
 // most two lights, no Phong, as Valve's helper forces $phong off there), and
 // vertexlit_compiles<C>(model) adds the model's limits, counted from the shader's code as fxc
@@ -37,8 +37,16 @@
 // and the DIFFUSELIGHTING combos of unlit_generic.hpp. The per-pixel combos here without a bump
 // map are luxel's (per-pixel attenuation and lighting of smooth models).
 //
+// The skin shader (phong) has the SDK's two forms (docs/fidelity.md#phong, #phong-defaults): with
+// `bump`, skin_ps20b's full path, which always reads the normal map (a flat one when the material
+// has none) and the exponent texture (white when it has none) and picks per pixel: the exponent
+// c.x when c.x >= 0, else 1 + 149 r; the tint c.rgb when c.r >= 0, else lerp(1, base, g); and
+// with $basemapalphaphongmask (c27.x = 1) the normal (0, 0, 1), the mask and the alpha from the
+// base. Without `bump`, FASTPATH_NOBUMP: the interpolated normal, mask = base alpha, exponent
+// max(c.x, 0), tint 1, no rim.
+//
 // Not implemented: envmap on models (docs/fidelity.md#env-maps-on-models), lightwarp, phong warp,
-// self-illum, detail, albedo tint ($phongalbedotint), $blendtintbybasealpha.
+// self-illum, detail, $phongexponentfactor, $blendtintbybasealpha.
 
 #include "luxel/shading/source/binaries.hpp"
 #include "luxel/shading/source/common.hpp"
@@ -55,11 +63,12 @@ namespace luxel::shading::source {
 
 /// The static combos of the per-pixel VertexLitGeneric / skin shader.
 struct VertexLitCombo {
-  int lights = 2;                 ///< local lights evaluated per pixel: 0..2 (ps_2_0), 0..4
-  bool bump = false;              ///< normal map (tangent frame interpolated)
-  bool phong = false;             ///< the skin shader's specular (ps_2_b / ps_3_0 only)
-  bool exponent_texture = false;  ///< Phong exponent 1 + 149 r from $phongexponenttexture (else the constant)
-  bool rim = false;               ///< rim lighting (needs Phong)
+  int lights = 2;     ///< local lights evaluated per pixel: 0..2 (ps_2_0), 0..4
+  /// A normal map (tangent frame interpolated). In the skin shader: its full path, which reads
+  /// the normal and exponent maps; without it, FASTPATH_NOBUMP.
+  bool bump = false;
+  bool phong = false;  ///< the skin shader: Phong specular (ps_2_b / ps_3_0 only)
+  bool rim = false;    ///< rim lighting (the skin shader's full path)
   bool half_lambert = true;       ///< squared Half-Lambert (the skin shader always uses it)
   bool pixel_attenuation = true;  ///< attenuation per pixel (luxel) or per vertex, interpolated (SDK)
   bool sh9_ambient = false;       ///< ambient from 9 SH coefficients instead of the cube (ps_3_0 only)
@@ -71,7 +80,7 @@ struct VertexLitCombo {
     if (!fog_valid(fog, m)) return false;
     if (normalization_cube != (m == ShaderModel::ps_2_0)) return false;
     if (m == ShaderModel::ps_2_0 && (lights > 2 || phong)) return false;
-    if ((rim || exponent_texture) && !phong) return false;
+    if (rim && !(phong && bump)) return false;  // skin_ps20b.fxc: SKIP $FASTPATH_NOBUMP && $RIMLIGHT
     if (phong && !half_lambert) return false;
     if (lights > 2 && pixel_attenuation) return false;
     // SH9 ambient is luxel's ps_3_0 option, where the SDK's separate VertexLitGeneric
@@ -89,7 +98,6 @@ struct VertexLitCombo {
     std::string n = std::to_string(lights) + (lights == 1 ? " light" : " lights");
     if (bump) n += "+bump";
     if (phong) n += "+phong";
-    if (exponent_texture) n += "+exptex";
     if (rim) n += "+rim";
     if (!half_lambert) n += "+lambert";
     if (lights > 0 && !pixel_attenuation) n += "+vertexatten";
@@ -100,41 +108,40 @@ struct VertexLitCombo {
 };
 
 inline constexpr VertexLitCombo kVertexLitCombos[] = {
-    {0, false, false, false, false, true, true},
-    {2, false, false, false, false, true, true},
-    {2, false, false, false, false, false, true},
-    {2, true, false, false, false, true, true},
-    {2, false, false, false, false, true, false},
-    {2, true, false, false, false, true, false},
-    {4, false, false, false, false, true, false},
-    {4, true, false, false, false, true, false},
-    {2, true, true, false, false, true, true},
-    {2, true, true, true, false, true, true},
+    {0, false, false, false, true, true},
+    {2, false, false, false, true, true},
+    {2, false, false, false, false, true},
+    {2, true, false, false, true, true},
+    {2, false, false, false, true, false},
+    {2, true, false, false, true, false},
+    {4, false, false, false, true, false},
+    {4, true, false, false, true, false},
+    {2, true, true, false, true, true},
+    {2, true, true, true, true, true},
+    {2, false, true, false, true, true},
+    {4, true, true, true, true, false},
+    {0, false, false, false, true, true, true},
     {2, true, true, true, true, true, true},
-    {2, false, true, false, false, true, true},
-    {4, true, true, true, true, true, false},
-    {0, false, false, false, false, true, true, true},
-    {2, true, true, true, true, true, true, true},
-    {4, true, true, true, true, true, false, true},
+    {4, true, true, true, true, false, true},
     // ps_2_0: the same shaders normalizing through the cube map.
-    {0, false, false, false, false, true, true, false, Fog::none, true},
-    {2, false, false, false, false, true, false, false, Fog::none, true},
-    {2, true, false, false, false, true, false, false, Fog::none, true},
+    {0, false, false, false, true, true, false, Fog::none, true},
+    {2, false, false, false, true, false, false, Fog::none, true},
+    {2, true, false, false, true, false, false, Fog::none, true},
     // ps_2_0 with luxel's per-pixel attenuation: allowed by the rules; the count decides
     // (vertexlit_compiles). Two Lambert lights fit ps_2_0's 64 arithmetic slots; Half-Lambert
     // and height fog push the arithmetic over them (which is why the SDK attenuates per vertex
     // on ps_2_0).
-    {2, false, false, false, false, false, true, false, Fog::none, true},
-    {2, false, false, false, false, true, true, false, Fog::none, true},
-    {2, true, false, false, false, true, true, false, Fog::none, true},
-    {2, true, false, false, false, true, true, false, Fog::height, true},
+    {2, false, false, false, false, true, false, Fog::none, true},
+    {2, false, false, false, true, true, false, Fog::none, true},
+    {2, true, false, false, true, true, false, Fog::none, true},
+    {2, true, false, false, true, true, false, Fog::height, true},
     // Fog, per model.
-    {2, true, false, false, false, true, false, false, Fog::vertex_range, true},
-    {2, true, false, false, false, true, false, false, Fog::height, true},
-    {2, true, false, false, false, true, false, false, Fog::range},
-    {2, true, false, false, false, true, false, false, Fog::height},
-    {4, true, true, true, true, true, false, false, Fog::range},
-    {4, true, true, true, true, true, false, true, Fog::height},
+    {2, true, false, false, true, false, false, Fog::vertex_range, true},
+    {2, true, false, false, true, false, false, Fog::height, true},
+    {2, true, false, false, true, false, false, Fog::range},
+    {2, true, false, false, true, false, false, Fog::height},
+    {4, true, true, true, true, false, false, Fog::range},
+    {4, true, true, true, true, false, true, Fog::height},
 };
 
 template <class F>
@@ -156,15 +163,18 @@ struct LocalLight {
 struct VertexLitParams {
   Sampler2D base{0};
   Sampler2D bump{3};
-  Sampler2D phong_exponent{7};
+  Sampler2D phong_exponent{7};  ///< white when the material has no $phongexponenttexture
   AmbientCube ambient{};
   Sh9Ambient ambient_sh9{};  ///< read instead of `ambient` by the sh9_ambient combos
   std::array<LocalLight, 4> lights{};
   glm::vec4 eye_position{0.0f};
   glm::vec4 modulation{1.0f};                          ///< $color (linear) and alpha
-  glm::vec4 phong_tint_boost{1.0f, 1.0f, 1.0f, 1.0f};  ///< rgb $phongtint, w $phongboost
-  /// x $phongexponent (constant path), y $rimlightexponent, z $rimlightboost, w $rimmask (0/1)
-  glm::vec4 phong_params{5.0f, 4.0f, 1.0f, 0.0f};
+  /// rgb $phongtint (r < 0: the albedo tint lerp(1, base, exponent texel g)), w $phongboost
+  glm::vec4 phong_tint_boost{1.0f, 1.0f, 1.0f, 1.0f};
+  /// x the exponent (phong_exponent_constant()), y $rimlightexponent, z $rimlightboost, w $rimmask (0/1)
+  glm::vec4 phong_params{-1.0f, 4.0f, 1.0f, 0.0f};
+  /// x $basemapalphaphongmask (0/1): the skin shader's normal (0, 0, 1), mask and alpha from the base
+  glm::vec4 base_map_alpha_phong_mask{0.0f};
   /// $phongfresnelranges re-encoded (2(mid-min), mid, 2(max-mid)); (1, 0.5, 1) = plain (1-N·V)²
   glm::vec4 fresnel_ranges{1.0f, 0.5f, 1.0f, 0.0f};
   ToneMapConstants tonemap{};
@@ -172,6 +182,11 @@ struct VertexLitParams {
   /// s5: the signed normalization cube map (normalization_cube.hpp), read by the ps_2_0 combos.
   SamplerCube normalization_cube{5, nullptr, normalization_cube_sampler()};
 };
+
+/// The skin shader's exponent constant, as skin_dx9_helper.cpp sets it: $phongexponent when it is
+/// above 0, else -1, which the full path reads as "from the exponent texture" (1 + 149 r; a white
+/// texture when there is none: 150) and FASTPATH_NOBUMP as 0.
+inline float phong_exponent_constant(float phong_exponent) { return phong_exponent > 0.0f ? phong_exponent : -1.0f; }
 
 /// The CPU re-encoding of $phongfresnelranges (docs/fidelity.md#phong).
 inline glm::vec4 encode_fresnel_ranges(float min, float mid, float max) {
@@ -229,7 +244,7 @@ inline VertexLitTexels<L> vertexlit_fetch(const VertexLitInputs<L>& in, const Ve
   VertexLitTexels<L> t;
   t.base = tex2D(p.base, in.uv);
   if constexpr (C.bump) t.bump = tex2D(p.bump, in.uv);
-  if constexpr (C.exponent_texture) t.exponent = tex2D(p.phong_exponent, in.uv);
+  if constexpr (C.phong && C.bump) t.exponent = tex2D(p.phong_exponent, in.uv);
   return t;
 }
 
@@ -257,7 +272,8 @@ template <VertexLitCombo C, Lane L>
 inline float4<L> vertexlit_combine(const VertexLitTexels<L>& t, const VertexLitInputs<L>& in, const VertexLitParams& p) {
   float3<L> n;
   if constexpr (C.bump) {
-    const float3<L> tn = t.bump.xyz() * 2.0f - 1.0f;
+    float3<L> tn = t.bump.xyz() * 2.0f - 1.0f;
+    if constexpr (C.phong) tn = lerp(tn, float3<L>(0.0f, 0.0f, 1.0f), L(constant<L>(p.base_map_alpha_phong_mask).x));
     n = vertexlit_normalize<C>(tn.x * in.tangent + tn.y * in.binormal + tn.z * in.normal, p);
   } else {
     n = vertexlit_normalize<C>(in.normal, p);
@@ -268,7 +284,12 @@ inline float4<L> vertexlit_combine(const VertexLitTexels<L>& t, const VertexLitI
   L exponent;
   if constexpr (C.phong) {
     view = normalize(constant<L>(p.eye_position).xyz() - in.world_pos);
-    exponent = C.exponent_texture ? L(t.exponent.x * 149.0f + 1.0f) : L(constant<L>(p.phong_params).x);
+    const L c = constant<L>(p.phong_params).x;
+    if constexpr (C.bump) {
+      exponent = select(c >= L(0.0f), c, L(t.exponent.x * 149.0f + 1.0f));
+    } else {
+      exponent = max(c, L(0.0f));
+    }
   }
   for (int i = 0; i < C.lights; ++i) {
     const LocalLight& light = p.lights[static_cast<size_t>(i)];
@@ -304,22 +325,29 @@ inline float4<L> vertexlit_combine(const VertexLitTexels<L>& t, const VertexLitI
     const float4<L> ranges = constant<L>(p.fresnel_ranges);
     const L g = f - 0.5f;
     const L fresnel = ranges.y + g * select(g >= L(0.0f), ranges.z, ranges.x);
-    const L mask = C.bump ? L(t.bump.w) : L(t.base.w);
     const float4<L> tint_boost = constant<L>(p.phong_tint_boost);
+    L mask = t.base.w;
+    float3<L> tint(1.0f);
+    if constexpr (C.bump) {
+      mask = lerp(t.bump.w, t.base.w, L(constant<L>(p.base_map_alpha_phong_mask).x));
+      tint = select(tint_boost.x >= L(0.0f), tint_boost.rgb(), lerp(float3<L>(1.0f), t.base.rgb(), t.exponent.y));
+    }
     spec = spec * (mask * fresnel * tint_boost.w);
     if constexpr (C.rim) {
       // Rim: fresnel (1 - N·V)^4, mask, max with the specular, then ambient along V gated by N.z.
       const float4<L> pp = constant<L>(p.phong_params);
       const L rim_fresnel = f * f;
-      const L rim_mask = C.exponent_texture ? L(lerp(L(1.0f), t.exponent.w, pp.w)) : L(1.0f);
+      const L rim_mask = lerp(L(1.0f), t.exponent.w, pp.w);
       const L m = rim_mask * rim_fresnel;
       spec = max(spec, rim * m);
       spec = spec + vertexlit_ambient<C>(view, p) * (pp.z * saturate(m * n.z));
     }
-    color = color + spec * tint_boost.rgb();
+    color = color + spec * tint;
   }
+  L alpha = t.base.w * modulation.w;
+  if constexpr (C.phong) alpha = lerp(alpha, modulation.w, L(constant<L>(p.base_map_alpha_phong_mask).x));
   const FogInputs<L> fog{in.world_pos.z, in.proj_z};
-  return fogged_output<ToneMap::linear, C.fog>(float4<L>(color, t.base.w * modulation.w), p.tonemap, fog, p.fog);
+  return fogged_output<ToneMap::linear, C.fog>(float4<L>(color, alpha), p.tonemap, fog, p.fog);
 }
 
 template <VertexLitCombo C, Lane L>
