@@ -74,6 +74,9 @@ void FrameOptions::add_to(CLI::App& cmd) {
                  "A model's ambient cube from the irradiance volume: nearest (the nearest sample's, the default) or "
                  "trilinear (blended from the eight samples around it)")
       ->transform(CLI::CheckedTransformer(ambient, CLI::ignore_case));
+  cmd.add_flag("--pixel-attenuation", settings.pixel_attenuation,
+               "Attenuate the models' local lights per pixel where the combo fits the model, instead of per vertex as "
+               "the SDK does");
   cmd.add_option("--exposure", exposure,
                  "A fixed tone-map scale; without it the scene's exposure range decides (auto exposure from the "
                  "luminance histogram, starting where it settles on the first frame's view, or the range's one value)")

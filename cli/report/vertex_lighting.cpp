@@ -1,8 +1,9 @@
 // The report's section "vertex_lighting": the models' two local lights attenuated per vertex
-// (FrameSettings::vertex_attenuation: what the SDK's ps_2_0 combos do, interpolating the
-// attenuation across each triangle) against per pixel (luxel's default where the combo fits), on
-// ps_2_b and ps_3_0, each against the per-pixel frame of the same model. ps_2_0 attenuates per
-// vertex already, its per-pixel combos rarely fitting its 64 arithmetic slots. Cost: counted
+// (what the SDK's bumped and skin shaders do on every model, interpolating the attenuation
+// across each triangle) against per pixel (FrameSettings::pixel_attenuation, luxel's option where
+// the combo fits), on ps_2_b and ps_3_0, each against the per-pixel frame of the same model.
+// ps_2_0 attenuates per vertex either way, its per-pixel combos rarely fitting its 64 arithmetic
+// slots. Cost: counted
 // slots per pixel and ms per frame, measured as `luxel compare` measures; error: frame_error.hpp's
 // columns.
 
@@ -34,9 +35,10 @@ SectionResult run_vertex_lighting(const ReportSettings& s) {
     const std::string name(shading::caps(model).name);
     frame::FrameSettings f = scene.settings;
     f.model = model;
+    f.pixel_attenuation = true;
     s.progress("vertex_lighting: " + name + ", per pixel");
     const FrameMeasurement per_pixel = scene.measure(f, s.timing_repeats);
-    f.vertex_attenuation = true;
+    f.pixel_attenuation = false;
     s.progress("vertex_lighting: " + name + ", per vertex");
     const FrameMeasurement per_vertex = scene.measure(f, s.timing_repeats);
     const std::string how = scene.name + " drawn as " + name + " with the lights attenuated per pixel";

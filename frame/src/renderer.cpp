@@ -558,7 +558,7 @@ class FrameBuilder {
     wanted.phong = phong;
     wanted.rim = phong && m.rim;
     wanted.half_lambert = half_lambert;
-    wanted.pixel_attenuation = !st_.settings.vertex_attenuation;
+    wanted.pixel_attenuation = st_.settings.pixel_attenuation;
     wanted.fog = fog_;
     wanted.normalization_cube = model_ == shading::ShaderModel::ps_2_0;
     const std::optional<VertexLitCombo> combo = fitting_vertexlit_combo(wanted, model_);

@@ -185,16 +185,22 @@ scenes::Scene lit_floor(const std::vector<scenes::Light>& extra) {
 // distance to the lit point reaches 0 and the direction to it is undefined) or just under it
 // (inside the surface, behind its front) lights nothing: N.L is 0 or negative, so the frame is the
 // one without it, the key light alone, byte for byte (the extra light is the model's second local
-// light, so it goes through the per-pixel lighting).
+// light). Both where the attenuation is computed: per vertex (the SDK's, and on a vertex the
+// distance is exactly 0) and per pixel.
 TEST(NumericExtremes, LightsOnAndInsideASurface) {
-  const rasterizer::Image key_only = render_frame(lit_floor({}), small_frame());
-  ASSERT_GT(pixel(key_only, kExtremesSize / 2, kExtremesSize / 2)[0], 100) << "the key light lights the floor";
-  for (glm::vec3 at : {glm::vec3(0, 0, 0), glm::vec3(-10, -10, 0), glm::vec3(0, 0, -0.01f), glm::vec3(3, 2, -1e-6f)}) {
-    scenes::Light l;
-    l.name = "in the floor";
-    l.position = at;
-    l.color = glm::vec3(1000.0f);
-    EXPECT_EQ(differing(render_frame(lit_floor({l}), small_frame()), key_only), 0) << at.x << " " << at.y << " " << at.z;
+  for (bool per_pixel : {false, true}) {
+    FrameSettings f = small_frame();
+    f.pixel_attenuation = per_pixel;
+    const rasterizer::Image key_only = render_frame(lit_floor({}), f);
+    ASSERT_GT(pixel(key_only, kExtremesSize / 2, kExtremesSize / 2)[0], 60) << "the key light lights the floor";
+    for (glm::vec3 at : {glm::vec3(0, 0, 0), glm::vec3(-10, -10, 0), glm::vec3(0, 0, -0.01f), glm::vec3(3, 2, -1e-6f)}) {
+      scenes::Light l;
+      l.name = "in the floor";
+      l.position = at;
+      l.color = glm::vec3(1000.0f);
+      EXPECT_EQ(differing(render_frame(lit_floor({l}), f), key_only), 0)
+          << at.x << " " << at.y << " " << at.z << (per_pixel ? ", per pixel" : ", per vertex");
+    }
   }
 }
 

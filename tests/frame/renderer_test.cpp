@@ -287,7 +287,7 @@ TEST(Renderer, CountsThePixelsEachComboShades) {
   r.render(ctx);
   ASSERT_EQ(r.shader_uses().size(), 1u);
   EXPECT_EQ(r.shader_uses()[0].family, "VertexLitGeneric");
-  EXPECT_EQ(r.shader_uses()[0].combo, "2 lights");
+  EXPECT_EQ(r.shader_uses()[0].combo, "2 lights+vertexatten") << "the SDK's attenuation, per vertex";
   // Every pixel once, and the pixels on the diagonal between the square's two triangles (samples
   // in both) once per triangle: at most one more per row.
   EXPECT_GE(r.shader_uses()[0].pixels, uint64_t(kRendererSize) * kRendererSize);

@@ -64,9 +64,10 @@ struct FrameSettings {
   /// The pixel-shader model the Source shaders are drawn as: ps_2_0, ps_2_b or ps_3_0.
   shading::ShaderModel model = shading::ShaderModel::ps_3_0;
   AmbientSampling ambient = AmbientSampling::nearest;
-  /// Attenuate the models' two local lights per vertex on every shader model, as the SDK's
-  /// ps_2_0 combos do, instead of per pixel where the combo fits (`luxel report`, vertex_lighting).
-  bool vertex_attenuation = false;
+  /// Attenuate the models' local lights per pixel where the combo fits the model, instead of per
+  /// vertex as the SDK's bumped and skin shaders do on every model (luxel's option: a light close
+  /// to a coarse mesh is not smeared across its triangles; `luxel report`, vertex_lighting).
+  bool pixel_attenuation = false;
   /// Added to the mip LOD of every texture a material, the sky, a reflection or a water normal reads
   /// (D3DSAMP_MIPMAPLODBIAS): log2(k) draws a frame k times larger with the textures at the mips
   /// of the frame k times smaller (`luxel report`'s MSAA references).

@@ -225,10 +225,18 @@ inline L light_attenuation(const float3<L>& world_pos, const LocalLight& light, 
   return lerp(a, L(1.0f), color.w);
 }
 
-/// The vertex stage's version (the SDK's): float lane, returns the attenuation only.
+/// The largest attenuation the vertex stage hands on (vertex_light_attenuation).
+inline constexpr float kMaxVertexAttenuation = 1e8f;
+
+/// The vertex stage's version (the SDK's): float lane, returns the attenuation only. A light
+/// exactly on a vertex, without constant attenuation, is infinitely bright there (and the type
+/// selects turn that infinity into NaN); interpolated, it would make the whole triangle NaN, so
+/// anything not below kMaxVertexAttenuation is held at it (with quadratic attenuation 1: a light
+/// within 1e-4 of the vertex).
 inline float vertex_light_attenuation(const glm::vec3& world_pos, const LocalLight& light) {
   float3<float> l;
-  return light_attenuation<float>(float3<float>(world_pos.x, world_pos.y, world_pos.z), light, l);
+  const float a = light_attenuation<float>(float3<float>(world_pos.x, world_pos.y, world_pos.z), light, l);
+  return a < kMaxVertexAttenuation ? a : kMaxVertexAttenuation;
 }
 
 /// The Phong-side textures.
