@@ -27,6 +27,7 @@
 #include "luxel/shading/source/common.hpp"
 #include "luxel/shading/source/spherical_harmonics.hpp"
 
+#include <algorithm>
 #include <cstdio>
 #include <iostream>
 #include <memory>
@@ -166,7 +167,7 @@ int run_frame_costs(CostOptions& o) {
 std::vector<std::string> shader_options() {
   std::vector<std::string> names = {"all"};
   for (const src::ShaderVariant& v : src::shader_catalog())
-    if (names.back() != v.option) names.push_back(v.option);
+    if (std::find(names.begin(), names.end(), v.option) == names.end()) names.push_back(v.option);
   return names;
 }
 

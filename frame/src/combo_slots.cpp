@@ -55,7 +55,7 @@ bool vertexlit_fits(const VertexLitCombo& combo, shading::ShaderModel binary) {
 }
 
 int unlit_slots(const UnlitCombo& combo, shading::ShaderModel binary) {
-  return kept<kUnlitSpace>("UnlitGeneric", combo, binary, []<UnlitCombo C>(shading::ShaderModel m) {
+  return kept<kUnlitSpace>(combo.family(), combo, binary, []<UnlitCombo C>(shading::ShaderModel m) {
     return measure_unlit_generic<C>(m).total_slots();
   });
 }

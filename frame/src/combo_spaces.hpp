@@ -66,9 +66,11 @@ inline constexpr auto kLightmappedAll = [] {
 }();
 inline constexpr auto kLightmappedSpace = compact<kLightmappedAll>();
 
-/// Two local lights or none (a model gets the two most significant, the rest folded into its
-/// cube); every valid choice of bump, Phong (with bump: the skin shader's full path; without:
-/// FASTPATH_NOBUMP), rim and Half-Lambert; attenuation
+/// The models drawn lit per pixel: the bumped path and the skin shader (without a bump map or
+/// Phong a model is lit per vertex, kUnlitSpace's DIFFUSELIGHTING combos). Two local lights or
+/// none (a model gets the two most significant, the rest folded into its cube); every valid choice
+/// of bump, Phong (with bump: the skin shader's full path; without: FASTPATH_NOBUMP), rim and
+/// Half-Lambert; attenuation
 /// per pixel (luxel's default) or per vertex (what ps_2_0's budget forces); the ambient cube (SH9
 /// is a ps_3_0 option the frame does not take); unfogged, each model's range fog or the height fog
 /// of the view through water; the normalization cube map exactly on ps_2_0. Without lights, Half-Lambert and attenuation change
@@ -84,6 +86,7 @@ inline constexpr auto kVertexLitAll = [] {
               for (Fog fog : {Fog::none, Fog::range, Fog::vertex_range, Fog::height})
                 for (bool cube : {false, true}) {
                   if (lights == 0 && !(half_lambert && pixel_attenuation)) continue;
+                  if (!bump && !phong) continue;
                   const VertexLitCombo c{lights, bump, phong, rim, half_lambert, pixel_attenuation, false, fog, cube};
                   bool on_some_model = false;
                   for (shading::ShaderModel m : kPixelModels) on_some_model = on_some_model || c.valid(m);
@@ -93,18 +96,21 @@ inline constexpr auto kVertexLitAll = [] {
 }();
 inline constexpr auto kVertexLitSpace = compact<kVertexLitAll>();
 
-/// Base texture x $color, with or without vertex color and an env map (each mask); unfogged, each
-/// model's range fog or the height fog of the view through water. No detail texture yet (the
-/// adapter does not feed its coordinate).
+/// Base texture x $color, with or without vertex color and an env map (each mask), and
+/// VertexLitGeneric without a bump map (DIFFUSELIGHTING: x the vertex shader's lighting; no env
+/// map on models yet); unfogged, each model's range fog or the height fog of the view through
+/// water. No detail texture yet (the adapter does not feed its coordinate).
 inline constexpr auto kUnlitAll = [] {
   ComboList<UnlitCombo, 64> l;
   for (bool envmap : {false, true})
     for (UnlitEnvmapMask mask : {UnlitEnvmapMask::none, UnlitEnvmapMask::base_alpha_inverted, UnlitEnvmapMask::texture})
       for (bool vertex_color : {false, true})
-        for (Fog fog : {Fog::none, Fog::range, Fog::vertex_range, Fog::height}) {
-          const UnlitCombo c{UnlitDetail::none, envmap, mask, vertex_color, false, fog};
-          if (c.valid()) l.add(c);
-        }
+        for (bool diffuse_lighting : {false, true})
+          for (Fog fog : {Fog::none, Fog::range, Fog::vertex_range, Fog::height}) {
+            if (diffuse_lighting && envmap) continue;
+            const UnlitCombo c{UnlitDetail::none, envmap, mask, vertex_color, diffuse_lighting, fog};
+            if (c.valid()) l.add(c);
+          }
   return l;
 }();
 inline constexpr auto kUnlitSpace = compact<kUnlitAll>();

@@ -550,6 +550,7 @@ class FrameBuilder {
     const ModelLighting lighting =
         model >= 0 ? light_model(lights_, centroid, m, half_lambert, st_.model_lighting[static_cast<size_t>(model)])
                    : light_model(lights_, centroid, m, half_lambert, lighting_at(scene_, lights_, centroid, st_.settings.ambient));
+    if (path == VertexLitPath::plain) return vertexlit_per_vertex(m, lighting, half_lambert, target);
     const bool phong = path == VertexLitPath::skin;
     VertexLitCombo wanted;
     wanted.lights = lighting.kept > 0 ? 2 : 0;
@@ -586,6 +587,30 @@ class FrameBuilder {
     }
     target.vertex->lights = lighting.lights;
     return vertexlit_draw(*combo, model_, target, p);
+  }
+
+  /// VertexLitGeneric without a bump map (vertexlit_and_unlit_generic_vs20 / _ps2x with
+  /// DIFFUSELIGHTING): the vertex shader lights each vertex with the ambient cube and the kept
+  /// lights, the pixel shader multiplies the albedo by the interpolated result.
+  SourceDraw vertexlit_per_vertex(const scenes::Material& m, const ModelLighting& lighting, bool half_lambert,
+                                  const DrawTarget& target) {
+    VertexLitVsCombo vs;
+    vs.lights = lighting.kept > 0 ? 2 : 0;
+    vs.half_lambert = half_lambert || vs.lights == 0;
+    target.vertex->vertex_lighting = vertex_lighting_fn(vs);
+    if (!target.vertex->vertex_lighting)
+      throw std::logic_error("no VertexLitGeneric vertex shader combo " + vs.name());
+    target.vertex->vertex_lighting_params.ambient = lighting.cube;
+    target.vertex->vertex_lighting_params.lights = lighting.lights;
+    UnlitCombo combo;
+    combo.diffuse_lighting = true;
+    combo.fog = fog_;
+    UnlitGenericParams p;
+    p.base = sampler2d(0, m.base);
+    p.modulation = m.color;
+    p.tonemap = tonemap_;
+    p.fog = fog_constants_;
+    return unlit_draw(combo, model_, target, p, eye_);
   }
 
   SourceDraw unlit(size_t index, const scenes::Mesh& mesh, const scenes::Material& m, const DrawTarget& target) {

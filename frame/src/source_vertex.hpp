@@ -2,10 +2,13 @@
 // Private: the vertex stage of the Source frame. One functor type per varying count: it writes,
 // per vertex, the attributes a pixel shader's combo lists (shading/source/adapter.hpp), in that
 // order, so that every combo with the same number of varyings shares one compiled front end.
+// VertexLitGeneric without a bump map is lit here, by the lane-language vertex shader's lighting
+// (shading/source/vertexlit_vertex_shader.hpp), the code `luxel cost` counts.
 
 #include "luxel/rasterizer/draw.hpp"
 #include "luxel/scenes/scene.hpp"
 #include "luxel/shading/source/adapter.hpp"
+#include "luxel/shading/source/vertexlit_vertex_shader.hpp"
 
 #include <glm/geometric.hpp>
 #include <glm/mat4x4.hpp>
@@ -32,6 +35,10 @@ struct VertexSetup {
   std::optional<glm::vec4> proj_z_row;
   shading::source::AttributeList attributes;
   std::array<shading::source::LocalLight, 4> lights{};  ///< for the per-vertex attenuation attributes
+  /// For the lighting attributes: the vertex shader's lighting of its combo, and its constants
+  /// (the ambient cube and the lights; the transforms are the ones above).
+  shading::source::VertexLightingFn vertex_lighting = nullptr;
+  shading::source::VertexLitVsParams vertex_lighting_params;
   glm::vec4 fog_c16{1.0f, 1.0f, 1.0f, 0.0f};            ///< vertex_fog_constant(): visibility 1
   bool at_far_plane = false;  ///< depth 1 everywhere (the sky, as Source draws it with MinZ = MaxZ = 1)
 };
@@ -58,6 +65,7 @@ struct SourceVertex {
     const glm::vec4 color = s.colors ? s.colors[i] : glm::vec4(1.0f);
     glm::vec3 binormal(0.0f);
     if (s.tangents) binormal = t.w * glm::cross(n, glm::vec3(t));
+    const glm::vec3 lighting = s.vertex_lighting ? s.vertex_lighting(p, n, s.vertex_lighting_params) : glm::vec3(0.0f);
     auto value = [&](Attribute a) -> float {
       switch (a) {
         case Attribute::world_x: return p.x;
@@ -85,6 +93,9 @@ struct SourceVertex {
         case Attribute::attenuation_1: return shading::source::vertex_light_attenuation(p, s.lights[1]);
         case Attribute::attenuation_2: return shading::source::vertex_light_attenuation(p, s.lights[2]);
         case Attribute::attenuation_3: return shading::source::vertex_light_attenuation(p, s.lights[3]);
+        case Attribute::light_r: return lighting.r;
+        case Attribute::light_g: return lighting.g;
+        case Attribute::light_b: return lighting.b;
         case Attribute::fog_visibility: return shading::source::vertex_fog<float>(proj_z, s.fog_c16);
       }
       return 0.0f;

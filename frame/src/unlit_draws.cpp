@@ -14,9 +14,9 @@ SourceDraw unlit_draw(const UnlitCombo& combo, shading::ShaderModel model, const
   const bool found = detail::with_combo<detail::kUnlitSpace>(combo, [&]<UnlitCombo C>() {
     UnlitPixelShader<C> ps{params, eye};
     const shading::ShaderModel binary = detail::binary_for(C, model);
-    d = detail::make_source_draw(ps, target, "UnlitGeneric", C.name(), binary, detail::unlit_slots(C, binary));
+    d = detail::make_source_draw(ps, target, C.family(), C.name(), binary, detail::unlit_slots(C, binary));
   });
-  if (!found) detail::outside_space("UnlitGeneric", combo.name());
+  if (!found) detail::outside_space(combo.family(), combo.name());
   return d;
 }
 

@@ -237,7 +237,9 @@ void add_unlit(std::vector<ShaderVariant>& out) {
       in.fog = FogInputs<L>{get(21), get(22)};
       return unlit_generic_combine<C>(t, in, p, [](const float3<L>& r) { return r * r; });
     };
-    out.push_back(variant("UnlitGeneric", "unlit", C, C.builds(), 23, shade, [](ShaderModel m) { return measure_unlit_generic<C>(m); }));
+    // DIFFUSELIGHTING is VertexLitGeneric without a bump map: listed, and asked for, under it.
+    out.push_back(variant(C.family(), C.diffuse_lighting ? "vertexlit" : "unlit", C, C.builds(), 23, shade,
+                          [](ShaderModel m) { return measure_unlit_generic<C>(m); }));
   });
 }
 

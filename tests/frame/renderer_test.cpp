@@ -144,6 +144,43 @@ TEST(Renderer, AmbientFromTheNearestSampleOrTrilinear) {
   EXPECT_GT(std::abs(nearest[1] - trilinear[1]), 3.0) << "the two must differ for the test to mean anything";
 }
 
+// VertexLitGeneric without a bump map is lit per vertex (vertexlit_and_unlit_generic_vs20.fxc): the
+// ambient cube and the light at each vertex, interpolated across the triangle, on every model. A
+// point light 0.6 above x = 0.5 of the square: each corner's Lambert term over d² (the corners at
+// x = ±1 differ, the two at one x are equal), so the frame is the linear ramp between them in x,
+// worked out here in double. Lit per pixel, the spot under the light would be ten times brighter.
+TEST(Renderer, PlainModelsAreLitPerVertexAndInterpolated) {
+  scenes::Scene s = lit_by_cube_and_sun(false);
+  scenes::Light bulb;
+  bulb.position = {0.5f, 0.0f, 0.6f};
+  bulb.color = {0.6f, 0.5f, 0.4f};  // quadratic attenuation 1: color / d²
+  s.lights = {bulb};
+  const double albedo[3] = {0.8, 0.6, 0.4}, cube[3] = {0.5, 0.25, 0.125}, light[3] = {0.6, 0.5, 0.4};
+  auto lighting_at_corner = [&](double x, int c) {
+    const double d2 = (x - 0.5) * (x - 0.5) + 1.0 + 0.36;
+    return cube[c] + light[c] * (0.6 / std::sqrt(d2)) / d2;
+  };
+  for (shading::ShaderModel model : {shading::ShaderModel::ps_2_0, shading::ShaderModel::ps_2_b, shading::ShaderModel::ps_3_0}) {
+    const rasterizer::Image image = render_as(s, model);
+    int off = 0;
+    double worst = 0.0;
+    for (int y = 0; y < image.height; ++y)
+      for (int x = 0; x < image.width; ++x) {
+        const double t = (x + 0.5) / image.width;  // world x = 2t - 1
+        for (int c = 0; c < 3; ++c) {
+          const double lit = (1.0 - t) * lighting_at_corner(-1.0, c) + t * lighting_at_corner(1.0, c);
+          const double want = 255 * srgb_encode(albedo[c] * lit);
+          worst = std::max(worst, std::abs(image.pixel(x, y)[c] - want));
+          off += std::abs(image.pixel(x, y)[c] - want) > 1.0;
+        }
+      }
+    EXPECT_EQ(off, 0) << shading::caps(model).name << ": worst " << worst << " steps from the interpolated vertex lighting";
+  }
+  // Under the light, lit per pixel: (0.6 / 0.36) x the color, far from the ramp's value there.
+  const double t = 0.75, ramp = (1.0 - t) * lighting_at_corner(-1.0, 0) + t * lighting_at_corner(1.0, 0);
+  EXPECT_GT(255 * srgb_encode(albedo[0] * (cube[0] + light[0] / 0.36)) - 255 * srgb_encode(albedo[0] * ramp), 20.0);
+}
+
 /// `s` with a flat normal map (every texel (0, 0, 1)) on its first material.
 void add_flat_bump_map(scenes::Scene& s) {
   s.textures.push_back(solid_texture("flat normals", scenes::ColorSpace::linear, {128, 128, 255, 255}));
@@ -287,12 +324,12 @@ TEST(Renderer, CountsThePixelsEachComboShades) {
   r.render(ctx);
   ASSERT_EQ(r.shader_uses().size(), 1u);
   EXPECT_EQ(r.shader_uses()[0].family, "VertexLitGeneric");
-  EXPECT_EQ(r.shader_uses()[0].combo, "2 lights+vertexatten") << "the SDK's attenuation, per vertex";
+  EXPECT_EQ(r.shader_uses()[0].combo, "vertexlit") << "no bump map: lit per vertex, the pixel shader multiplies";
   // Every pixel once, and the pixels on the diagonal between the square's two triangles (samples
   // in both) once per triangle: at most one more per row.
   EXPECT_GE(r.shader_uses()[0].pixels, uint64_t(kRendererSize) * kRendererSize);
   EXPECT_LE(r.shader_uses()[0].pixels, uint64_t(kRendererSize) * kRendererSize + kRendererSize);
-  EXPECT_GT(r.shader_uses()[0].slots, 10);
+  EXPECT_GT(r.shader_uses()[0].slots, 3);
 }
 
 TEST(Renderer, TimesThePassesTheSceneHas) {

@@ -70,6 +70,9 @@ float attribute_value(Attribute a, int v) {
     case Attribute::attenuation_1: return 0.8f - 0.1f * t;
     case Attribute::attenuation_2: return 0.5f;
     case Attribute::attenuation_3: return 0.1f;
+    case Attribute::light_r: return 1.4f - 0.3f * t;
+    case Attribute::light_g: return 0.7f + 0.2f * t;
+    case Attribute::light_b: return 0.3f;
     case Attribute::fog_visibility: return 0.2f + 0.15f * t;
   }
   return 0.0f;
@@ -264,6 +267,12 @@ TEST(SourceAdapter, UnlitGenericMatchesItsScalarReference) {
   ps.params.fog = testing::lane_test_fog();
   ps.eye = kEye;
   expect_scalar_reference_bytes(ps, "UnlitGeneric envmap base-alpha mask, vertex color, range fog");
+  UnlitPixelShader<UnlitCombo{.diffuse_lighting = true, .fog = Fog::height}> lit;
+  bind(lit.params.base, t.base);
+  lit.params.modulation = glm::vec4(0.8f, 0.9f, 0.7f, 0.9f);
+  lit.params.tonemap = ToneMapConstants::for_scale(1.3f);
+  lit.params.fog = testing::lane_test_fog();
+  expect_scalar_reference_bytes(lit, "VertexLitGeneric lit per vertex (DIFFUSELIGHTING), height fog");
 }
 
 TEST(SourceAdapter, WaterMatchesItsScalarReference) {

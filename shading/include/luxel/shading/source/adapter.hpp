@@ -54,6 +54,7 @@ enum class Attribute : uint8_t {
   lightmap_u, lightmap_v,              ///< uv1 in the lightmap atlas, [0, 1]
   color_r, color_g, color_b, color_a,  ///< vertex color, linear (white without one)
   attenuation_0, attenuation_1, attenuation_2, attenuation_3,  ///< per-vertex light attenuation (SDK combos)
+  light_r, light_g, light_b,           ///< the vertex shader's lighting (VertexLitGeneric without a bump map)
   fog_visibility,                      ///< vertex range fog: 1 = clear (ps_2_0)
 };
 inline constexpr int kAttributeKinds = static_cast<int>(Attribute::fog_visibility) + 1;
@@ -277,6 +278,7 @@ constexpr AttributeList unlit_attributes(const UnlitCombo& c) {
   AttributeList l;
   l.add({Attribute::base_u, Attribute::base_v});
   if (c.vertex_color) l.add({Attribute::color_r, Attribute::color_g, Attribute::color_b, Attribute::color_a});
+  if (c.diffuse_lighting) l.add({Attribute::light_r, Attribute::light_g, Attribute::light_b});
   if (c.envmap) {
     detail::add_normal(l);
     detail::add_world(l);
@@ -285,10 +287,12 @@ constexpr AttributeList unlit_attributes(const UnlitCombo& c) {
   return l;
 }
 
-/// UnlitGeneric without detail texture or per-vertex lighting (the frame's unlit materials).
+/// UnlitGeneric without detail texture (the frame's unlit materials), and with DIFFUSELIGHTING
+/// VertexLitGeneric without a bump map, its lighting from the vertex stage (light_r/g/b: the
+/// vertex shader's, vertexlit_vertex_shader.hpp).
 template <UnlitCombo C>
 struct UnlitPixelShader {
-  static_assert(C.detail == UnlitDetail::none && !C.diffuse_lighting, "detail and DIFFUSELIGHTING need inputs the adapter does not feed");
+  static_assert(C.detail == UnlitDetail::none, "detail needs a coordinate the adapter does not feed");
   static constexpr AttributeList kAttributes = unlit_attributes(C);
   static constexpr int kVaryings = kAttributes.varyings();
   static constexpr bool kCanDiscard = false, kWritesDepth = false;
@@ -306,6 +310,9 @@ struct UnlitPixelShader {
     if constexpr (C.vertex_color)
       i.vertex_color = float4<F>(a.template get<Attribute::color_r>(), a.template get<Attribute::color_g>(),
                                  a.template get<Attribute::color_b>(), a.template get<Attribute::color_a>());
+    if constexpr (C.diffuse_lighting)
+      i.vertex_color = float4<F>(a.template get<Attribute::light_r>(), a.template get<Attribute::light_g>(),
+                                 a.template get<Attribute::light_b>(), F(1.0f));
     if constexpr (C.envmap) {
       i.normal = detail::get3<Attribute::normal_x, Attribute::normal_y, Attribute::normal_z>(a);
       i.eye_vector = constant<F>(eye) - detail::get3<Attribute::world_x, Attribute::world_y, Attribute::world_z>(a);

@@ -55,6 +55,8 @@ struct UnlitCombo {
   constexpr bool valid(ShaderModel m) const { return valid() && fog_valid(fog, m); }
   /// vertexlit_and_unlit_generic_ps2x.fxc: ps20, ps20b and ps30.
   static constexpr ShaderBuilds builds() { return kPs2x30Builds; }
+  /// The material family that draws with it: DIFFUSELIGHTING is VertexLitGeneric without a bump map.
+  constexpr const char* family() const { return diffuse_lighting ? "VertexLitGeneric" : "UnlitGeneric"; }
   friend constexpr bool operator==(const UnlitCombo&, const UnlitCombo&) = default;
   std::string name() const {
     static const char* details[] = {"", "+detail_mod2x", "+detail_additive"};

@@ -14,13 +14,13 @@
 // would refuse it: that, not a rule written here, is what keeps the heavier per-pixel-attenuated
 // combos off ps_2_0 (their arithmetic exceeds its 64 slots; two Lambert lights still fit).
 //
-// Lights: the SDK computes attenuation per vertex and N·L per pixel. luxel's default for
-// two lights computes the attenuation per pixel too (pixel_attenuation = true: a light close to a
-// coarse mesh is not smeared across the triangle); the SDK's per-vertex attenuation (an
-// interpolated float4, one component per light, vertex_light_attenuation() in the vertex stage)
-// is the combo with pixel_attenuation = false, and the only one for four lights: four lights'
-// full records (5 float4 each) do not fit ps_2_b's 32 constant registers — the reason the SDK
-// splits it. The light type is dynamic as in the SDK: color.w = 1 directional, spot.w = 1 spot.
+// Lights: the SDK computes attenuation per vertex and N·L per pixel: the combos with
+// pixel_attenuation = false (an interpolated float4, one component per light,
+// vertex_light_attenuation() in the vertex stage), the frame's default. luxel's option computes
+// the attenuation per pixel too (pixel_attenuation = true: a light close to a coarse mesh is not
+// smeared across the triangle) where the combo fits. Four lights go per vertex only: their full
+// records (5 float4 each) do not fit ps_2_b's 32 constant registers, the reason the SDK splits
+// the work. The light type is dynamic as in the SDK: color.w = 1 directional, spot.w = 1 spot.
 // A directional light's position register holds the unit vector toward the light with w = 0, so
 // one mad gives L for every type: L = pos.xyz - worldPos * pos.w.
 //
@@ -33,9 +33,10 @@
 //
 // Fog: every combo's fog type (fog.hpp), the SDK's PIXELFOGTYPE.
 //
-// The SDK's VertexLitGeneric without a bump map is lit per vertex: vertexlit_vertex_shader.hpp
-// and the DIFFUSELIGHTING combos of unlit_generic.hpp. The per-pixel combos here without a bump
-// map are luxel's (per-pixel attenuation and lighting of smooth models).
+// The SDK's VertexLitGeneric without a bump map is lit per vertex, and so is the frame's:
+// vertexlit_vertex_shader.hpp and the DIFFUSELIGHTING combos of unlit_generic.hpp. The combos here
+// without a bump map or Phong are luxel's per-pixel lighting of smooth models, which the catalog
+// and the report measure against it.
 //
 // The skin shader (phong) has the SDK's two forms (docs/fidelity.md#phong, #phong-defaults): with
 // `bump`, skin_ps20b's full path, which always reads the normal map (a flat one when the material
@@ -70,7 +71,7 @@ struct VertexLitCombo {
   bool phong = false;  ///< the skin shader: Phong specular (ps_2_b / ps_3_0 only)
   bool rim = false;    ///< rim lighting (the skin shader's full path)
   bool half_lambert = true;       ///< squared Half-Lambert (the skin shader always uses it)
-  bool pixel_attenuation = true;  ///< attenuation per pixel (luxel) or per vertex, interpolated (SDK)
+  bool pixel_attenuation = true;  ///< attenuation per pixel (luxel's option) or per vertex, interpolated (the SDK's)
   bool sh9_ambient = false;       ///< ambient from 9 SH coefficients instead of the cube (ps_3_0 only)
   Fog fog = Fog::none;
   bool normalization_cube = false;  ///< normalize through the normalization cube map (ps_2_0's way)

@@ -110,13 +110,17 @@ inline L vertex_cosine_term(const L& n_dot_l, bool half_lambert) {
 }
 
 /// DoLightingUnrolled's dynamic part: the local lights and the ambient cube at a world point.
-template <VertexLitVsCombo C, Lane L>
+/// kFiniteAttenuation: hold each attenuation below kMaxVertexAttenuation (vertexlit_generic.hpp),
+/// as the frame's vertex stage does, so that a light exactly on a vertex does not make the
+/// interpolated lighting NaN; the counted shader, the SDK's, has no such guard.
+template <VertexLitVsCombo C, Lane L, bool kFiniteAttenuation = false>
 inline float3<L> vertex_lighting(const float3<L>& world_pos, const float3<L>& world_normal, const VertexLitVsParams& p) {
   float3<L> linear(0.0f);
   for (int i = 0; i < C.lights; ++i) {
     const LocalLight& light = p.lights[static_cast<size_t>(i)];
     float3<L> to_light;
-    const L atten = light_attenuation(world_pos, light, to_light);
+    L atten = light_attenuation(world_pos, light, to_light);
+    if constexpr (kFiniteAttenuation) atten = min(atten, L(kMaxVertexAttenuation));  // NaN too: min keeps the bound
     linear = linear + constant<L>(light.color).rgb() * (vertex_cosine_term(dot(world_normal, to_light), C.half_lambert) * atten);
   }
   return linear + ambient_light(world_normal, p.ambient);
@@ -138,6 +142,27 @@ inline VertexLitVsOutputs<L> vertexlit_vertex_shader(const VertexLitVsInputs<L>&
   out.world_pos_proj_z = float4<L>(world, out.proj_pos.z);
   out.fog = vertex_fog(out.proj_pos.z, p.fog);
   return out;
+}
+
+/// The vertex shader's lighting (TEXCOORD2) of one vertex given in world space, its normal
+/// normalized as the shader does, on the float lane with the frame's finite attenuation: what the
+/// frame's vertex stage hands the DIFFUSELIGHTING pixel shader (unlit_generic.hpp).
+template <VertexLitVsCombo C>
+inline glm::vec3 vertex_lighting_at(const glm::vec3& world, const glm::vec3& normal, const VertexLitVsParams& p) {
+  const float3<float> n = normalize(float3<float>(normal.x, normal.y, normal.z));
+  const float3<float> l = vertex_lighting<C, float, true>(float3<float>(world.x, world.y, world.z), n, p);
+  return {l.x, l.y, l.z};
+}
+
+using VertexLightingFn = glm::vec3 (*)(const glm::vec3& world, const glm::vec3& normal, const VertexLitVsParams& p);
+
+/// vertex_lighting_at of the combo of kVertexLitVsCombos equal to `combo`; null when none is.
+inline VertexLightingFn vertex_lighting_fn(const VertexLitVsCombo& combo) {
+  VertexLightingFn fn = nullptr;
+  for_each_vertexlit_vs_combo([&]<VertexLitVsCombo C>() {
+    if (C.lights == combo.lights && C.half_lambert == combo.half_lambert) fn = &vertex_lighting_at<C>;
+  });
+  return fn;
 }
 
 template <VertexLitVsCombo C>
