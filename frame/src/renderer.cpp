@@ -530,6 +530,7 @@ class FrameBuilder {
     p.bump = sampler2d(4, m.bump);
     p.envmap_mask = sampler2d(5, m.envmap_mask_texture);
     p.tint_lightmap_scale = glm::vec4(glm::vec3(m.color) * lightmap_scale_factor(LightmapFormat::hdr_float16), m.color.a);
+    p.vertex_alpha.x = m.color.a;
     p.envmap_tint = glm::vec4(m.envmap_tint, 0.0f);
     p.envmap_contrast_saturation = glm::vec4(m.envmap_contrast, m.envmap_saturation, 0.0f, 0.0f);
     p.fresnel = fresnel_constant(m.fresnel_reflection);

@@ -338,6 +338,24 @@ TEST(SourceLightmapped, InvertedBaseAlphaMaskWithContrastOneAtAnObliqueEye) {
   EXPECT_EQ(got.w, 1.0f) << "the base alpha is a mask, not opacity";
 }
 
+// $alpha reaches the pixel twice (lightmappedgeneric_ps2_3_x.h: alpha x= i.vertexColor.a x c12.w,
+// the vertex color's alpha being cModulationColor.a): base alpha x $alpha², or $alpha² where the
+// base alpha is the env-map mask.
+TEST(SourceLightmapped, AlphaIsAppliedTwice) {
+  LightmappedGenericParams p;
+  p.tint_lightmap_scale.w = 0.5f;
+  p.vertex_alpha.x = 0.5f;
+  LightmappedTexels<float> t;
+  t.base = float4<float>(0.2f, 0.3f, 0.4f, 0.8f);
+  LightmappedInputs<float> in;
+  in.normal = float3<float>(0.0f, 0.0f, 1.0f);
+  in.eye_vector = float3<float>(0.0f, 0.0f, 1.0f);
+  constexpr LightmappedCombo kFlat{false, false};
+  EXPECT_FLOAT_EQ(lightmapped_generic_combine<kFlat>(t, in, p, [](const float3<float>& r) { return r; }).w, 0.8f * 0.25f);
+  constexpr LightmappedCombo kMasked{false, true, EnvmapMask::base_alpha_inverted, EnvmapPath::fast};
+  EXPECT_FLOAT_EQ(lightmapped_generic_combine<kMasked>(t, in, p, [](const float3<float>& r) { return r; }).w, 0.25f);
+}
+
 TEST(SourceLightmapped, FastPathQuirkIsOnByDefault) {
   LightmappedMaterial m;
   m.envmap = true;

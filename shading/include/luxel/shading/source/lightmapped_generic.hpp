@@ -119,8 +119,11 @@ struct LightmappedGenericParams {
   SamplerCube envmap{2};
   Sampler2D bump{4};
   Sampler2D envmap_mask{5};
-  /// c12: rgb = modulation color x lightmap scale factor, w = alpha ($alpha2).
+  /// c12: rgb = modulation color x lightmap scale factor, w = $alpha x $alpha2 (luxel has no $alpha2: 1).
   glm::vec4 tint_lightmap_scale{1.0f};
+  /// x: i.vertexColor.a, which the vertex shader sets to cModulationColor.a ($alpha) on a surface
+  /// without $vertexcolor: the same at every vertex, so luxel reads it as a constant.
+  glm::vec4 vertex_alpha{1.0f};
   /// $envmaptint, raw (no gamma conversion for brushes).
   glm::vec4 envmap_tint{1.0f, 1.0f, 1.0f, 0.0f};
   /// x = $envmapcontrast, y = $envmapsaturation.
@@ -190,7 +193,9 @@ inline float4<L> lightmapped_generic_combine(const LightmappedTexels<L>& t, cons
   }
   float3<L> color = albedo * diffuse;
 
-  L alpha = t.base.w * c12.w;
+  // alpha = base.a x i.vertexColor.a x c12.w, which applies $alpha twice (docs/fidelity.md#lightmappedgeneric).
+  const L modulation_alpha = L(constant<L>(p.vertex_alpha).x) * c12.w;
+  L alpha = t.base.w * modulation_alpha;
   if constexpr (C.envmap) {
     // Env map: R = 2(N·E)N − (N·N)E, N the tangent-space normal rotated to world, not renormalised.
     float3<L> world_normal;
@@ -205,7 +210,7 @@ inline float4<L> lightmapped_generic_combine(const LightmappedTexels<L>& t, cons
     float3<L> spec = env(r) * c30.z;
     if constexpr (C.mask == EnvmapMask::base_alpha_inverted) {
       spec = spec * (1.0f - t.base.w);
-      alpha = c12.w;  // the base alpha is a mask, not opacity
+      alpha = modulation_alpha;  // the base alpha is a mask, not opacity
     } else if constexpr (C.mask == EnvmapMask::normal_alpha) {
       spec = spec * t.bump.w;
     } else if constexpr (C.mask == EnvmapMask::texture) {
