@@ -516,6 +516,7 @@ class FrameBuilder {
     lm.bump = m.bump.bound();
     lm.envmap = env != nullptr;
     lm.mask = lightmapped_mask(m.envmap_mask);
+    lm.base_translucent = m.base.bound() && st_.textures[static_cast<size_t>(m.base.texture)].translucent;
     if (lm.mask == EnvmapMask::normal_alpha && !lm.bump) lm.mask = EnvmapMask::none;
     lm.envmap_contrast = m.envmap_contrast;
     lm.envmap_saturation = m.envmap_saturation;

@@ -33,7 +33,8 @@ GpuTexture upload(const scenes::Texture& t) {
   const int levels = t.mipmaps ? rasterizer::Texture::kFullMipChain : 1;
   GpuTexture g{t.shape == scenes::TextureShape::cube ? rasterizer::Texture::create_cube(first.width, format, levels)
                                                      : rasterizer::Texture::create_2d(first.width, first.height, format, levels),
-               {}};
+               {},
+               scenes::has_translucent_texels(t)};
   for (size_t f = 0; f < t.faces.size(); ++f) {
     const scenes::PixelImage& image = t.faces[f];
     if (hdr) {

@@ -202,13 +202,15 @@ Scene make_courtyard() {
     const float tone = 0.8f + 0.3f * hash01(p.id, 0, 7) + 0.25f * (tiled_fbm(u, v, 16, 3, 3) - 0.5f);
     const bool grout = p.edge < 0.06f;
     const glm::vec3 c = grout ? glm::vec3(0.38f, 0.36f, 0.33f) : glm::vec3(0.72f, 0.68f, 0.6f) * tone;
-    // Alpha: where the paving is wet (puddles), the env-map mask (envmap_mask = base_alpha).
-    return glm::u8vec4(byte(c.r), byte(c.g), byte(c.b), byte(grout ? 0.0f : 0.15f + 0.85f * puddles(u, v)));
+    return glm::u8vec4(byte(c.r), byte(c.g), byte(c.b), 255);
   }));
+  // Alpha: the env-map mask (envmap_mask = normal_alpha): 1 in the grout, 0.85 (1 - puddles) on the
+  // stones. A bumped LightmappedGeneric surface cannot take it from the base alpha: $bumpmap with
+  // $basealphaenvmapmask is a combo the SDK never compiles.
   const int paving_bump = b.texture(normal_map("builtin:courtyard/paving_normal", [](float u, float v) {
     const Paving p = paving(u, v);
     return std::min(p.edge * 6.0f, 1.0f) * 2.0f + 0.6f * tiled_fbm(u, v, 16, 4, 5);
-  }, 24.0f, [](float, float) { return 1.0f; }));
+  }, 24.0f, [](float u, float v) { return paving(u, v).edge < 0.06f ? 1.0f : 0.85f * (1.0f - puddles(u, v)); }));
   const int brick_base = b.texture(make_flat_texture("builtin:courtyard/bricks", kTextureSize, ColorSpace::srgb,
                                                      [](int x, int y) {
     const float u = (x + 0.5f) / kTextureSize, v = (y + 0.5f) / kTextureSize;
@@ -287,7 +289,7 @@ Scene make_courtyard() {
   floor.base.texture = paving_base;
   floor.bump.texture = paving_bump;
   floor.envmap = EnvmapSource::nearest_sample;
-  floor.envmap_mask = EnvmapMask::base_alpha;
+  floor.envmap_mask = EnvmapMask::normal_alpha;
   floor.envmap_tint = glm::vec3(0.6f);
   floor.fresnel_reflection = 0.3f;
   const int floor_m = b.material(floor);

@@ -187,6 +187,16 @@ const Exposure& exposure_at(const Scene& scene, glm::vec3 p) {
   return scene.exposure;
 }
 
+bool has_translucent_texels(const Texture& texture) {
+  for (const PixelImage& f : texture.faces) {
+    for (size_t i = 3; i < f.rgba8.size(); i += 4)
+      if (f.rgba8[i] < 255) return true;
+    for (size_t i = 3; i < f.rgba32f.size(); i += 4)
+      if (f.rgba32f[i] < 1.0f) return true;
+  }
+  return false;
+}
+
 void validate(const Scene& scene) {
   for (size_t i = 0; i < scene.textures.size(); ++i) check_texture(scene, scene.textures[i], i);
   for (size_t i = 0; i < scene.materials.size(); ++i) {
@@ -199,6 +209,13 @@ void validate(const Scene& scene) {
     if (m.envmap == EnvmapSource::texture &&
         (!m.envmap_texture.bound() || scene.textures[m.envmap_texture.texture].shape != TextureShape::cube))
       fail(scene, where + " asks for an env map texture but has no cube bound");
+    // The helper keeps $basealphaenvmapmask over a base with alpha and passes it with BUMPMAP:
+    // a combo lightmappedgeneric_ps2_3_x.h skips, so what the engine drew is not in the SDK.
+    if (m.family == ShaderFamily::lightmapped_generic && m.envmap != EnvmapSource::none && m.bump.bound() &&
+        m.envmap_mask == EnvmapMask::base_alpha && m.base.bound() && has_translucent_texels(scene.textures[m.base.texture]))
+      fail(scene, where + " is LightmappedGeneric with $bumpmap and $basealphaenvmapmask over a base texture with alpha, "
+                          "a combo the SDK never compiles (SKIP $BASEALPHAENVMAPMASK && $BUMPMAP); use "
+                          "$normalmapalphaenvmapmask");
   }
   if (!finite(scene.background)) fail(scene, "the background color is not finite");
   if (!finite(scene.fog.color) || !std::isfinite(scene.fog.start) || !std::isfinite(scene.fog.end) ||

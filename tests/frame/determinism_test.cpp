@@ -101,9 +101,9 @@ uint64_t fnv1a(const std::vector<uint8_t>& bytes) {
 // drawn, and the same without its passes on the finished image (bloom, color correction).
 TEST(FrameDeterminism, CourtyardGoldenHashes) {
   const struct { shading::ShaderModel model; uint64_t hash, without_post; } golden[] = {
-      {shading::ShaderModel::ps_2_0, 0x93af0bb6173a27f3ull, 0x3f7ce31ebe13b0d0ull},
-      {shading::ShaderModel::ps_2_b, 0x074b9657c415db60ull, 0x278259cd8bd7a55dull},
-      {shading::ShaderModel::ps_3_0, 0x074b9657c415db60ull, 0x278259cd8bd7a55dull},
+      {shading::ShaderModel::ps_2_0, 0xe56b0fc3321f32c9ull, 0xd6c106bba75c62bdull},
+      {shading::ShaderModel::ps_2_b, 0x02aa24aabc26070eull, 0x64063b1fd9bfde81ull},
+      {shading::ShaderModel::ps_3_0, 0x02aa24aabc26070eull, 0x64063b1fd9bfde81ull},
   };
   // ps_2_b and ps_3_0 run the same combos on the courtyard (no combo there needs more than
   // ps_2_b offers), hence the same bytes.

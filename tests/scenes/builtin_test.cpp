@@ -138,23 +138,24 @@ TEST_F(Courtyard, UsesEachFamilyItNeeds) {
 
 TEST_F(Courtyard, WorldSurfacesAreBumpedLightmappedAndMasked) {
   int with_envmap = 0;
-  bool base_alpha_mask = false, texture_mask = false;
+  bool normal_alpha_mask = false, texture_mask = false;
   for (const Material& m : s().materials) {
     if (m.family != ShaderFamily::lightmapped_generic || m.envmap == EnvmapSource::none) continue;
     ++with_envmap;
     EXPECT_TRUE(m.bump.bound()) << m.name;
-    if (m.envmap_mask == EnvmapMask::base_alpha) {
-      // The mask varies: the base texture's alpha is not one value.
-      const std::vector<uint8_t>& texels = s().textures[m.base.texture].faces[0].rgba8;
+    EXPECT_NE(m.envmap_mask, EnvmapMask::base_alpha) << m.name << ": with a bump map, a combo the SDK never compiles";
+    if (m.envmap_mask == EnvmapMask::normal_alpha) {
+      // The mask varies: the normal map's alpha is not one value.
+      const std::vector<uint8_t>& texels = s().textures[m.bump.texture].faces[0].rgba8;
       std::set<uint8_t> alphas;
       for (size_t i = 3; i < texels.size(); i += 4) alphas.insert(texels[i]);
       EXPECT_GT(alphas.size(), 10u) << m.name;
-      base_alpha_mask = true;
+      normal_alpha_mask = true;
     }
     if (m.envmap_mask == EnvmapMask::texture) texture_mask = m.envmap_mask_texture.bound();
   }
   EXPECT_GE(with_envmap, 2);
-  EXPECT_TRUE(base_alpha_mask);
+  EXPECT_TRUE(normal_alpha_mask);
   EXPECT_TRUE(texture_mask);
 }
 

@@ -35,7 +35,7 @@ TEST(SourceTextured, LightmappedGenericBumpEnvmapOnBothLanes) {
   p.bump.texture = &bump;
   p.lightmap.texture = &lightmap;
   p.envmap.texture = &cube;
-  constexpr LightmappedCombo C{true, true, EnvmapMask::base_alpha_inverted, EnvmapPath::fast};
+  constexpr LightmappedCombo C{true, true, EnvmapMask::none, EnvmapPath::fast};
   auto make = [](auto zero) {
     using L = decltype(zero);
     LightmappedInputs<L> in;
@@ -53,7 +53,7 @@ TEST(SourceTextured, LightmappedGenericBumpEnvmapOnBothLanes) {
   for (int c = 0; c < 4; ++c)
     for (int l = 0; l < simd::kLanes; ++l) EXPECT_TRUE(shading::testing::same_float(testing::lane_of(v[c], l), s[c]));
   // Flat normal: average lightmap (3,2,1) x base (uploaded linear 0.5, stored sRGB, decoded on
-  // read) + envmap +Z face (0.4,0.2,0.3) x (1 - base alpha 0). 8-bit bump/base quantisation: 0.02.
+  // read) + envmap +Z face (0.4,0.2,0.3), unmasked. 8-bit bump/base quantisation: 0.02.
   const double base_r = 0.5;
   EXPECT_NEAR(s.x, 3.0 * base_r + 0.4, 0.02);
   EXPECT_NEAR(s.z, 1.0 * 1.0 + 0.3, 0.02);

@@ -14,6 +14,7 @@ namespace luxel::frame {
 struct GpuTexture {
   rasterizer::Texture texture;
   rasterizer::Sampler sampler;
+  bool translucent = false;  ///< a texel with alpha below 1 (scenes::has_translucent_texels)
 };
 
 /// `s` with `lod_bias` added to its mip LOD bias (FrameSettings::texture_lod_bias).

@@ -372,12 +372,17 @@ Bounds bounds_of(const Scene& scene);
 /// (validate() refuses them).
 std::vector<char> meshes_in_models(const Scene& scene);
 
+/// Whether a texel of `texture` has alpha below 1: what the SDK's helpers ask of a base texture
+/// (ITexture::IsTranslucent, the VTF's alpha flags) before they keep $basealphaenvmapmask.
+bool has_translucent_texels(const Texture& texture);
+
 /// Checks what the frame relies on: indices within their vertex counts, array lengths, material
 /// and texture references in range, finite positions, finite material numbers and texture
 /// transforms (a shader computes with each), a finite background and fog, texture images the size
 /// they claim, unit handedness, exposure controls and color-correction nodes and volumes with
 /// finite values that are not negative (a falloff may be -1), a LUT name, input times in order,
-/// ordered boxes.
+/// ordered boxes, and no LightmappedGeneric material asking for a combo the SDK never compiles
+/// ($bumpmap with $basealphaenvmapmask over a base texture with alpha).
 /// Throws std::invalid_argument naming the scene and the first problem.
 void validate(const Scene& scene);
 

@@ -67,6 +67,9 @@ struct LightmappedCombo {
     if (!envmap) return mask == EnvmapMask::none && path == EnvmapPath::fast;
     if (mask == EnvmapMask::normal_alpha && !bump) return false;
     if (mask == EnvmapMask::texture && bump) return false;
+    // lightmappedgeneric_ps2_3_x.h: SKIP $BASEALPHAENVMAPMASK && $BUMPMAP. The helper does not
+    // resolve it; a scene that asks for it is refused (scenes::validate).
+    if (mask == EnvmapMask::base_alpha_inverted && bump) return false;
     return true;
   }
   /// ... on model m: the fog type decides (fog.hpp).
@@ -93,9 +96,9 @@ inline constexpr LightmappedCombo kLightmappedCombos[] = {
     {false, true, EnvmapMask::texture, EnvmapPath::full},
     {true, true, EnvmapMask::none, EnvmapPath::fast},
     {true, true, EnvmapMask::normal_alpha, EnvmapPath::fast},
-    {true, true, EnvmapMask::base_alpha_inverted, EnvmapPath::fast_contrast},
+    {true, true, EnvmapMask::normal_alpha, EnvmapPath::fast_contrast},
     {true, true, EnvmapMask::normal_alpha, EnvmapPath::full},
-    {true, true, EnvmapMask::base_alpha_inverted, EnvmapPath::full},
+    {false, true, EnvmapMask::base_alpha_inverted, EnvmapPath::full},
     {false, false, EnvmapMask::none, EnvmapPath::fast, Fog::range},
     {false, false, EnvmapMask::none, EnvmapPath::fast, Fog::vertex_range},
     {true, false, EnvmapMask::none, EnvmapPath::fast, Fog::height},
@@ -280,6 +283,7 @@ struct LightmappedMaterial {
   bool bump = true;
   bool envmap = false;
   EnvmapMask mask = EnvmapMask::none;
+  bool base_translucent = true;  ///< the base texture has alpha (a missing base has none)
   float envmap_contrast = 0.0f;
   float envmap_saturation = 1.0f;
   float fresnel_reflection = 1.0f;
@@ -295,6 +299,8 @@ inline LightmappedCombo choose_lightmapped_combo(const LightmappedMaterial& m, b
   if (!m.envmap) return c;
   c.mask = m.mask;
   if (c.mask == EnvmapMask::texture && c.bump) c.mask = EnvmapMask::none;  // the helper drops $envmapmask
+  // ... and $basealphaenvmapmask over a base without alpha (lightmappedgeneric_dx9_helper.cpp:143-147, 214-218)
+  if (c.mask == EnvmapMask::base_alpha_inverted && !m.base_translucent) c.mask = EnvmapMask::none;
   const bool contrast_special = m.envmap_contrast == 0.0f || m.envmap_contrast == 1.0f;
   bool full;
   if (faithful_fast_path) {
