@@ -74,6 +74,11 @@ void FrameOptions::add_to(CLI::App& cmd) {
                  "A model's ambient cube from the irradiance volume: nearest (the nearest sample's, the default) or "
                  "trilinear (blended from the eight samples around it)")
       ->transform(CLI::CheckedTransformer(ambient, CLI::ignore_case));
+  cmd.add_option("--lights", settings.local_lights,
+                 "Local lights a model takes, the others folded into its ambient cube: 2 (the default), up to 4 for "
+                 "bumped and skin models on ps_2_b and ps_3_0, as the SDK's later shaders take")
+      ->check(CLI::Range(1, 4))
+      ->capture_default_str();
   cmd.add_flag("--pixel-attenuation", settings.pixel_attenuation,
                "Attenuate the models' local lights per pixel where the combo fits the model, instead of per vertex as "
                "the SDK does");

@@ -68,16 +68,16 @@ inline constexpr auto kLightmappedSpace = compact<kLightmappedAll>();
 
 /// The models drawn lit per pixel: the bumped path and the skin shader (without a bump map or
 /// Phong a model is lit per vertex, kUnlitSpace's DIFFUSELIGHTING combos). Two local lights or
-/// none (a model gets the two most significant, the rest folded into its cube); every valid choice
+/// none (a model gets its most significant lights, the rest folded into its cube), or four
+/// (FrameSettings::local_lights on ps_2_b and ps_3_0, attenuated per vertex); every valid choice
 /// of bump, Phong (with bump: the skin shader's full path; without: FASTPATH_NOBUMP), rim and
-/// Half-Lambert; attenuation
-/// per pixel (luxel's default) or per vertex (what ps_2_0's budget forces); the ambient cube (SH9
-/// is a ps_3_0 option the frame does not take); unfogged, each model's range fog or the height fog
-/// of the view through water; the normalization cube map exactly on ps_2_0. Without lights, Half-Lambert and attenuation change
-/// nothing, so only one of each is compiled.
+/// Half-Lambert; attenuation per vertex (the SDK's, the default) or per pixel (luxel's option);
+/// the ambient cube (SH9 is a ps_3_0 option the frame does not take); unfogged, each model's range
+/// fog or the height fog of the view through water; the normalization cube map exactly on ps_2_0.
+/// Without lights, Half-Lambert and attenuation change nothing, so only one of each is compiled.
 inline constexpr auto kVertexLitAll = [] {
   ComboList<VertexLitCombo, 1024> l;
-  for (int lights : {0, 2})
+  for (int lights : {0, 2, 4})
     for (bool bump : {false, true})
       for (bool phong : {false, true})
         for (bool rim : {false, true})

@@ -71,12 +71,12 @@ shading::source::AmbientCube ambient_cube(const scenes::Scene& scene, const glm:
 }
 
 AveragedLighting lighting_at(const scenes::Scene& scene, std::span<const LightDesc> lights, const glm::vec3& centroid,
-                             AmbientSampling sampling) {
+                             AmbientSampling sampling, int local_lights) {
   AveragedLighting a;
   a.volume = ambient_cube(scene, centroid, sampling);
   a.shares.assign(lights.size(), 0.0f);
   const std::vector<size_t> order = shading::source::significance_order(lights, centroid);
-  for (size_t k = 0; k < order.size() && k < 2; ++k) a.shares[order[k]] = 1.0f;
+  for (size_t k = 0; k < order.size() && k < static_cast<size_t>(local_lights); ++k) a.shares[order[k]] = 1.0f;
   return a;
 }
 
@@ -90,13 +90,15 @@ void step_towards(AveragedLighting& averaged, const AveragedLighting& target, fl
   for (size_t i = 0; i < target.shares.size(); ++i) averaged.shares[i] += (target.shares[i] - averaged.shares[i]) * a;
 }
 
-std::array<int, 2> local_light_slots(std::span<const size_t> significance, std::span<const float> shares) {
+std::array<int, kMaxLocalLights> local_light_slots(std::span<const size_t> significance, std::span<const float> shares,
+                                                   int count) {
   std::vector<size_t> by_share;
   for (size_t i : significance)
     if (i < shares.size() && shares[i] > 0.0f) by_share.push_back(i);
   std::stable_sort(by_share.begin(), by_share.end(), [&](size_t a, size_t b) { return shares[a] > shares[b]; });
-  std::array<int, 2> slots{-1, -1};
-  for (size_t k = 0; k < by_share.size() && k < 2; ++k) slots[k] = static_cast<int>(by_share[k]);
+  std::array<int, kMaxLocalLights> slots{-1, -1, -1, -1};
+  const size_t n = static_cast<size_t>(std::clamp(count, 0, kMaxLocalLights));
+  for (size_t k = 0; k < by_share.size() && k < n; ++k) slots[k] = static_cast<int>(by_share[k]);
   return slots;
 }
 
@@ -112,15 +114,15 @@ shading::source::VertexLitMaterial vertexlit_material(const scenes::Material& ma
 }
 
 ModelLighting light_model(std::span<const LightDesc> lights, const glm::vec3& centroid, const scenes::Material& material,
-                          bool half_lambert, const AveragedLighting& averaged) {
+                          bool half_lambert, const AveragedLighting& averaged, int local_lights) {
   ModelLighting m;
   const std::vector<size_t> significance = shading::source::significance_order(lights, centroid);
-  m.local = local_light_slots(significance, averaged.shares);
+  m.local = local_light_slots(significance, averaged.shares, local_lights);
   // A local light at s x its color folds (1 - s) of itself; every other light folds wholly, in
   // the order of significance (the order fold_lights adds them in).
   shading::source::AmbientCube cube = averaged.volume;
   for (size_t i : significance) {
-    const bool local = static_cast<int>(i) == m.local[0] || static_cast<int>(i) == m.local[1];
+    const bool local = std::find(m.local.begin(), m.local.end(), static_cast<int>(i)) != m.local.end();
     const double weight = local ? 1.0 - double(averaged.shares[i]) : 1.0;
     if (weight > 0.0) shading::source::fold_light(cube, lights[i], centroid, half_lambert, weight);
   }

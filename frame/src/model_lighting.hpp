@@ -1,7 +1,9 @@
 #pragma once
 // Private: what lights a model (docs/fidelity.md#irradiance-volume-and-lights): the ambient cube of the
 // irradiance-volume sample nearest its centroid (or the trilinear blend of the eight around it), its
-// two most significant local lights, every other light folded into that cube on the CPU
+// most significant local lights (two, or FrameSettings::local_lights up to four where its shader
+// takes them: the bumped and skin shaders on ps_2_b and ps_3_0), every other light folded into
+// that cube on the CPU
 // (shading/source/light_folding.hpp: significance = delivered luminance at the centroid, ties by
 // scene order), then the hero boost where the material asks; across the frames of a sequence,
 // the volume's cube and the lights' shares of being local lights time-averaged (renderer.hpp).
@@ -25,8 +27,11 @@
 
 namespace luxel::frame {
 
+/// The most local lights a shader takes (the SDK's bumped and skin shaders on ps_2_b and ps_3_0).
+inline constexpr int kMaxLocalLights = 4;
+
 /// What a model's lighting averages across frames (renderer.hpp): the volume's cube at its
-/// centroid, and per scene light its share of being one of the two local lights.
+/// centroid, and per scene light its share of being one of its local lights.
 struct AveragedLighting {
   shading::source::AmbientCube volume;
   std::vector<float> shares;
@@ -35,8 +40,8 @@ struct AveragedLighting {
 struct ModelLighting {
   shading::source::AmbientCube cube;
   std::array<shading::source::LocalLight, 4> lights{};  ///< the local lights first; the rest black
-  int kept = 0;                                          ///< 0, 1 or 2
-  std::array<int, 2> local{-1, -1};                      ///< the scene lights in the slots, or -1
+  int kept = 0;                                          ///< 0 to kMaxLocalLights
+  std::array<int, kMaxLocalLights> local{-1, -1, -1, -1};  ///< the scene lights in the slots, or -1
 };
 
 /// The scene's lights as the shaders' light descriptions, in scene order.
@@ -46,26 +51,30 @@ std::vector<shading::source::LightDesc> light_descriptions(const scenes::Scene& 
 /// blend of the eight around it; black / white (above) without a volume.
 shading::source::AmbientCube ambient_cube(const scenes::Scene& scene, const glm::vec3& point, AmbientSampling sampling);
 
-/// What the averaging moves towards at `centroid`: the volume's cube there, share 1 for the two
-/// lights the significance rule keeps and 0 for the others.
+/// What the averaging moves towards at `centroid`: the volume's cube there, share 1 for the
+/// `local_lights` lights the significance rule keeps and 0 for the others.
 AveragedLighting lighting_at(const scenes::Scene& scene, std::span<const shading::source::LightDesc> lights,
-                             const glm::vec3& centroid, AmbientSampling sampling);
+                             const glm::vec3& centroid, AmbientSampling sampling, int local_lights);
 
 /// Moves `averaged` towards `target` over `dt` seconds with time constant `tau` (renderer.hpp).
 /// tau <= 0, or a negative dt (the clock went back): `target` itself.
 void step_towards(AveragedLighting& averaged, const AveragedLighting& target, float dt, float tau);
 
-/// The local-light slots for `shares`: the two largest shares above 0, ties to the earlier light
-/// in `significance` (light_folding.hpp's significance_order at the model's centroid).
-std::array<int, 2> local_light_slots(std::span<const size_t> significance, std::span<const float> shares);
+/// The local-light slots for `shares`: the `count` largest shares above 0 (count <=
+/// kMaxLocalLights), ties to the earlier light in `significance` (light_folding.hpp's
+/// significance_order at the model's centroid); the other slots -1.
+std::array<int, kMaxLocalLights> local_light_slots(std::span<const size_t> significance, std::span<const float> shares,
+                                                   int count);
 
 /// The parameters of a VertexLitGeneric material that choose its shader (vertexlit_dispatch.hpp).
 shading::source::VertexLitMaterial vertexlit_material(const scenes::Material& material);
 
 /// The shader's lighting of a model drawn with `material`, from its averaged lighting: the lights
 /// folded into the cube with squared Half-Lambert or Lambert, as the shader the material gets
-/// lights (vertexlit_half_lambert).
+/// lights (vertexlit_half_lambert); at most `local_lights` local lights (the shader's count), the
+/// other lights with a share folded wholly.
 ModelLighting light_model(std::span<const shading::source::LightDesc> lights, const glm::vec3& centroid,
-                          const scenes::Material& material, bool half_lambert, const AveragedLighting& averaged);
+                          const scenes::Material& material, bool half_lambert, const AveragedLighting& averaged,
+                          int local_lights);
 
 }  // namespace luxel::frame

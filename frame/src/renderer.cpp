@@ -235,6 +235,9 @@ void check_settings(const FrameSettings& s) {
                                 std::to_string(kMaxTargetSize) + " (or 0: the default)");
   if (s.exposure && !(std::isfinite(*s.exposure) && *s.exposure > 0.0f))
     throw std::invalid_argument("exposure " + std::to_string(*s.exposure) + " is not a positive finite number");
+  if (s.local_lights < 1 || s.local_lights > kMaxLocalLights)
+    throw std::invalid_argument("local lights " + std::to_string(s.local_lights) + " is outside 1.." +
+                                std::to_string(kMaxLocalLights));
 }
 
 const FrameSettings& checked(const scenes::Scene& scene, const FrameSettings& s) {
@@ -549,13 +552,20 @@ class FrameBuilder {
     const VertexLitMaterial vm = vertexlit_material(m);
     const VertexLitPath path = vertexlit_path(vm, model_);
     const bool half_lambert = vertexlit_half_lambert(vm, path);
+    // Up to four local lights where the SDK's shaders take them (the bumped and skin shaders on
+    // ps_2_b and ps_3_0), two elsewhere; the averaged shares rank FrameSettings::local_lights.
+    const int local_lights = path != VertexLitPath::plain && model_ != shading::ShaderModel::ps_2_0
+                                 ? st_.settings.local_lights
+                                 : std::min(st_.settings.local_lights, 2);
     const ModelLighting lighting =
-        model >= 0 ? light_model(lights_, centroid, m, half_lambert, st_.model_lighting[static_cast<size_t>(model)])
-                   : light_model(lights_, centroid, m, half_lambert, lighting_at(scene_, lights_, centroid, st_.settings.ambient));
+        model >= 0 ? light_model(lights_, centroid, m, half_lambert, st_.model_lighting[static_cast<size_t>(model)], local_lights)
+                   : light_model(lights_, centroid, m, half_lambert,
+                                 lighting_at(scene_, lights_, centroid, st_.settings.ambient, st_.settings.local_lights),
+                                 local_lights);
     if (path == VertexLitPath::plain) return vertexlit_per_vertex(m, lighting, half_lambert, target);
     const bool phong = path == VertexLitPath::skin;
     VertexLitCombo wanted;
-    wanted.lights = lighting.kept > 0 ? 2 : 0;
+    wanted.lights = lighting.kept == 0 ? 0 : lighting.kept <= 2 ? 2 : 4;
     // The skin shader's full path reads a normal map, a flat one when the material has none.
     wanted.bump = phong ? !skin_fast_path(vm) : m.bump.bound();
     wanted.phong = phong;
@@ -686,7 +696,7 @@ void move_models(FrameState& st, float dt) {
     const scenes::Model& model = scene.models[i];
     st.model_offsets[i] = scenes::model_offset(model, st.settings.time);
     const glm::vec3 centroid = model.centroid + st.model_offsets[i];
-    const AveragedLighting target = lighting_at(scene, lights, centroid, st.settings.ambient);
+    const AveragedLighting target = lighting_at(scene, lights, centroid, st.settings.ambient, st.settings.local_lights);
     step_towards(st.model_lighting[i], target, dt, st.settings.lighting_time_constant);
     ModelLightingState& state = st.model_states[i];
     state.model = model.name;
@@ -694,7 +704,8 @@ void move_models(FrameState& st, float dt) {
     state.volume = st.model_lighting[i].volume.color;
     state.light_shares = st.model_lighting[i].shares;
     state.local_lights.clear();
-    for (int l : local_light_slots(shading::source::significance_order(lights, centroid), st.model_lighting[i].shares))
+    for (int l : local_light_slots(shading::source::significance_order(lights, centroid), st.model_lighting[i].shares,
+                                   st.settings.local_lights))
       if (l >= 0) state.local_lights.push_back(l);
   }
   st.views_current = false;

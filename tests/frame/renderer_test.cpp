@@ -251,6 +251,86 @@ TEST(Renderer, BaseMapAlphaPhongMaskDropsTheNormalMapFromPs2b) {
       << "without the flag the normal map shows";
 }
 
+/// `s` with four point lights close around the square and its first material bumped (a flat
+/// normal map): more lights than the default two local ones.
+scenes::Scene four_lights_near(scenes::Scene s) {
+  s.lights.clear();
+  const glm::vec3 at[4] = {{0.9f, 0.2f, 0.5f}, {-0.8f, 0.3f, 0.6f}, {0.1f, 0.9f, 0.4f}, {-0.2f, -0.9f, 0.7f}};
+  const glm::vec3 color[4] = {{0.3f, 0.2f, 0.1f}, {0.1f, 0.2f, 0.3f}, {0.2f, 0.1f, 0.05f}, {0.05f, 0.1f, 0.2f}};
+  for (int i = 0; i < 4; ++i) {
+    scenes::Light l;
+    l.position = at[i];
+    l.color = color[i];
+    s.lights.push_back(l);
+  }
+  return s;
+}
+
+rasterizer::Image render_with_lights(const scenes::Scene& s, shading::ShaderModel model, int local_lights,
+                                     std::vector<ShaderUse>* uses = nullptr) {
+  FrameSettings f{kRendererSize, kRendererSize, 4};
+  f.model = model;
+  f.local_lights = local_lights;
+  f.count_shading = uses != nullptr;
+  Renderer r(s, f);
+  rasterizer::Context ctx(2);
+  r.render(ctx);
+  if (uses) *uses = r.shader_uses();
+  return r.image();
+}
+
+// FrameSettings::local_lights (--lights 4): the SDK 2013's bumped and skin shaders take up to four
+// lights on ps_2_b and ps_3_0; two stay the default, ps_2_0 and the per-vertex path take two.
+TEST(Renderer, FourLocalLightsOnBumpedModelsFromPs2b) {
+  scenes::Scene bumped = four_lights_near(lit_by_cube_and_sun(false));
+  add_flat_bump_map(bumped);
+  std::vector<ShaderUse> uses;
+  const rasterizer::Image four = render_with_lights(bumped, shading::ShaderModel::ps_2_b, 4, &uses);
+  ASSERT_FALSE(uses.empty());
+  EXPECT_EQ(uses[0].combo.rfind("4 lights", 0), 0u) << uses[0].combo;
+  int moved = 0;
+  const rasterizer::Image two = render_with_lights(bumped, shading::ShaderModel::ps_2_b, 2);
+  for (size_t i = 0; i < four.rgba.size(); ++i) moved += std::abs(int(four.rgba[i]) - int(two.rgba[i])) > 2;
+  EXPECT_GT(moved, 100) << "the two least significant lights, local instead of folded, light the square differently";
+  EXPECT_TRUE(render_with_lights(bumped, shading::ShaderModel::ps_3_0, 4).rgba == four.rgba) << "ps_3_0 as ps_2_b";
+  EXPECT_TRUE(render_with_lights(bumped, shading::ShaderModel::ps_2_0, 4).rgba ==
+              render_with_lights(bumped, shading::ShaderModel::ps_2_0, 2).rgba)
+      << "ps_2_0 takes two";
+  const scenes::Scene plain = four_lights_near(lit_by_cube_and_sun(false));
+  EXPECT_TRUE(render_with_lights(plain, shading::ShaderModel::ps_2_b, 4).rgba ==
+              render_with_lights(plain, shading::ShaderModel::ps_2_b, 2).rgba)
+      << "the non-bumped vertex shader takes two";
+  EXPECT_THROW(render_with_lights(bumped, shading::ShaderModel::ps_2_b, 5), std::invalid_argument);
+}
+
+// The four-light path itself against double math: four directional lights on the flat bumped
+// square (the normal map's 8-bit flat texel, as the shader reads it), Lambert, the cube's +Z side.
+TEST(Renderer, FourDirectionalLightsSumOnTheBumpedPath) {
+  scenes::Scene s = lit_by_cube_and_sun(false);
+  add_flat_bump_map(s);
+  s.lights.clear();
+  const glm::dvec3 from[4] = {{0.6, 0.0, 0.8}, {-0.6, 0.0, 0.8}, {0.0, 0.6, 0.8}, {0.0, -0.48, 0.64}};
+  const glm::dvec3 color[4] = {{0.3, 0.2, 0.1}, {0.1, 0.2, 0.3}, {0.2, 0.1, 0.05}, {0.05, 0.1, 0.2}};
+  for (int i = 0; i < 4; ++i) {
+    scenes::Light l;
+    l.type = scenes::LightType::directional;
+    l.direction = -glm::normalize(glm::vec3(from[i]));
+    l.color = glm::vec3(color[i]);
+    s.lights.push_back(l);
+  }
+  const double t = 2.0 * 128.0 / 255.0 - 1.0;
+  const glm::dvec3 n = glm::normalize(glm::dvec3(t, t, 1.0));
+  const double albedo[3] = {0.8, 0.6, 0.4}, cube[3] = {0.5, 0.25, 0.125};
+  double expected[3];
+  for (int c = 0; c < 3; ++c) {
+    double lit = cube[c];
+    for (int i = 0; i < 4; ++i) lit += color[i][c] * std::max(0.0, glm::dot(n, glm::normalize(from[i])));
+    expected[c] = 255 * srgb_encode(albedo[c] * lit);
+  }
+  for (shading::ShaderModel model : {shading::ShaderModel::ps_2_b, shading::ShaderModel::ps_3_0})
+    expect_everywhere(render_with_lights(s, model, 4), 0, kRendererSize, expected, shading::caps(model).name.data());
+}
+
 /// Four constant lightmaps (flat, then the three basis maps) attached to `s`.
 void attach_lightmaps(scenes::Scene& s, const glm::vec3& flat, const glm::vec3 (&basis)[3]) {
   scenes::Lightmaps maps;

@@ -68,6 +68,10 @@ struct FrameSettings {
   /// vertex as the SDK's bumped and skin shaders do on every model (luxel's option: a light close
   /// to a coarse mesh is not smeared across its triangles; `luxel report`, vertex_lighting).
   bool pixel_attenuation = false;
+  /// The most significant lights a model takes as local lights, 1 to 4, the others folded into its
+  /// ambient cube: 2 (the seed's rule) by default; up to 4 where the SDK's shaders take them (the
+  /// bumped and skin shaders on ps_2_b and ps_3_0; elsewhere two at most).
+  int local_lights = 2;
   /// Added to the mip LOD of every texture a material, the sky, a reflection or a water normal reads
   /// (D3DSAMP_MIPMAPLODBIAS): log2(k) draws a frame k times larger with the textures at the mips
   /// of the frame k times smaller (`luxel report`'s MSAA references).
@@ -126,7 +130,7 @@ struct ModelLightingState {
   glm::vec3 centroid{0.0f};            ///< where its lighting was sampled: its centroid moved along its path
   std::array<glm::vec3, 6> volume{};   ///< the averaged irradiance-volume cube, +X, -X, +Y, -Y, +Z, -Z
   std::vector<float> light_shares;     ///< per scene light: its averaged share of being a local light
-  std::vector<int> local_lights;       ///< the scene lights drawn as its local lights (at most two), in slot order
+  std::vector<int> local_lights;       ///< the scene lights ranked as its local lights (FrameSettings::local_lights), in slot order
 };
 
 /// One pass of the last frame and its wall time (FrameSettings::time_passes).
