@@ -266,17 +266,11 @@ scenes::Scene four_lights_near(scenes::Scene s) {
   return s;
 }
 
-rasterizer::Image render_with_lights(const scenes::Scene& s, shading::ShaderModel model, int local_lights,
-                                     std::vector<ShaderUse>* uses = nullptr) {
+rasterizer::Image render_with_lights(const scenes::Scene& s, shading::ShaderModel model, int local_lights) {
   FrameSettings f{kRendererSize, kRendererSize, 4};
   f.model = model;
   f.local_lights = local_lights;
-  f.count_shading = uses != nullptr;
-  Renderer r(s, f);
-  rasterizer::Context ctx(2);
-  r.render(ctx);
-  if (uses) *uses = r.shader_uses();
-  return r.image();
+  return render_frame(s, f);
 }
 
 // FrameSettings::local_lights (--lights 4): the SDK 2013's bumped and skin shaders take up to four
@@ -284,10 +278,16 @@ rasterizer::Image render_with_lights(const scenes::Scene& s, shading::ShaderMode
 TEST(Renderer, FourLocalLightsOnBumpedModelsFromPs2b) {
   scenes::Scene bumped = four_lights_near(lit_by_cube_and_sun(false));
   add_flat_bump_map(bumped);
-  std::vector<ShaderUse> uses;
-  const rasterizer::Image four = render_with_lights(bumped, shading::ShaderModel::ps_2_b, 4, &uses);
-  ASSERT_FALSE(uses.empty());
-  EXPECT_EQ(uses[0].combo.rfind("4 lights", 0), 0u) << uses[0].combo;
+  FrameSettings counted{kRendererSize, kRendererSize, 4};
+  counted.model = shading::ShaderModel::ps_2_b;
+  counted.local_lights = 4;
+  counted.count_shading = true;
+  Renderer r(bumped, counted);
+  rasterizer::Context ctx(2);
+  r.render(ctx);
+  ASSERT_FALSE(r.shader_uses().empty());
+  EXPECT_EQ(r.shader_uses()[0].combo.rfind("4 lights", 0), 0u) << r.shader_uses()[0].combo;
+  const rasterizer::Image& four = r.image();
   int moved = 0;
   const rasterizer::Image two = render_with_lights(bumped, shading::ShaderModel::ps_2_b, 2);
   for (size_t i = 0; i < four.rgba.size(); ++i) moved += std::abs(int(four.rgba[i]) - int(two.rgba[i])) > 2;
