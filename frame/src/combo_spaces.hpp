@@ -75,7 +75,10 @@ inline constexpr auto kLightmappedSpace = compact<kLightmappedAll>();
 /// the ambient cube (SH9 is a ps_3_0 option the frame does not take); unfogged, each model's range
 /// fog or the height fog of the view through water; the normalization cube map exactly on ps_2_0.
 /// Without lights, Half-Lambert and attenuation change nothing, so only one of each is compiled.
-inline constexpr auto kVertexLitAll = [] {
+/// Each with and without an env map (the bumped path's masked by the normal map's alpha or not).
+/// `envmap` selects the half: the draws of each compile in their own file.
+template <class Keep>
+constexpr auto vertexlit_combos(Keep keep) {
   ComboList<VertexLitCombo, 1024> l;
   for (int lights : {0, 2, 4})
     for (bool bump : {false, true})
@@ -84,21 +87,28 @@ inline constexpr auto kVertexLitAll = [] {
           for (bool half_lambert : {false, true})
             for (bool pixel_attenuation : {false, true})
               for (Fog fog : {Fog::none, Fog::range, Fog::vertex_range, Fog::height})
-                for (bool cube : {false, true}) {
-                  if (lights == 0 && !(half_lambert && pixel_attenuation)) continue;
-                  if (!bump && !phong) continue;
-                  const VertexLitCombo c{lights, bump, phong, rim, half_lambert, pixel_attenuation, false, fog, cube};
-                  bool on_some_model = false;
-                  for (shading::ShaderModel m : kPixelModels) on_some_model = on_some_model || c.valid(m);
-                  if (on_some_model) l.add(c);
-                }
+                for (bool cube : {false, true})
+                  for (auto [envmap, normal_alpha] : {std::pair{false, false}, std::pair{true, false}, std::pair{true, true}}) {
+                    if (lights == 0 && !(half_lambert && pixel_attenuation)) continue;
+                    if (!bump && !phong) continue;
+                    const VertexLitCombo c{lights, bump, phong, rim, half_lambert, pixel_attenuation, false, fog, cube, envmap,
+                                           normal_alpha};
+                    bool on_some_model = false;
+                    for (shading::ShaderModel m : kPixelModels) on_some_model = on_some_model || c.valid(m);
+                    if (on_some_model && keep(c)) l.add(c);
+                  }
   return l;
-}();
+}
+inline constexpr auto kVertexLitAll = vertexlit_combos([](const VertexLitCombo&) { return true; });
 inline constexpr auto kVertexLitSpace = compact<kVertexLitAll>();
+inline constexpr auto kVertexLitPlainAll = vertexlit_combos([](const VertexLitCombo& c) { return !c.envmap; });
+inline constexpr auto kVertexLitPlainSpace = compact<kVertexLitPlainAll>();
+inline constexpr auto kVertexLitEnvmapAll = vertexlit_combos([](const VertexLitCombo& c) { return c.envmap; });
+inline constexpr auto kVertexLitEnvmapSpace = compact<kVertexLitEnvmapAll>();
 
 /// Base texture x $color, with or without vertex color and an env map (each mask), and
-/// VertexLitGeneric without a bump map (DIFFUSELIGHTING: x the vertex shader's lighting; no env
-/// map on models yet); unfogged, each model's range fog or the height fog of the view through
+/// VertexLitGeneric without a bump map (DIFFUSELIGHTING: x the vertex shader's lighting), with or
+/// without an env map; unfogged, each model's range fog or the height fog of the view through
 /// water. No detail texture yet (the adapter does not feed its coordinate).
 inline constexpr auto kUnlitAll = [] {
   ComboList<UnlitCombo, 64> l;
@@ -107,7 +117,6 @@ inline constexpr auto kUnlitAll = [] {
       for (bool vertex_color : {false, true})
         for (bool diffuse_lighting : {false, true})
           for (Fog fog : {Fog::none, Fog::range, Fog::vertex_range, Fog::height}) {
-            if (diffuse_lighting && envmap) continue;
             const UnlitCombo c{UnlitDetail::none, envmap, mask, vertex_color, diffuse_lighting, fog};
             if (c.valid()) l.add(c);
           }

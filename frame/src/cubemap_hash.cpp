@@ -12,7 +12,7 @@ namespace luxel::frame {
 namespace {
 
 /// Raised when what a capture draws or how cubes are made changes, so that kept cubes re-bake.
-constexpr int kCubemapFormatVersion = 1;
+constexpr int kCubemapFormatVersion = 2;
 
 void hash_ref(scenes::ContentHash& h, const scenes::TextureRef& r) { h.values(r.texture, r.uv_set, r.offset, r.scale, r.rotation); }
 
@@ -37,7 +37,7 @@ uint64_t cubemap_input_hash(const scenes::Scene& scene, const CubemapSettings& s
   h.value(scene.materials.size());
   for (const scenes::Material& m : scene.materials) {
     h.values(m.family, m.color, m.detail_scale, m.detail_blend, m.envmap, m.envmap_mask, m.envmap_tint, m.envmap_contrast,
-             m.envmap_saturation, m.fresnel_reflection, m.self_illum, m.self_illum_tint, m.emissive, m.alpha,
+             m.envmap_saturation, m.envmap_fresnel, m.fresnel_reflection, m.self_illum, m.self_illum_tint, m.emissive, m.alpha,
              m.alpha_cutoff, m.translucent, m.double_sided, m.linear_write);
     h.values(m.phong, m.phong_exponent, m.phong_boost, m.phong_fresnel_ranges, m.phong_tint, m.base_map_alpha_phong_mask,
              m.rim, m.rim_exponent, m.rim_boost, m.rim_mask, m.half_lambert, m.hero_boost);

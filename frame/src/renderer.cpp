@@ -9,6 +9,7 @@
 
 #include "luxel/frame/look.hpp"
 #include "luxel/frame/textures.hpp"
+#include "luxel/frame/world_envmaps.hpp"
 #include "luxel/postfx/bloom_amount.hpp"
 #include "luxel/postfx/full_frame.hpp"
 #include "luxel/rasterizer/framebuffer.hpp"
@@ -181,6 +182,7 @@ struct FrameState {
   std::optional<GpuTexture> normalization_cube;
   std::vector<GpuTexture> sky_faces;
   std::vector<std::unique_ptr<scenes::Mesh>> completed_meshes;  // per mesh: given the tangents the frame needed
+  std::vector<std::unique_ptr<std::vector<EnvmapFaceGroup>>> envmap_groups;  // per world mesh reflecting samples
   std::vector<std::unique_ptr<VertexSetup>> vertex_setups;
   struct SkyQuads {
     glm::vec3 positions[24];
@@ -348,10 +350,12 @@ class FrameBuilder {
     }
     if (needs_tangents(m) && mesh->tangents.empty()) mesh = &with_tangents(index);
     pass.geometry = geometry_of(*mesh);
+    if (m.family == scenes::ShaderFamily::lightmapped_generic && m.envmap == scenes::EnvmapSource::nearest_sample)
+      return add_reflecting_world(index, *mesh, m, offset, std::move(pass));
     DrawTarget target{pass.state, pass.geometry, vertex_setup(*mesh, m, offset), st_.settings.count_shading,
                       view_.water_fog && !translucent(m) && m.alpha == scenes::AlphaMode::opaque};
     switch (m.family) {
-      case scenes::ShaderFamily::lightmapped_generic: pass.source = lightmapped(index, *mesh, m, target); break;
+      case scenes::ShaderFamily::lightmapped_generic: pass.source = lightmapped(*mesh, m, target, envmap_of(m, index)); break;
       case scenes::ShaderFamily::vertexlit_generic: pass.source = vertexlit(index, *mesh, m, target); break;
       case scenes::ShaderFamily::unlit_generic: pass.source = unlit(index, *mesh, m, target); break;
       case scenes::ShaderFamily::water: {
@@ -365,6 +369,30 @@ class FrameBuilder {
       case scenes::ShaderFamily::sky: return;
     }
     queue(m, index, std::move(pass));
+  }
+
+  /// A LightmappedGeneric mesh reflecting the samples (`env_cubemap`): one draw per sample its
+  /// face groups reflect (world_envmaps.hpp); none without samples, as the engine draws it.
+  void add_reflecting_world(size_t index, const scenes::Mesh& mesh, const scenes::Material& m, const glm::vec3& offset,
+                            Pass pass) {
+    std::unique_ptr<std::vector<EnvmapFaceGroup>>& groups = st_.envmap_groups[index];
+    if (!groups) groups = std::make_unique<std::vector<EnvmapFaceGroup>>(envmap_face_groups(mesh, scene_.cubemap_samples));
+    if (groups->empty()) {
+      DrawTarget target{pass.state, pass.geometry, vertex_setup(mesh, m, offset), st_.settings.count_shading,
+                        view_.water_fog && !translucent(m) && m.alpha == scenes::AlphaMode::opaque};
+      pass.source = lightmapped(mesh, m, target, nullptr);
+      queue(m, index, std::move(pass));
+      return;
+    }
+    for (const EnvmapFaceGroup& group : *groups) {
+      Pass part;
+      part.state = pass.state;
+      part.geometry = Geometry::indexed(std::span<const uint32_t>(group.indices), static_cast<uint32_t>(mesh.vertex_count()));
+      DrawTarget target{part.state, part.geometry, vertex_setup(mesh, m, offset), st_.settings.count_shading,
+                        view_.water_fog && !translucent(m) && m.alpha == scenes::AlphaMode::opaque};
+      part.source = lightmapped(mesh, m, target, sample_cube(group.sample));
+      queue(m, index, std::move(part));
+    }
   }
 
   void add_sky() {
@@ -486,35 +514,45 @@ class FrameBuilder {
   /// A material's, the sky's or a reflection's sampler with FrameSettings::texture_lod_bias.
   rasterizer::Sampler biased(const rasterizer::Sampler& s) const { return with_lod_bias(s, st_.settings.texture_lod_bias); }
 
-  /// The cube a material reflects (renderer.hpp), or null for none.
+  /// Scene texture `t` if it is a cube, else null.
+  const GpuTexture* cube_at(int t) const {
+    if (t < 0 || scene_.textures[static_cast<size_t>(t)].shape != scenes::TextureShape::cube) return nullptr;
+    return &st_.textures[static_cast<size_t>(t)];
+  }
+
+  /// The cube of cube-map sample `s`: its baked cube, or the sky while it has none or while the
+  /// frame captures the samples' cubes (docs/fidelity.md#env-maps-on-world-surfaces).
+  const GpuTexture* sample_cube(int s) const {
+    const int baked = scene_.cubemap_samples[static_cast<size_t>(s)].texture;
+    return baked >= 0 && !st_.settings.cubemap_capture ? cube_at(baked) : cube_at(scene_.sky_texture);
+  }
+
+  /// The cube a mesh reflects, or null for none: with `env_cubemap`, the sample nearest the mesh's
+  /// centre, else the sky (world meshes reflect per face group: add_reflecting_world).
   const GpuTexture* envmap_of(const scenes::Material& m, size_t index) const {
-    auto cube_at = [&](int t) -> const GpuTexture* {
-      if (t < 0 || scene_.textures[static_cast<size_t>(t)].shape != scenes::TextureShape::cube) return nullptr;
-      return &st_.textures[static_cast<size_t>(t)];
-    };
     switch (m.envmap) {
       case scenes::EnvmapSource::none: return nullptr;
       case scenes::EnvmapSource::texture: return cube_at(m.envmap_texture.texture);
       case scenes::EnvmapSource::nearest_sample: {
         const glm::vec3 c = mesh_center(scene_.meshes[index], offset_of(index));
-        const scenes::CubemapSample* best = nullptr;
-        for (const scenes::CubemapSample& s : scene_.cubemap_samples)
-          if (s.texture >= 0 && !st_.settings.cubemap_capture &&
-              (!best || glm::distance(s.position, c) < glm::distance(best->position, c)))
-            best = &s;
-        return best ? cube_at(best->texture) : cube_at(scene_.sky_texture);
+        int best = -1;
+        for (size_t i = 0; i < scene_.cubemap_samples.size(); ++i)
+          if (best < 0 || glm::distance(scene_.cubemap_samples[i].position, c) <
+                              glm::distance(scene_.cubemap_samples[size_t(best)].position, c))
+            best = int(i);
+        return best >= 0 ? sample_cube(best) : cube_at(scene_.sky_texture);
       }
     }
     return nullptr;
   }
 
-  SourceDraw lightmapped(size_t index, const scenes::Mesh& mesh, const scenes::Material& m, const DrawTarget& target) {
+  /// A LightmappedGeneric draw reflecting `env` (none: null).
+  SourceDraw lightmapped(const scenes::Mesh& mesh, const scenes::Material& m, const DrawTarget& target, const GpuTexture* env) {
     if (!st_.lightmaps)
       throw std::invalid_argument(scene_.name + ": mesh '" + mesh.name +
                                   "' is LightmappedGeneric and the scene has no baked lightmaps (luxel bake)");
     if (mesh.uv1.empty())
       throw std::invalid_argument(scene_.name + ": mesh '" + mesh.name + "' is LightmappedGeneric and has no lightmap coordinates (uv1)");
-    const GpuTexture* env = envmap_of(m, index);
     LightmappedMaterial lm;
     lm.bump = m.bump.bound();
     lm.envmap = env != nullptr;
@@ -562,7 +600,8 @@ class FrameBuilder {
                    : light_model(lights_, centroid, m, half_lambert,
                                  lighting_at(scene_, lights_, centroid, st_.settings.ambient, st_.settings.local_lights),
                                  local_lights);
-    if (path == VertexLitPath::plain) return vertexlit_per_vertex(m, lighting, half_lambert, target);
+    const GpuTexture* env = envmap_of(m, index);
+    if (path == VertexLitPath::plain) return vertexlit_per_vertex(m, env, lighting, half_lambert, target);
     const bool phong = path == VertexLitPath::skin;
     VertexLitCombo wanted;
     wanted.lights = lighting.kept == 0 ? 0 : lighting.kept <= 2 ? 2 : 4;
@@ -574,6 +613,11 @@ class FrameBuilder {
     wanted.pixel_attenuation = st_.settings.pixel_attenuation;
     wanted.fog = fog_;
     wanted.normalization_cube = model_ == shading::ShaderModel::ps_2_0;
+    // The bumped path's NORMALMAPALPHAENVMAPMASK is a static combo, the skin shader's a constant;
+    // other masks on a bumped material lose the env map, which scenes::validate refuses.
+    const bool normal_alpha_mask = m.envmap_mask == scenes::EnvmapMask::normal_alpha && m.bump.bound();
+    wanted.envmap = env != nullptr;
+    wanted.envmap_normal_alpha = wanted.envmap && !phong && normal_alpha_mask;
     const std::optional<VertexLitCombo> combo = fitting_vertexlit_combo(wanted, model_);
     if (!combo)
       throw std::invalid_argument(scene_.name + ": material '" + m.name + "': no VertexLitGeneric combo " + wanted.name() +
@@ -591,6 +635,11 @@ class FrameBuilder {
         glm::vec4(phong_exponent_constant(m.phong_exponent), std::max(m.rim_exponent, 1.0f), m.rim_boost, m.rim_mask ? 1.0f : 0.0f);
     p.base_map_alpha_phong_mask.x = m.base_map_alpha_phong_mask ? 1.0f : 0.0f;
     p.fresnel_ranges = encode_fresnel_ranges(m.phong_fresnel_ranges.x, m.phong_fresnel_ranges.y, m.phong_fresnel_ranges.z);
+    if (env) p.envmap = SamplerCube{8, &env->texture, biased(env->sampler)};
+    p.envmap_tint = glm::vec4(m.envmap_tint, phong && normal_alpha_mask ? 1.0f : 0.0f);
+    p.envmap_fresnel.x = m.envmap_fresnel;
+    p.envmap_contrast = glm::vec4(m.envmap_contrast);
+    p.envmap_saturation = glm::vec4(m.envmap_saturation);
     p.tonemap = tonemap_;
     p.fog = fog_constants_;
     if (combo->normalization_cube) {
@@ -603,9 +652,10 @@ class FrameBuilder {
 
   /// VertexLitGeneric without a bump map (vertexlit_and_unlit_generic_vs20 / _ps2x with
   /// DIFFUSELIGHTING): the vertex shader lights each vertex with the ambient cube and the kept
-  /// lights, the pixel shader multiplies the albedo by the interpolated result.
-  SourceDraw vertexlit_per_vertex(const scenes::Material& m, const ModelLighting& lighting, bool half_lambert,
-                                  const DrawTarget& target) {
+  /// lights, the pixel shader multiplies the albedo by the interpolated result and adds the env
+  /// map `env` (none: null).
+  SourceDraw vertexlit_per_vertex(const scenes::Material& m, const GpuTexture* env, const ModelLighting& lighting,
+                                  bool half_lambert, const DrawTarget& target) {
     VertexLitVsCombo vs;
     vs.lights = lighting.kept > 0 ? 2 : 0;
     vs.half_lambert = half_lambert || vs.lights == 0;
@@ -616,25 +666,23 @@ class FrameBuilder {
     target.vertex->vertex_lighting_params.lights = lighting.lights;
     UnlitCombo combo;
     combo.diffuse_lighting = true;
-    combo.fog = fog_;
-    UnlitGenericParams p;
-    p.base = sampler2d(0, m.base);
-    p.modulation = m.color;
-    p.tonemap = tonemap_;
-    p.fog = fog_constants_;
-    return unlit_draw(combo, model_, target, p, eye_);
+    return unlit_draw(generic_envmap(combo, m, env), model_, target, generic_params(m, env), eye_);
   }
 
-  SourceDraw unlit(size_t index, const scenes::Mesh& mesh, const scenes::Material& m, const DrawTarget& target) {
-    const GpuTexture* env = envmap_of(m, index);
-    UnlitCombo combo;
+  /// The combo of vertexlit_and_unlit_generic_ps2x.fxc: `combo` with the env map `env` (none:
+  /// null), masked as the helper leaves the material's flags (no $basealphaenvmapmask over an
+  /// opaque base; no $normalmapalphaenvmapmask without tangent space), and the frame's fog.
+  UnlitCombo generic_envmap(UnlitCombo combo, const scenes::Material& m, const GpuTexture* env) const {
     combo.envmap = env != nullptr;
-    if (combo.envmap)
-      combo.mask = m.envmap_mask == scenes::EnvmapMask::texture      ? UnlitEnvmapMask::texture
-                   : m.envmap_mask == scenes::EnvmapMask::base_alpha ? UnlitEnvmapMask::base_alpha_inverted
-                                                                     : UnlitEnvmapMask::none;
-    combo.vertex_color = !mesh.colors.empty();
+    const bool base_translucent = m.base.bound() && st_.textures[static_cast<size_t>(m.base.texture)].translucent;
+    if (combo.envmap && m.envmap_mask == scenes::EnvmapMask::texture) combo.mask = UnlitEnvmapMask::texture;
+    if (combo.envmap && m.envmap_mask == scenes::EnvmapMask::base_alpha && base_translucent)
+      combo.mask = UnlitEnvmapMask::base_alpha_inverted;
     combo.fog = fog_;
+    return combo;
+  }
+
+  UnlitGenericParams generic_params(const scenes::Material& m, const GpuTexture* env) const {
     UnlitGenericParams p;
     p.base = sampler2d(0, m.base);
     if (env) p.envmap = SamplerCube{1, &env->texture, biased(env->sampler)};
@@ -645,7 +693,14 @@ class FrameBuilder {
     p.envmap_saturation = glm::vec4(m.envmap_saturation);
     p.tonemap = tonemap_;
     p.fog = fog_constants_;
-    return unlit_draw(combo, model_, target, p, eye_);
+    return p;
+  }
+
+  SourceDraw unlit(size_t index, const scenes::Mesh& mesh, const scenes::Material& m, const DrawTarget& target) {
+    const GpuTexture* env = envmap_of(m, index);
+    UnlitCombo combo;
+    combo.vertex_color = !mesh.colors.empty();
+    return unlit_draw(generic_envmap(combo, m, env), model_, target, generic_params(m, env), eye_);
   }
 
   void queue(const scenes::Material& m, size_t index, Pass pass) {
@@ -748,6 +803,7 @@ Renderer::Renderer(const scenes::Scene& scene, const FrameSettings& settings, st
     throw std::invalid_argument("lighting time constant " + std::to_string(settings.lighting_time_constant) +
                                 " is not a finite number >= 0");
   st.completed_meshes.resize(scene.meshes.size());
+  st.envmap_groups.resize(scene.meshes.size());
   st.exposure = frame_exposure(scene, settings);
   if (uses_auto_exposure(scene, settings)) st.auto_exposure.emplace(auto_exposure_settings(frame_controls(scene, settings), settings));
   if (!settings.cubemap_capture) {

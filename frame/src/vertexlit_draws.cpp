@@ -1,8 +1,7 @@
-// VertexLitGeneric draws (source_draws.hpp): the frame's combo space of models, per pixel.
+// VertexLitGeneric draws (source_draws.hpp): the frame's combo space of models lit per pixel;
+// here those without an env map (vertexlit_draw_in.hpp).
 
-#include "combo_slots.hpp"
-#include "combo_spaces.hpp"
-#include "source_draws.hpp"
+#include "vertexlit_draw_in.hpp"
 
 namespace luxel::frame {
 
@@ -20,14 +19,8 @@ std::optional<VertexLitCombo> fitting_vertexlit_combo(VertexLitCombo wanted, sha
 
 SourceDraw vertexlit_draw(const VertexLitCombo& combo, shading::ShaderModel model, const DrawTarget& target,
                           const VertexLitParams& params) {
-  SourceDraw d;
-  const bool found = detail::with_combo<detail::kVertexLitSpace>(combo, [&]<VertexLitCombo C>() {
-    VertexLitPixelShader<C> ps{params};
-    const shading::ShaderModel binary = detail::binary_for(C, model);
-    d = detail::make_source_draw(ps, target, "VertexLitGeneric", C.name(), binary, detail::vertexlit_slots(C, binary));
-  });
-  if (!found) detail::outside_space("VertexLitGeneric", combo.name());
-  return d;
+  if (combo.envmap) return detail::vertexlit_envmap_draw(combo, model, target, params);
+  return detail::vertexlit_draw_in<detail::kVertexLitPlainSpace>(combo, model, target, params);
 }
 
 }  // namespace luxel::frame

@@ -327,6 +327,7 @@ Scene make_courtyard() {
   hero.envmap = EnvmapSource::nearest_sample;
   hero.envmap_mask = EnvmapMask::normal_alpha;
   hero.envmap_tint = glm::vec3(0.3f);
+  hero.envmap_fresnel = 1.0f;
   const int hero_m = b.material(hero);
   Material crate;
   crate.name = "courtyard/crate";

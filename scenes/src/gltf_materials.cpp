@@ -22,6 +22,7 @@ struct TextureKey { const char* key; TextureRef Material::*member; ColorSpace co
 constexpr FloatKey kFloats[] = {
     {"detailscale", &Material::detail_scale},         {"detailblendfactor", &Material::detail_blend},
     {"envmapcontrast", &Material::envmap_contrast},   {"envmapsaturation", &Material::envmap_saturation},
+    {"envmapfresnel", &Material::envmap_fresnel},
     {"fresnelreflection", &Material::fresnel_reflection}, {"phongexponent", &Material::phong_exponent},
     {"phongboost", &Material::phong_boost},           {"rimlightexponent", &Material::rim_exponent},
     {"rimlightboost", &Material::rim_boost},          {"heroboost", &Material::hero_boost},

@@ -97,6 +97,7 @@ void check_material_numbers(const Scene& scene, const Material& m, const std::st
       {"envmaptint", {m.envmap_tint.r, m.envmap_tint.g, m.envmap_tint.b}},
       {"envmapcontrast", {m.envmap_contrast}},
       {"envmapsaturation", {m.envmap_saturation}},
+      {"envmapfresnel", {m.envmap_fresnel}},
       {"fresnelreflection", {m.fresnel_reflection}},
       {"phongexponent", {m.phong_exponent}},
       {"phongboost", {m.phong_boost}},
@@ -216,6 +217,13 @@ void validate(const Scene& scene) {
       fail(scene, where + " is LightmappedGeneric with $bumpmap and $basealphaenvmapmask over a base texture with alpha, "
                           "a combo the SDK never compiles (SKIP $BASEALPHAENVMAPMASK && $BUMPMAP); use "
                           "$normalmapalphaenvmapmask");
+    // vertexlitgeneric_dx9_helper.cpp's InitParams deletes the env map of a bumped material masked
+    // by its base alpha or an $envmapmask (with a warning): the engine draws none.
+    if (m.family == ShaderFamily::vertexlit_generic && m.envmap != EnvmapSource::none && m.bump.bound() &&
+        (m.envmap_mask == EnvmapMask::base_alpha || m.envmap_mask == EnvmapMask::texture))
+      fail(scene, where + " is VertexLitGeneric with $bumpmap and an env map masked by " +
+                      (m.envmap_mask == EnvmapMask::base_alpha ? "$basealphaenvmapmask" : "$envmapmask") +
+                      ", whose env map the SDK deletes; use $normalmapalphaenvmapmask or no mask");
   }
   if (!finite(scene.background)) fail(scene, "the background color is not finite");
   if (!finite(scene.fog.color) || !std::isfinite(scene.fog.start) || !std::isfinite(scene.fog.end) ||

@@ -187,7 +187,7 @@ void add_vertexlit(std::vector<ShaderVariant>& out) {
       in.binormal = float3<L>(get(21), get(22), get(23));
       in.attenuation = float4<L>(get(24), get(25), get(26), get(27));
       in.proj_z = get(28);
-      return vertexlit_combine<C>(t, in, p);
+      return vertexlit_combine<C>(t, in, p, [](const float3<L>& r) { return r * r; });
     };
     out.push_back(variant("VertexLitGeneric", "vertexlit", C, C.builds(), 29, shade,
                           [](ShaderModel m) { return measure_vertexlit_generic<C>(m); }));

@@ -101,9 +101,9 @@ uint64_t fnv1a(const std::vector<uint8_t>& bytes) {
 // drawn, and the same without its passes on the finished image (bloom, color correction).
 TEST(FrameDeterminism, CourtyardGoldenHashes) {
   const struct { shading::ShaderModel model; uint64_t hash, without_post; } golden[] = {
-      {shading::ShaderModel::ps_2_0, 0xe56b0fc3321f32c9ull, 0xd6c106bba75c62bdull},
-      {shading::ShaderModel::ps_2_b, 0x02aa24aabc26070eull, 0x64063b1fd9bfde81ull},
-      {shading::ShaderModel::ps_3_0, 0x02aa24aabc26070eull, 0x64063b1fd9bfde81ull},
+      {shading::ShaderModel::ps_2_0, 0xedde575392d7528dull, 0xbb1f0e5be1f1d6b9ull},
+      {shading::ShaderModel::ps_2_b, 0xedc49ee8fc4a1849ull, 0xd9366270ba0fc728ull},
+      {shading::ShaderModel::ps_3_0, 0xedc49ee8fc4a1849ull, 0xd9366270ba0fc728ull},
   };
   // ps_2_b and ps_3_0 run the same combos on the courtyard (no combo there needs more than
   // ps_2_b offers), hence the same bytes.

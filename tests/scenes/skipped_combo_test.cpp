@@ -2,6 +2,8 @@
 // alpha asks for a combo the SDK never compiles (lightmappedgeneric_ps2_3_x.h: SKIP
 // $BASEALPHAENVMAPMASK && $BUMPMAP; docs/fidelity.md#lightmappedgeneric): validate() refuses it,
 // naming the material. Over an opaque base the helper drops the flag, so the scene is drawn.
+// A bumped VertexLitGeneric material whose env map is masked by the base alpha or an $envmapmask
+// loses the env map in the helper's InitParams (docs/fidelity.md#env-maps-on-models): refused too.
 
 #include "luxel/scenes/scene.hpp"
 
@@ -50,6 +52,28 @@ TEST(SkippedCombo, BumpWithBaseAlphaEnvmapMaskOverAlphaIsRefused) {
   EXPECT_NO_THROW(validate(floor_asking(255, true, EnvmapMask::base_alpha))) << "an opaque base: the helper drops the flag";
   EXPECT_NO_THROW(validate(floor_asking(128, false, EnvmapMask::base_alpha))) << "no bump map: a compiled combo";
   EXPECT_NO_THROW(validate(floor_asking(128, true, EnvmapMask::normal_alpha)));
+}
+
+TEST(SkippedCombo, BumpedModelEnvMapMaskedByBaseAlphaOrTextureIsRefused) {
+  for (EnvmapMask mask : {EnvmapMask::base_alpha, EnvmapMask::texture}) {
+    Scene s = floor_asking(128, true, mask);
+    s.materials[0].family = ShaderFamily::vertexlit_generic;
+    try {
+      validate(s);
+      FAIL() << "accepted an env map the SDK deletes";
+    } catch (const std::invalid_argument& e) {
+      const std::string what = e.what();
+      EXPECT_NE(what.find("'paving'"), std::string::npos) << what;
+      EXPECT_NE(what.find(mask == EnvmapMask::base_alpha ? "$basealphaenvmapmask" : "$envmapmask"), std::string::npos) << what;
+    }
+    s.materials[0].bump = TextureRef{};
+    EXPECT_NO_THROW(validate(s)) << "without a bump map the ordinary path masks the env map";
+  }
+  for (EnvmapMask mask : {EnvmapMask::none, EnvmapMask::normal_alpha}) {
+    Scene s = floor_asking(128, true, mask);
+    s.materials[0].family = ShaderFamily::vertexlit_generic;
+    EXPECT_NO_THROW(validate(s));
+  }
 }
 
 TEST(SkippedCombo, TranslucentTexelsAreThoseBelowFullAlpha) {

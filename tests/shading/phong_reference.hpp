@@ -44,6 +44,15 @@ struct PhongReference {
     return tint.r >= 0.0 ? tint : glm::mix(glm::dvec3(1.0), base, exponent_texel.y);
   }
 
+  /// The Fresnel ranges: f = sat(1 − N·V)², then piecewise linear through (0, min), (0.5, mid),
+  /// (1, max). n and v unit.
+  double fresnel(const glm::dvec3& n, const glm::dvec3& v) const {
+    const double one_minus = std::clamp(1.0 - glm::dot(n, v), 0.0, 1.0);
+    const double f = one_minus * one_minus;
+    return f < 0.5 ? fresnel_min + (fresnel_mid - fresnel_min) * (f / 0.5)
+                   : fresnel_mid + (fresnel_max - fresnel_mid) * ((f - 0.5) / 0.5);
+  }
+
   glm::dvec3 operator()(const glm::dvec3& normal, const glm::dvec3& view) const {
     const glm::dvec3 n = glm::normalize(normal), v = glm::normalize(view), l = light_dir;
     const double n_dot_l = glm::dot(n, l);
@@ -53,12 +62,8 @@ struct PhongReference {
     const double r_dot_l = std::clamp(glm::dot(r, l), 0.0, 1.0);
     const glm::dvec3 lit = light_color * std::clamp(n_dot_l, 0.0, 1.0);
     glm::dvec3 spec = lit * std::pow(r_dot_l, exponent());
-    // Fresnel: f = sat(1 − N·V)², then piecewise linear through (0, min), (0.5, mid), (1, max).
     const double one_minus = std::clamp(1.0 - glm::dot(n, v), 0.0, 1.0);
-    const double f = one_minus * one_minus;
-    const double fresnel = f < 0.5 ? fresnel_min + (fresnel_mid - fresnel_min) * (f / 0.5)
-                                   : fresnel_mid + (fresnel_max - fresnel_mid) * ((f - 0.5) / 0.5);
-    spec *= mask() * fresnel * boost;
+    spec *= mask() * fresnel(n, v) * boost;
     if (rim && !fast_path) {
       const double m = (rim_mask ? exponent_texel.w : 1.0) * std::pow(one_minus, 4.0);
       const glm::dvec3 rim_light = lit * std::pow(r_dot_l, rim_exponent) * m;

@@ -195,6 +195,12 @@ testing::LaneComparison compare_vertexlit_sampled(const RandomTextures& tex, ras
   p.fog = testing::lane_test_fog();                // the fog combos
   p.normalization_cube.texture = &tex.normalization_cube;  // the ps_2_0 combos, read like the others
   p.normalization_cube.state = sampler_for(filter);
+  p.envmap.texture = &tex.cube;  // the env-map combos
+  p.envmap.state = sampler_for(filter);
+  p.envmap_tint = glm::vec4(0.8f, 0.6f, 0.4f, 1.0f);
+  p.envmap_fresnel.x = 0.7f;
+  p.envmap_contrast = glm::vec4(0.3f);
+  p.envmap_saturation = glm::vec4(0.7f);
   auto shade = [&]<class L>(const auto& get) -> float4<L> {
     VertexLitInputs<L> in;
     in.uv = float2<L>(get(0), get(1));

@@ -20,6 +20,7 @@
 #include <cstdio>
 #include <initializer_list>
 #include <limits>
+#include <string>
 #include <utility>
 #include <vector>
 
@@ -320,6 +321,102 @@ TEST(SourceVertexLit, RimLightWithAndWithoutItsMask) {
   EXPECT_GE(rim_wins, 4) << "the cases exercise the rim, not only the specular";
 }
 
+// ---- Env maps on models ----------------------------------------------------------------------
+
+/// The tests' cube map: a color that turns with the direction (so a wrong reflection vector
+/// reads another color), in double for the reference and on the float lane for the shader.
+glm::dvec3 test_env(const glm::dvec3& r) {
+  const glm::dvec3 d = glm::normalize(r);
+  return glm::dvec3(0.5 + 0.5 * d.x, 0.5 + 0.4 * d.y, 0.5 - 0.3 * d.z);
+}
+
+/// What combo C adds to combo `Without` (the same but for the env map) at the origin: its env map.
+template <VertexLitCombo C, VertexLitCombo Without>
+glm::dvec3 env_term(const VertexLitParams& p, const glm::dvec3& normal, const VertexLitTexels<float>& t) {
+  static_assert(C.envmap && !Without.envmap);
+  auto env = [](const float3<float>& r) {
+    const float3<float> d = normalize(r);
+    return float3<float>(0.5f + 0.5f * d.x, 0.5f + 0.4f * d.y, 0.5f - 0.3f * d.z);
+  };
+  VertexLitInputs<float> in;
+  in.world_pos = float3<float>(0.0f);
+  in.normal = float3<float>(float(normal.x), float(normal.y), float(normal.z));
+  in.tangent = float3<float>(1.0f, 0.0f, 0.0f);
+  in.binormal = float3<float>(0.0f, 1.0f, 0.0f);
+  const float4<float> with = vertexlit_combine<C>(t, in, p, env);
+  const float4<float> without = vertexlit_combine<Without>(t, in, p, env);
+  return glm::dvec3(with.x - without.x, with.y - without.y, with.z - without.z);
+}
+
+void expect_env(const glm::dvec3& got, const glm::dvec3& want, const std::string& what) {
+  for (int c = 0; c < 3; ++c) EXPECT_NEAR(got[c], want[c], 3e-6 + 2e-5 * std::abs(want[c])) << what << ", channel " << c;
+}
+
+TEST(SourceVertexLit, SkinEnvMapTakesTheFresnelRangesAndTheBaseAlphaAsItsMask) {
+  // skin_ps20b: c30.z · lerp(1, Fresnel ranges, $envmapfresnel) · mask · cube(2 N (N·V) − V) ·
+  // $envmaptint, the mask the base alpha unless $normalmapalphaenvmapmask (tint.w) makes it the
+  // Phong mask (the normal map's alpha on the full path, the base alpha on FASTPATH_NOBUMP).
+  constexpr VertexLitCombo kSkinEnv{2, true, true, false, true, true, false, Fog::none, false, true};
+  constexpr VertexLitCombo kFastEnv{2, false, true, false, true, true, false, Fog::none, false, true};
+  testing::PhongReference ref = phong_material();  // base alpha 0.55, normal alpha 0.8: masks that differ
+  const glm::dvec3 tint(0.9, 0.7, 0.5);
+  for (bool fast : {false, true})
+    for (bool phong_mask : {false, true})
+      for (double envmap_fresnel : {0.0, 0.6, 1.0})
+        for (const glm::dvec3& eye : phong_eyes()) {
+          ref.fast_path = fast;
+          VertexLitParams p = phong_params(ref, eye);
+          p.tonemap.c30.z = 1.5f;  // ENV_MAP_SCALE
+          p.envmap_tint = glm::vec4(glm::vec3(tint), phong_mask ? 1.0f : 0.0f);
+          p.envmap_fresnel.x = float(envmap_fresnel);
+          VertexLitTexels<float> t;
+          t.base = float4<float>(0.3f, 0.2f, 0.1f, float(ref.base_alpha));
+          t.bump.w = float(ref.normal_alpha);
+          const glm::dvec3 got = fast ? env_term<kFastEnv, kSkinFastPath>(p, kPhongNormal, t)
+                                      : env_term<kSkinEnv, kSkin>(p, kPhongNormal, t);
+          const glm::dvec3 n = kPhongNormal, v = glm::normalize(eye);
+          const glm::dvec3 r = 2.0 * glm::dot(n, v) * n - v;
+          const double mask = phong_mask ? ref.mask() : ref.base_alpha;
+          const double scale = 1.5 * (1.0 + (ref.fresnel(n, v) - 1.0) * envmap_fresnel) * mask;
+          expect_env(got, scale * test_env(r) * tint,
+                     std::string(fast ? "fast path" : "full path") + (phong_mask ? ", Phong mask" : ", base alpha") +
+                         ", $envmapfresnel " + std::to_string(envmap_fresnel));
+        }
+}
+
+TEST(SourceVertexLit, BumpedEnvMapReflectsThePixelNormalAndMasksOnlyOnItsCombo) {
+  // vertexlit_and_unlit_generic_bump_ps2x: c30.z · cube(2 (N·E) N − (N·N) E) · mask · $envmaptint,
+  // the mask the normal map's alpha on the NORMALMAPALPHAENVMAPMASK combo, else 1 (tint.w, the
+  // skin shader's control, is not read); then contrast and saturation.
+  constexpr VertexLitCombo kBump{2, true, false, false, true, true};
+  constexpr VertexLitCombo kBumpEnv{2, true, false, false, true, true, false, Fog::none, false, true};
+  constexpr VertexLitCombo kBumpEnvMasked{2, true, false, false, true, true, false, Fog::none, false, true, true};
+  const glm::dvec3 tint(0.9, 0.7, 0.5);
+  const double contrast = 0.4, saturation = 0.6, normal_alpha = 0.3;
+  const glm::dvec3 texel(0.7, 0.4, 0.9);  // a tilted normal: the reflection is the pixel's
+  for (bool masked : {false, true})
+    for (const glm::dvec3& eye : phong_eyes()) {
+      VertexLitParams p = phong_params(phong_material(), eye);
+      p.tonemap.c30.z = 1.5f;
+      p.envmap_tint = glm::vec4(glm::vec3(tint), 1.0f);
+      p.envmap_contrast = glm::vec4(float(contrast));
+      p.envmap_saturation = glm::vec4(float(saturation));
+      VertexLitTexels<float> t;
+      t.base.w = 0.55f;
+      t.bump = float4<float>(float(texel.x), float(texel.y), float(texel.z), float(normal_alpha));
+      const glm::dvec3 got =
+          masked ? env_term<kBumpEnvMasked, kBump>(p, kPhongNormal, t) : env_term<kBumpEnv, kBump>(p, kPhongNormal, t);
+      const glm::dvec3 tn = 2.0 * texel - 1.0;
+      const glm::dvec3 n = glm::normalize(glm::dvec3(tn.x, tn.y, 0.0) + tn.z * kPhongNormal);
+      const glm::dvec3 r = 2.0 * glm::dot(n, eye) * n - glm::dot(n, n) * eye;
+      glm::dvec3 s = 1.5 * test_env(r) * (masked ? normal_alpha : 1.0) * tint;
+      s = glm::mix(s, s * s, contrast);
+      const double grey = glm::dot(s, glm::dvec3(0.299, 0.587, 0.114));
+      s = glm::mix(glm::dvec3(grey), s, saturation);
+      expect_env(got, s, masked ? "masked by the normal alpha" : "unmasked");
+    }
+}
+
 TEST(SourceVertexLit, FoldedDirectionalLightIsExactForAxisNormals) {
   for (bool hl : {true, false}) {
     LightDesc d;
@@ -429,6 +526,13 @@ VertexLitParams lane_test_params(rasterizer::Filter cube_filter = rasterizer::Fi
   static const rasterizer::Texture normalization_cube = normalization_cube_map();  // the ps_2_0 combos
   p.normalization_cube.texture = &normalization_cube;
   p.normalization_cube.state.min = p.normalization_cube.state.mag = cube_filter;
+  // The env-map combos reflect in the same cube (signed texels: the sums go both ways).
+  p.envmap.texture = &normalization_cube;
+  p.envmap.state.min = p.envmap.state.mag = cube_filter;
+  p.envmap_tint = glm::vec4(0.8f, 0.6f, 0.4f, 1.0f);
+  p.envmap_fresnel.x = 0.7f;
+  p.envmap_contrast = glm::vec4(0.3f);
+  p.envmap_saturation = glm::vec4(0.7f);
   return p;
 }
 

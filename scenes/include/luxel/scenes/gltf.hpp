@@ -63,7 +63,7 @@
 //   basetexture, bumpmap, detail, envmapmasktexture, phongexponenttexture, normalmap (Water): textures
 //   color [3], alpha, detailscale, detailblendfactor,
 //   envmap: "" | "env_cubemap" (nearest sample), envmapmask: "" | "texture" | "basealpha" | "normalalpha",
-//   envmaptint [3], envmapcontrast, envmapsaturation, fresnelreflection,
+//   envmaptint [3], envmapcontrast, envmapsaturation, envmapfresnel, fresnelreflection,
 //   phong, phongexponent, phongboost, phongfresnelranges [3], phongtint [3], basemapalphaphongmask,
 //   rimlight, rimlightexponent, rimlightboost, rimmask, halflambert, heroboost,
 //   selfillum, selfillumtint [3], emissive [3],

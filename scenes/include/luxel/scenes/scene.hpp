@@ -115,6 +115,7 @@ struct Material {
   glm::vec3 envmap_tint{1.0f};      ///< $envmaptint
   float envmap_contrast = 0.0f;     ///< $envmapcontrast
   float envmap_saturation = 1.0f;   ///< $envmapsaturation
+  float envmap_fresnel = 0.0f;      ///< $envmapfresnel (the skin shader: how much the Phong Fresnel ranges scale the env map)
   float fresnel_reflection = 1.0f;  ///< $fresnelreflection (LightmappedGeneric)
 
   bool phong = false;               ///< $phong (VertexLitGeneric)
@@ -381,8 +382,10 @@ bool has_translucent_texels(const Texture& texture);
 /// transforms (a shader computes with each), a finite background and fog, texture images the size
 /// they claim, unit handedness, exposure controls and color-correction nodes and volumes with
 /// finite values that are not negative (a falloff may be -1), a LUT name, input times in order,
-/// ordered boxes, and no LightmappedGeneric material asking for a combo the SDK never compiles
-/// ($bumpmap with $basealphaenvmapmask over a base texture with alpha).
+/// ordered boxes, no LightmappedGeneric material asking for a combo the SDK never compiles
+/// ($bumpmap with $basealphaenvmapmask over a base texture with alpha), and no bumped
+/// VertexLitGeneric material whose env map the SDK deletes (masked by $basealphaenvmapmask or
+/// $envmapmask).
 /// Throws std::invalid_argument naming the scene and the first problem.
 void validate(const Scene& scene);
 

@@ -82,6 +82,7 @@ inline constexpr UnlitCombo kUnlitCombos[] = {
     {UnlitDetail::none, false, UnlitEnvmapMask::none, false, true, Fog::range},
     {UnlitDetail::none, false, UnlitEnvmapMask::none, false, true, Fog::vertex_range},
     {UnlitDetail::none, false, UnlitEnvmapMask::none, false, true, Fog::height},
+    {UnlitDetail::none, true, UnlitEnvmapMask::none, false, true},
     {UnlitDetail::mod2x, true, UnlitEnvmapMask::texture, false, true, Fog::range},
     {UnlitDetail::mod2x, true, UnlitEnvmapMask::texture, false, true, Fog::height},
 };

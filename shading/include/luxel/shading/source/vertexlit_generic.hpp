@@ -46,8 +46,16 @@
 // base. Without `bump`, FASTPATH_NOBUMP: the interpolated normal, mask = base alpha, exponent
 // max(c.x, 0), tint 1, no rim.
 //
-// Not implemented: envmap on models (docs/fidelity.md#env-maps-on-models), lightwarp, phong warp,
-// self-illum, detail, $phongexponentfactor, $blendtintbybasealpha.
+// Env maps (docs/fidelity.md#env-maps-on-models), the `envmap` combos: the skin shader's adds
+// c30.z · lerp(1, Fresnel ranges, $envmapfresnel) · mask · cube(R) · $envmaptint, R = 2 N (N·V) - V,
+// the mask the base alpha, or with $normalmapalphaenvmapmask (envmap_tint.w = 1) the Phong mask;
+// no contrast or saturation. The bumped path's adds c30.z · cube(R) · mask · $envmaptint, R =
+// 2 (N·E) N - (N·N) E, the mask the normal map's alpha on the envmap_normal_alpha combos (the SDK's
+// static NORMALMAPALPHAENVMAPMASK) else 1, then contrast and saturation. Both are added after
+// the lighting, unlit by it.
+//
+// Not implemented: lightwarp, phong warp, self-illum, detail, $phongexponentfactor,
+// $blendtintbybasealpha, $invertphongmask.
 
 #include "luxel/shading/source/binaries.hpp"
 #include "luxel/shading/source/common.hpp"
@@ -75,9 +83,15 @@ struct VertexLitCombo {
   bool sh9_ambient = false;       ///< ambient from 9 SH coefficients instead of the cube (ps_3_0 only)
   Fog fog = Fog::none;
   bool normalization_cube = false;  ///< normalize through the normalization cube map (ps_2_0's way)
+  bool envmap = false;              ///< CUBEMAP: env-map specular
+  /// NORMALMAPALPHAENVMAPMASK: the bumped path's env map masked by the normal map's alpha (the
+  /// skin shader takes that choice from a constant instead).
+  bool envmap_normal_alpha = false;
 
   constexpr bool valid(ShaderModel m) const {
     if (lights < 0 || lights > 4) return false;
+    // vertexlit_and_unlit_generic_bump_ps2x.fxc: SKIP $NORMALMAPALPHAENVMAPMASK && !$CUBEMAP.
+    if (envmap_normal_alpha && !(envmap && bump && !phong)) return false;
     if (!fog_valid(fog, m)) return false;
     if (normalization_cube != (m == ShaderModel::ps_2_0)) return false;
     if (m == ShaderModel::ps_2_0 && (lights > 2 || phong)) return false;
@@ -104,6 +118,8 @@ struct VertexLitCombo {
     if (lights > 0 && !pixel_attenuation) n += "+vertexatten";
     if (sh9_ambient) n += "+sh9";
     if (normalization_cube) n += "+normcube";
+    if (envmap) n += "+envmap";
+    if (envmap_normal_alpha) n += "+normalalphamask";
     return n + fog_name(fog);
   }
 };
@@ -143,6 +159,14 @@ inline constexpr VertexLitCombo kVertexLitCombos[] = {
     {2, true, false, false, true, false, false, Fog::height},
     {4, true, true, true, true, false, false, Fog::range},
     {4, true, true, true, true, false, true, Fog::height},
+    // Env maps: the bumped path's, unmasked and masked by the normal map's alpha, and the skin
+    // shader's, on its full path and FASTPATH_NOBUMP.
+    {2, true, false, false, true, false, false, Fog::none, false, true},
+    {2, true, false, false, true, false, false, Fog::none, false, true, true},
+    {2, true, false, false, true, false, false, Fog::none, true, true, true},
+    {2, true, true, true, true, false, false, Fog::none, false, true},
+    {2, false, true, false, true, false, false, Fog::none, false, true},
+    {4, true, true, true, true, false, false, Fog::range, false, true},
 };
 
 template <class F>
@@ -165,6 +189,7 @@ struct VertexLitParams {
   Sampler2D base{0};
   Sampler2D bump{3};
   Sampler2D phong_exponent{7};  ///< white when the material has no $phongexponenttexture
+  SamplerCube envmap{8};        ///< read by the envmap combos
   AmbientCube ambient{};
   Sh9Ambient ambient_sh9{};  ///< read instead of `ambient` by the sh9_ambient combos
   std::array<LocalLight, 4> lights{};
@@ -178,6 +203,12 @@ struct VertexLitParams {
   glm::vec4 base_map_alpha_phong_mask{0.0f};
   /// $phongfresnelranges re-encoded (2(mid-min), mid, 2(max-mid)); (1, 0.5, 1) = plain (1-N·V)²
   glm::vec4 fresnel_ranges{1.0f, 0.5f, 1.0f, 0.0f};
+  /// rgb $envmaptint; w (the skin shader) 1 with $normalmapalphaenvmapmask: the Phong mask masks
+  /// the env map instead of the base alpha
+  glm::vec4 envmap_tint{1.0f, 1.0f, 1.0f, 0.0f};
+  glm::vec4 envmap_fresnel{0.0f};     ///< x $envmapfresnel (the skin shader)
+  glm::vec4 envmap_contrast{0.0f};    ///< xyz $envmapcontrast (the bumped path)
+  glm::vec4 envmap_saturation{1.0f};  ///< xyz $envmapsaturation (the bumped path)
   ToneMapConstants tonemap{};
   FogConstants fog{};
   /// s5: the signed normalization cube map (normalization_cube.hpp), read by the ps_2_0 combos.
@@ -277,8 +308,10 @@ inline float3<L> vertexlit_normalize(const float3<L>& v, const VertexLitParams& 
   }
 }
 
-template <VertexLitCombo C, Lane L>
-inline float4<L> vertexlit_combine(const VertexLitTexels<L>& t, const VertexLitInputs<L>& in, const VertexLitParams& p) {
+/// Everything after the 2D reads; env(R) returns the cube map's rgb in direction R.
+template <VertexLitCombo C, Lane L, class EnvFn>
+inline float4<L> vertexlit_combine(const VertexLitTexels<L>& t, const VertexLitInputs<L>& in, const VertexLitParams& p,
+                                   EnvFn&& env) {
   float3<L> n;
   if constexpr (C.bump) {
     float3<L> tn = t.bump.xyz() * 2.0f - 1.0f;
@@ -290,7 +323,7 @@ inline float4<L> vertexlit_combine(const VertexLitTexels<L>& t, const VertexLitI
   float3<L> diffuse = vertexlit_ambient<C>(n, p);
   float3<L> spec(0.0f), rim(0.0f);
   float3<L> view;
-  L exponent;
+  L exponent, fresnel;
   if constexpr (C.phong) {
     view = normalize(constant<L>(p.eye_position).xyz() - in.world_pos);
     const L c = constant<L>(p.phong_params).x;
@@ -333,13 +366,21 @@ inline float4<L> vertexlit_combine(const VertexLitTexels<L>& t, const VertexLitI
     const L f = one_minus * one_minus;
     const float4<L> ranges = constant<L>(p.fresnel_ranges);
     const L g = f - 0.5f;
-    const L fresnel = ranges.y + g * select(g >= L(0.0f), ranges.z, ranges.x);
+    fresnel = ranges.y + g * select(g >= L(0.0f), ranges.z, ranges.x);
     const float4<L> tint_boost = constant<L>(p.phong_tint_boost);
     L mask = t.base.w;
     float3<L> tint(1.0f);
     if constexpr (C.bump) {
       mask = lerp(t.bump.w, t.base.w, L(constant<L>(p.base_map_alpha_phong_mask).x));
       tint = select(tint_boost.x >= L(0.0f), tint_boost.rgb(), lerp(float3<L>(1.0f), t.base.rgb(), t.exponent.y));
+    }
+    float3<L> env_color(0.0f);
+    if constexpr (C.envmap) {
+      // The base alpha masks the env map, or with $normalmapalphaenvmapmask the Phong mask.
+      const float4<L> env_tint = constant<L>(p.envmap_tint);
+      const L env_mask = lerp(t.base.w, mask, env_tint.w);
+      const L scale = constant<L>(p.tonemap.c30).z * lerp(L(1.0f), fresnel, L(constant<L>(p.envmap_fresnel).x)) * env_mask;
+      env_color = env((2.0f * dot(n, view)) * n - view) * scale * env_tint.rgb();
     }
     spec = spec * (mask * fresnel * tint_boost.w);
     if constexpr (C.rim) {
@@ -351,12 +392,31 @@ inline float4<L> vertexlit_combine(const VertexLitTexels<L>& t, const VertexLitI
       spec = max(spec, rim * m);
       spec = spec + vertexlit_ambient<C>(view, p) * (pp.z * saturate(m * n.z));
     }
-    color = color + spec * tint;
+    if constexpr (C.envmap) {
+      color = spec * tint + env_color + color;
+    } else {
+      color = color + spec * tint;
+    }
+  } else if constexpr (C.envmap) {
+    const float3<L> e = constant<L>(p.eye_position).xyz() - in.world_pos;
+    const float3<L> r = (2.0f * dot(n, e)) * n - dot(n, n) * e;
+    float3<L> s = env(r) * constant<L>(p.tonemap.c30).z;
+    if constexpr (C.envmap_normal_alpha) s = s * t.bump.w;
+    s = s * constant<L>(p.envmap_tint).rgb();
+    s = lerp(s, s * s, constant<L>(p.envmap_contrast).xyz());
+    const L grey = dot(s, float3<L>(0.299f, 0.587f, 0.114f));
+    color = color + lerp(float3<L>(grey), s, constant<L>(p.envmap_saturation).xyz());
   }
   L alpha = t.base.w * modulation.w;
   if constexpr (C.phong) alpha = lerp(alpha, modulation.w, L(constant<L>(p.base_map_alpha_phong_mask).x));
   const FogInputs<L> fog{in.world_pos.z, in.proj_z};
   return fogged_output<ToneMap::linear, C.fog>(float4<L>(color, alpha), p.tonemap, fog, p.fog);
+}
+
+/// vertexlit_combine with the cube map of p.envmap.
+template <VertexLitCombo C, Lane L>
+inline float4<L> vertexlit_combine(const VertexLitTexels<L>& t, const VertexLitInputs<L>& in, const VertexLitParams& p) {
+  return vertexlit_combine<C>(t, in, p, [&](const float3<L>& r) { return texCUBE(p.envmap, r).rgb(); });
 }
 
 template <VertexLitCombo C, Lane L>
