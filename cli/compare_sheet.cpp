@@ -72,14 +72,24 @@ class Canvas {
   rasterizer::Image image_;
 };
 
-std::string stop_label(size_t i) {
-  const std::string n = std::to_string(frame::kHeatStops[i]);
-  return i + 1 == frame::kHeatStops.size() ? n + "+" : n;
+int legend_width(const Legend& legend) {
+  int w = text_width(legend.title) + kMargin;
+  for (const auto& [label, colour] : legend.swatches) w += kSwatch + 4 + text_width(label) + kMargin;
+  return w;
 }
 
 }  // namespace
 
-rasterizer::Image compose_sheet(const std::vector<std::vector<SheetCell>>& rows) {
+Legend heat_legend() {
+  Legend l{"difference in 8-bit steps:", {}};
+  for (size_t i = 0; i < frame::kHeatStops.size(); ++i) {
+    const std::string n = std::to_string(frame::kHeatStops[i]);
+    l.swatches.emplace_back(i + 1 == frame::kHeatStops.size() ? n + "+" : n, frame::heat_colour(frame::kHeatStops[i]));
+  }
+  return l;
+}
+
+rasterizer::Image compose_sheet(const std::vector<std::vector<SheetCell>>& rows, const std::vector<Legend>& legends) {
   // Column widths and row heights.
   std::vector<int> column_width;
   std::vector<int> row_height;
@@ -92,15 +102,13 @@ rasterizer::Image compose_sheet(const std::vector<std::vector<SheetCell>>& rows)
     }
     row_height.push_back(kLabelHeight + height);
   }
-  const std::string legend_title = "difference in 8-bit steps:";
-  int legend_width = text_width(legend_title) + kMargin;
-  for (size_t i = 0; i < frame::kHeatStops.size(); ++i) legend_width += kSwatch + 4 + text_width(stop_label(i)) + kMargin;
-
   int width = kMargin, height = kMargin;
   for (int w : column_width) width += w + kMargin;
   for (int h : row_height) height += h + kMargin;
-  width = std::max(width, legend_width + 2 * kMargin);
-  height += kLabelHeight + kMargin;
+  for (const Legend& legend : legends) {
+    width = std::max(width, legend_width(legend) + 2 * kMargin);
+    height += kLabelHeight + kMargin;
+  }
 
   Canvas canvas(width, height);
   int y = kMargin;
@@ -113,15 +121,17 @@ rasterizer::Image compose_sheet(const std::vector<std::vector<SheetCell>>& rows)
     }
     y += row_height[r] + kMargin;
   }
-  // The legend.
-  int x = kMargin;
-  canvas.text(legend_title, x, y + kBaseline, width - x, y, kLabelHeight);
-  x += text_width(legend_title) + kMargin;
-  for (size_t i = 0; i < frame::kHeatStops.size(); ++i) {
-    canvas.fill(x, y + kBaseline - kSwatch + 3, kSwatch, kSwatch, frame::heat_colour(frame::kHeatStops[i]));
-    x += kSwatch + 4;
-    canvas.text(stop_label(i), x, y + kBaseline, width - x, y, kLabelHeight);
-    x += text_width(stop_label(i)) + kMargin;
+  for (const Legend& legend : legends) {
+    int x = kMargin;
+    canvas.text(legend.title, x, y + kBaseline, width - x, y, kLabelHeight);
+    x += text_width(legend.title) + kMargin;
+    for (const auto& [label, colour] : legend.swatches) {
+      canvas.fill(x, y + kBaseline - kSwatch + 3, kSwatch, kSwatch, colour);
+      x += kSwatch + 4;
+      canvas.text(label, x, y + kBaseline, width - x, y, kLabelHeight);
+      x += text_width(label) + kMargin;
+    }
+    y += kLabelHeight + kMargin;
   }
   return canvas.take();
 }

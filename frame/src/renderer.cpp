@@ -588,11 +588,12 @@ class FrameBuilder {
     const glm::vec3 centroid = model >= 0 ? st_.model_states[static_cast<size_t>(model)].centroid : mesh_center(mesh, glm::vec3(0.0f));
     // The SDK helper's choice of shader (vertexlit_dispatch.hpp): Phong only in the skin shader.
     const VertexLitMaterial vm = vertexlit_material(m);
-    const VertexLitPath path = vertexlit_path(vm, model_);
+    const FrameSettings::DispatchCards& cards = st_.settings.dispatch_cards;
+    const VertexLitPath path = vertexlit_path(vm, cards.model_shader.value_or(model_));
     const bool half_lambert = vertexlit_half_lambert(vm, path);
     // Up to four local lights where the SDK's shaders take them (the bumped and skin shaders on
     // ps_2_b and ps_3_0), two elsewhere; the averaged shares rank FrameSettings::local_lights.
-    const int local_lights = path != VertexLitPath::plain && model_ != shading::ShaderModel::ps_2_0
+    const int local_lights = path != VertexLitPath::plain && cards.light_count.value_or(model_) != shading::ShaderModel::ps_2_0
                                  ? st_.settings.local_lights
                                  : std::min(st_.settings.local_lights, 2);
     const ModelLighting lighting =

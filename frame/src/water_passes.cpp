@@ -308,7 +308,8 @@ std::optional<SourceDraw> WaterPasses::surface_draw(size_t index, const scenes::
   combo.above_water = true;
   combo.multitexture = m.water_scroll != glm::vec2(0.0f);
   // Valve's helper asks for BLURRY only where it exists (ps_2_b and up) and the water refracts.
-  combo.blurry_refract = m.water_blur_refract && combo.refract && settings_.model != shading::ShaderModel::ps_2_0;
+  combo.blurry_refract = m.water_blur_refract && combo.refract &&
+                        settings_.dispatch_cards.water_blur.value_or(settings_.model) != shading::ShaderModel::ps_2_0;
   combo.fog = frame.fog;
   WaterParams p = water_constants(water_material(m), HdrType::integer, frame.tonemap);
   p.refraction = Sampler2D{0, &plane.refraction_texture->texture, plane.refraction_texture->sampler};

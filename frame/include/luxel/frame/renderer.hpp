@@ -63,6 +63,19 @@ struct FrameSettings {
   float lighting_time_constant = 0.2f;
   /// The pixel-shader model the Source shaders are drawn as: ps_2_0, ps_2_b or ps_3_0.
   shading::ShaderModel model = shading::ShaderModel::ps_3_0;
+  /// The cards whose dispatch rules the frame follows instead of `model`'s, rule by rule (unset:
+  /// `model`'s; `luxel compare --explain` draws a card with another's rule to find which rule a
+  /// difference comes from). Each rule is the SDK helpers' choice for a card, not a shader the
+  /// card lacks: the binary drawn stays `model`'s.
+  struct DispatchCards {
+    /// Which shader a model material gets: the skin shader needs ps_2_b (vertexlit_dispatch.hpp).
+    std::optional<shading::ShaderModel> model_shader;
+    /// How many local lights a bumped or skin model takes: two at most on ps_2_0.
+    std::optional<shading::ShaderModel> light_count;
+    /// Whether water blurs its refraction ($blurrefract): ps_2_b and up.
+    std::optional<shading::ShaderModel> water_blur;
+  };
+  DispatchCards dispatch_cards;
   AmbientSampling ambient = AmbientSampling::nearest;
   /// Attenuate the models' local lights per pixel where the combo fits the model, instead of per
   /// vertex as the SDK's bumped and skin shaders do on every model (luxel's option: a light close
