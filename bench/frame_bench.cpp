@@ -1,4 +1,4 @@
-// Whole-frame benchmark of the llvmpipe peer's workloads (../shared/peers/llvmpipe), printing
+// Whole-frame benchmark of the llvmpipe peer's workloads (bench/README.md), printing
 // exactly its line format so both run side by side:
 //   workload=<name> width=W height=H msaa=S threads=T frames=N median_ms=X min_ms=Y
 // or `workload=sponza skipped reason="..."` when W3's glTF file is missing (exit 0, as the peer).

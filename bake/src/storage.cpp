@@ -154,7 +154,7 @@ void save_bake(const BakeResult& r, const scenes::Scene& scene, const BakeSettin
                           {"height", a.height},
                           {"files", files},
                           {"unit", "linear irradiance / pi (diffuse = albedo x lightmap), RGB half float, top row = uv1 v 0"},
-                          {"order", "flat, basis 0, basis 1, basis 2 (SOURCE_FACTS 1.1, tangent space)"},
+                          {"order", "flat, basis 0, basis 1, basis 2 (docs/fidelity.md#rnm-basis-and-lightmaps, tangent space)"},
                           {"luxels", r.stats.luxels},
                           {"coverage", coverage},
                           {"generated_uv1_meshes", generated}};

@@ -1,5 +1,5 @@
 #pragma once
-// W3 `sponza`: the llvmpipe peer's textured workload (../shared/peers/llvmpipe/README.md, "W3"),
+// W3 `sponza`: the llvmpipe peer's textured workload (bench/README.md, "W3"),
 // drawn by luxel so that any glTF file compares like for like. It is a benchmark workload, not a
 // Source shader: trilinear base texture (RGBA8, no sRGB decode, color premultiplied by alpha as
 // the peer's OpenImageIO decode leaves PNGs) x baseColorFactor x (ambient cube

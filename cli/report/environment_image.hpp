@@ -4,8 +4,7 @@
 // integrate every pixel's radiance: no resampling, no small bright source missed between grid
 // cells.
 //
-// Frame (every probe alike, R&H 2001's for the angular map: ../shared/assets/sh9-ramamoorthi2001.md
-// "Frame"): +y up, +z the direction seen at the image's centre, +x toward the image's right.
+// Frame (every probe alike, R&H 2001's for the angular map, ramamoorthi2001.hpp): +y up, +z the direction seen at the image's centre, +x toward the image's right.
 //
 // Angular map ("light probe", square): pixel (i, j) of a w x w image at its centre,
 // u = (j + ½ − w/2)/(w/2), v = (w/2 − i − ½)/(w/2), r = √(u² + v²) < 1 (pixels beyond the circle

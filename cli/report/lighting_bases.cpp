@@ -137,7 +137,7 @@ Environment probe_environment(const std::filesystem::path& file, const std::stri
 // ---- R&H 2001's Grace Cathedral, reproduced ------------------------------------------------------
 
 /// Our projection of grace_probe.hdr against the published coefficients: they agree up to the
-/// exposure of the copy (../shared/assets/sh9-ramamoorthi2001.md), so a least-squares scale
+/// exposure of the copy (the probe's copies differ in exposure), so a least-squares scale
 /// published ≈ s × ours, per channel too, then each coefficient after scaling.
 void reproduce_grace(const Environment& e, std::vector<std::string>& notes, nlohmann::json& details) {
   static const char* kNames[9] = {"L00", "L1-1", "L10", "L11", "L2-2", "L2-1", "L20", "L21", "L22"};
@@ -234,7 +234,7 @@ SectionResult run_lighting_bases(const ReportSettings& s) {
   }
   out.notes.insert(out.notes.end(), probe_notes.begin(), probe_notes.end());
   out.notes.push_back("Fits, from the same samples as the reference: the cube is VRAD's cosine-weighted mean radiance per "
-                      "side (SOURCE_FACTS 2.2, dense-ray limit); SH4 and SH9 project the radiance on bands 0-1 / 0-2 and "
+                      "side (docs/fidelity.md#bake-vrad, dense-ray limit); SH4 and SH9 project the radiance on bands 0-1 / 0-2 and "
                       "convolve with the clamped cosine (R&H 2001); each is evaluated by its shader code on the float lane.");
   out.notes.push_back("Errors: |dE|/E per normal and channel; max/peak: max |dE| over the brightest E; 8-bit steps after the "
                       "linear tone map that puts the brightest true E/pi at 1.0 and sRGB encoding. Frame of the probes: +y up, "

@@ -1,5 +1,5 @@
 // W1 `fill` and W2 `tris`: the benchmark workloads shared with the llvmpipe peer
-// (../shared/peers/llvmpipe/README.md), rebuilt exactly as that harness defines them, as scenes.
+// (bench/README.md), rebuilt exactly as that harness defines them, as scenes.
 //
 // The peer states them in OpenGL terms (NDC depth in [-1, 1], window y up). Here each is a sheet
 // of unlit, vertex-colored, double-sided triangles in the XY plane seen from above by an

@@ -1,5 +1,5 @@
 // W3 `sponza` (bench/workloads/sponza.hpp) against the peer's definition
-// (../shared/peers/llvmpipe/README.md), computed here independently in double precision: a small
+// (bench/README.md), computed here independently in double precision: a small
 // glTF written by this test (four quads under a scaled, translated node; a 2x1 texture; a
 // double-sided quad seen from behind; a culled one; one without NORMAL) is rendered, and every
 // pixel whose whole footprint lies inside one triangle is compared with a ray cast through its

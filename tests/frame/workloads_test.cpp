@@ -1,6 +1,6 @@
 // The peer workloads W1 `fill` and W2 `tris` as scenes: the frame draws them to the bytes the
 // renderer that owned them drew before they became scene data (frame/src/workload_scenes.cpp, at
-// main 2082e6a), and to what the peer's definition says (../shared/peers/llvmpipe/README.md).
+// main 2082e6a), and to what the peer's definition says (bench/README.md).
 
 #include "frame/frame_support.hpp"
 

@@ -39,7 +39,7 @@ TEST(HistogramBuckets, MeanBucketsAreLogSpacedAndTheTopStopsShortOfOne) {
     EXPECT_NEAR(b[i].max, table[i + 1], 6e-6) << i;
   }
   EXPECT_NEAR(b[0].min, 0.0f, 1e-8);
-  EXPECT_LT(b[29].max, 1.0f) << "float rounding: white is in no bucket (SOURCE_FACTS §7.2)";
+  EXPECT_LT(b[29].max, 1.0f) << "float rounding: white is in no bucket (docs/fidelity.md#auto-exposure)";
   EXPECT_EQ(range_test_max(b[29]), b[29].max);
   EXPECT_EQ(b[30].max, 100000.0f);
 }

@@ -2,7 +2,7 @@
 // Built-in scenes: scenes made in code, needing no files, as plain data like any other Scene.
 //
 //   demo       a checkered ground running to the horizon and a ring of brick cubes (perspective)
-//   fill       W1 of the llvmpipe peer (../shared/peers/llvmpipe/README.md): 8 full-screen layers
+//   fill       W1 of the llvmpipe peer (bench/README.md): 8 full-screen layers
 //   tris       W2 of the peer: one million small flat-colored triangles, laid out in pixels
 //   courtyard  a walled courtyard that uses every technique of the Source pipeline at once
 //

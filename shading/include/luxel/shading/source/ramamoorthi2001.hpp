@@ -9,7 +9,7 @@
 // and the Grace Cathedral column was re-derived from the probe image up to an exposure factor.
 // Numeric data, cited as facts. Row order and basis: spherical_harmonics.hpp (the paper's).
 // Frame: +x toward the probe image's right, +y up, +z the direction seen at the image's centre
-// (../shared/assets/sh9-ramamoorthi2001.md, "Frame").
+// (the frame of the paper's angular-map probes).
 //
 // `luxel report speed-error` and tests/shading/sh9_test.cpp use them as environments, and the
 // report compares the first with its own projection of grace_probe.hdr.
