@@ -110,6 +110,12 @@ shading::source::VertexLitMaterial vertexlit_material(const scenes::Material& ma
   m.half_lambert = material.half_lambert;
   m.exponent_texture = material.phong_exponent_texture.bound();
   m.rim = material.rim;
+  switch (material.envmap_mask) {
+    case scenes::EnvmapMask::none: m.envmap_mask = shading::source::ModelEnvmapMask::none; break;
+    case scenes::EnvmapMask::texture: m.envmap_mask = shading::source::ModelEnvmapMask::texture; break;
+    case scenes::EnvmapMask::base_alpha: m.envmap_mask = shading::source::ModelEnvmapMask::base_alpha; break;
+    case scenes::EnvmapMask::normal_alpha: m.envmap_mask = shading::source::ModelEnvmapMask::normal_alpha; break;
+  }
   return m;
 }
 

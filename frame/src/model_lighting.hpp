@@ -66,7 +66,8 @@ void step_towards(AveragedLighting& averaged, const AveragedLighting& target, fl
 std::array<int, kMaxLocalLights> local_light_slots(std::span<const size_t> significance, std::span<const float> shares,
                                                    int count);
 
-/// The parameters of a VertexLitGeneric material that choose its shader (vertexlit_dispatch.hpp).
+/// The parameters of a VertexLitGeneric material that choose its shader (vertexlit_dispatch.hpp),
+/// but those the frame resolves (the env map, the base texture's alpha, the mesh's colors).
 shading::source::VertexLitMaterial vertexlit_material(const scenes::Material& material);
 
 /// The shader's lighting of a model drawn with `material`, from its averaged lighting: the lights

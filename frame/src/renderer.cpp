@@ -586,45 +586,29 @@ class FrameBuilder {
     // does not move, and is lit as it is now.
     const int model = model_of_mesh_[index];
     const glm::vec3 centroid = model >= 0 ? st_.model_states[static_cast<size_t>(model)].centroid : mesh_center(mesh, glm::vec3(0.0f));
-    // The SDK helper's choice of shader (vertexlit_dispatch.hpp): Phong only in the skin shader.
-    const VertexLitMaterial vm = vertexlit_material(m);
+    // The SDK helper's choice of shader and combo (vertexlit_dispatch.hpp): Phong only in the
+    // skin shader; the averaged shares rank the local lights the path takes.
+    const GpuTexture* env = envmap_of(m, index);
+    const VertexLitMaterial vm = generic_material(m, mesh, env);
     const FrameSettings::DispatchCards& cards = st_.settings.dispatch_cards;
     const VertexLitPath path = vertexlit_path(vm, cards.model_shader.value_or(model_));
     const bool half_lambert = vertexlit_half_lambert(vm, path);
-    // Up to four local lights where the SDK's shaders take them (the bumped and skin shaders on
-    // ps_2_b and ps_3_0), two elsewhere; the averaged shares rank FrameSettings::local_lights.
-    const int local_lights = path != VertexLitPath::plain && cards.light_count.value_or(model_) != shading::ShaderModel::ps_2_0
-                                 ? st_.settings.local_lights
-                                 : std::min(st_.settings.local_lights, 2);
+    const int local_lights = vertexlit_max_lights(path, cards.light_count.value_or(model_), st_.settings.local_lights);
     const ModelLighting lighting =
         model >= 0 ? light_model(lights_, centroid, m, half_lambert, st_.model_lighting[static_cast<size_t>(model)], local_lights)
                    : light_model(lights_, centroid, m, half_lambert,
                                  lighting_at(scene_, lights_, centroid, st_.settings.ambient, st_.settings.local_lights),
                                  local_lights);
-    const GpuTexture* env = envmap_of(m, index);
-    if (path == VertexLitPath::plain) return vertexlit_per_vertex(m, env, lighting, half_lambert, target);
-    const bool phong = path == VertexLitPath::skin;
-    VertexLitCombo wanted;
-    wanted.lights = lighting.kept == 0 ? 0 : lighting.kept <= 2 ? 2 : 4;
-    // The skin shader's full path reads a normal map, a flat one when the material has none.
-    wanted.bump = phong ? !skin_fast_path(vm) : m.bump.bound();
-    wanted.phong = phong;
-    wanted.rim = phong && m.rim;
-    wanted.half_lambert = half_lambert;
-    wanted.pixel_attenuation = st_.settings.pixel_attenuation;
-    wanted.fog = fog_;
-    wanted.normalization_cube = model_ == shading::ShaderModel::ps_2_0;
-    // The bumped path's NORMALMAPALPHAENVMAPMASK is a static combo, the skin shader's a constant;
-    // other masks on a bumped material lose the env map, which scenes::validate refuses.
-    const bool normal_alpha_mask = m.envmap_mask == scenes::EnvmapMask::normal_alpha && m.bump.bound();
-    wanted.envmap = env != nullptr;
-    wanted.envmap_normal_alpha = wanted.envmap && !phong && normal_alpha_mask;
+    if (path == VertexLitPath::plain) return vertexlit_per_vertex(m, vm, env, lighting, half_lambert, target);
+    const VertexLitCombo wanted =
+        vertexlit_combo(vm, path, lighting.kept, model_, {st_.settings.pixel_attenuation, fog_});
     const std::optional<VertexLitCombo> combo = fitting_vertexlit_combo(wanted, model_);
     if (!combo)
       throw std::invalid_argument(scene_.name + ": material '" + m.name + "': no VertexLitGeneric combo " + wanted.name() +
                                   " fits " + std::string(shading::caps(model_).name));
     VertexLitParams p;
     p.base = sampler2d(0, m.base);
+    // The skin shader's full path reads a normal map, a flat one when the material has none.
     p.bump = m.bump.bound() ? sampler2d(3, m.bump) : Sampler2D{3, &st_.flat_normal.texture, st_.flat_normal.sampler};
     p.phong_exponent = sampler2d(7, m.phong_exponent_texture);
     p.ambient = lighting.cube;
@@ -637,7 +621,7 @@ class FrameBuilder {
     p.base_map_alpha_phong_mask.x = m.base_map_alpha_phong_mask ? 1.0f : 0.0f;
     p.fresnel_ranges = encode_fresnel_ranges(m.phong_fresnel_ranges.x, m.phong_fresnel_ranges.y, m.phong_fresnel_ranges.z);
     if (env) p.envmap = SamplerCube{8, &env->texture, biased(env->sampler)};
-    p.envmap_tint = glm::vec4(m.envmap_tint, phong && normal_alpha_mask ? 1.0f : 0.0f);
+    p.envmap_tint = glm::vec4(m.envmap_tint, skin_envmap_mask_control(vm));
     p.envmap_fresnel.x = m.envmap_fresnel;
     p.envmap_contrast = glm::vec4(m.envmap_contrast);
     p.envmap_saturation = glm::vec4(m.envmap_saturation);
@@ -655,8 +639,8 @@ class FrameBuilder {
   /// DIFFUSELIGHTING): the vertex shader lights each vertex with the ambient cube and the kept
   /// lights, the pixel shader multiplies the albedo by the interpolated result and adds the env
   /// map `env` (none: null).
-  SourceDraw vertexlit_per_vertex(const scenes::Material& m, const GpuTexture* env, const ModelLighting& lighting,
-                                  bool half_lambert, const DrawTarget& target) {
+  SourceDraw vertexlit_per_vertex(const scenes::Material& m, const VertexLitMaterial& vm, const GpuTexture* env,
+                                  const ModelLighting& lighting, bool half_lambert, const DrawTarget& target) {
     VertexLitVsCombo vs;
     vs.lights = lighting.kept > 0 ? 2 : 0;
     vs.half_lambert = half_lambert || vs.lights == 0;
@@ -665,22 +649,17 @@ class FrameBuilder {
       throw std::logic_error("no VertexLitGeneric vertex shader combo " + vs.name());
     target.vertex->vertex_lighting_params.ambient = lighting.cube;
     target.vertex->vertex_lighting_params.lights = lighting.lights;
-    UnlitCombo combo;
-    combo.diffuse_lighting = true;
-    return unlit_draw(generic_envmap(combo, m, env), model_, target, generic_params(m, env), eye_);
+    return unlit_draw(generic_combo(vm, true, fog_), model_, target, generic_params(m, env), eye_);
   }
 
-  /// The combo of vertexlit_and_unlit_generic_ps2x.fxc: `combo` with the env map `env` (none:
-  /// null), masked as the helper leaves the material's flags (no $basealphaenvmapmask over an
-  /// opaque base; no $normalmapalphaenvmapmask without tangent space), and the frame's fog.
-  UnlitCombo generic_envmap(UnlitCombo combo, const scenes::Material& m, const GpuTexture* env) const {
-    combo.envmap = env != nullptr;
-    const bool base_translucent = m.base.bound() && st_.textures[static_cast<size_t>(m.base.texture)].translucent;
-    if (combo.envmap && m.envmap_mask == scenes::EnvmapMask::texture) combo.mask = UnlitEnvmapMask::texture;
-    if (combo.envmap && m.envmap_mask == scenes::EnvmapMask::base_alpha && base_translucent)
-      combo.mask = UnlitEnvmapMask::base_alpha_inverted;
-    combo.fog = fog_;
-    return combo;
+  /// What chooses a VertexLitGeneric or UnlitGeneric material's shader (vertexlit_dispatch.hpp),
+  /// with the env map `env` it reflects (none: null).
+  VertexLitMaterial generic_material(const scenes::Material& m, const scenes::Mesh& mesh, const GpuTexture* env) const {
+    VertexLitMaterial vm = vertexlit_material(m);
+    vm.envmap = env != nullptr;
+    vm.base_translucent = m.base.bound() && st_.textures[static_cast<size_t>(m.base.texture)].translucent;
+    vm.vertex_color = !mesh.colors.empty();
+    return vm;
   }
 
   UnlitGenericParams generic_params(const scenes::Material& m, const GpuTexture* env) const {
@@ -699,9 +678,7 @@ class FrameBuilder {
 
   SourceDraw unlit(size_t index, const scenes::Mesh& mesh, const scenes::Material& m, const DrawTarget& target) {
     const GpuTexture* env = envmap_of(m, index);
-    UnlitCombo combo;
-    combo.vertex_color = !mesh.colors.empty();
-    return unlit_draw(generic_envmap(combo, m, env), model_, target, generic_params(m, env), eye_);
+    return unlit_draw(generic_combo(generic_material(m, mesh, env), false, fog_), model_, target, generic_params(m, env), eye_);
   }
 
   void queue(const scenes::Material& m, size_t index, Pass pass) {

@@ -1,10 +1,15 @@
 // VertexLitGeneric's choice of shader against the SDK helper's rules (vertexlit_dispatch.hpp,
 // docs/fidelity.md#which-shader-a-model-gets): every combination of the parameters that choose,
-// on every pixel-shader model, against the rules written out here as the helper states them.
+// on every pixel-shader model, against the rules written out here as the helper states them;
+// then the combo: the lights each path takes per card, and the env map's mask as the helpers
+// leave the flags (docs/fidelity.md#env-maps-on-models).
 
 #include "luxel/shading/source/vertexlit_dispatch.hpp"
 
 #include <gtest/gtest.h>
+
+#include <algorithm>
+#include <utility>
 
 namespace luxel::shading::source {
 namespace {
@@ -34,6 +39,72 @@ TEST(VertexLitDispatch, PhongWithoutBumpIsTheOrdinaryPath) {
   const VertexLitMaterial bumped{.phong = true, .bump = true};
   EXPECT_EQ(vertexlit_path(bumped, ShaderModel::ps_2_b), VertexLitPath::skin);
   EXPECT_EQ(vertexlit_path(bumped, ShaderModel::ps_2_0), VertexLitPath::bumped);
+}
+
+TEST(VertexLitDispatch, LightsPerPathAndCard) {
+  for (int wanted : {1, 2, 3, 4}) {
+    EXPECT_EQ(vertexlit_max_lights(VertexLitPath::plain, ShaderModel::ps_3_0, wanted), std::min(wanted, 2));
+    EXPECT_EQ(vertexlit_max_lights(VertexLitPath::bumped, ShaderModel::ps_2_0, wanted), std::min(wanted, 2));
+    EXPECT_EQ(vertexlit_max_lights(VertexLitPath::bumped, ShaderModel::ps_2_b, wanted), wanted);
+    EXPECT_EQ(vertexlit_max_lights(VertexLitPath::skin, ShaderModel::ps_3_0, wanted), wanted);
+  }
+  const VertexLitMaterial bumped{.bump = true};
+  for (auto [kept, lights] : {std::pair{0, 0}, std::pair{1, 2}, std::pair{2, 2}, std::pair{3, 4}, std::pair{4, 4}})
+    EXPECT_EQ(vertexlit_combo(bumped, VertexLitPath::bumped, kept, ShaderModel::ps_2_b, {}).lights, lights) << kept;
+  for (ShaderModel card : {ShaderModel::ps_2_0, ShaderModel::ps_2_b, ShaderModel::ps_3_0})
+    EXPECT_EQ(vertexlit_combo(bumped, VertexLitPath::bumped, 2, card, {}).normalization_cube, card == ShaderModel::ps_2_0);
+}
+
+TEST(VertexLitDispatch, SkinFullPathUnlessItsFastPathApplies) {
+  const VertexLitMaterial mask_only{.phong = true, .base_map_alpha_phong_mask = true};
+  const VertexLitCombo fast = vertexlit_combo(mask_only, VertexLitPath::skin, 2, ShaderModel::ps_2_b, {});
+  EXPECT_TRUE(fast.phong);
+  EXPECT_FALSE(fast.bump) << "FASTPATH_NOBUMP";
+  EXPECT_TRUE(fast.half_lambert) << "the skin shader always";
+  for (VertexLitMaterial m : {VertexLitMaterial{.phong = true, .bump = true}, VertexLitMaterial{.phong = true, .base_map_alpha_phong_mask = true, .exponent_texture = true},
+                              VertexLitMaterial{.phong = true, .base_map_alpha_phong_mask = true, .rim = true}}) {
+    const VertexLitCombo full = vertexlit_combo(m, VertexLitPath::skin, 2, ShaderModel::ps_2_b, {});
+    EXPECT_TRUE(full.bump) << "the full path reads a (flat) normal map";
+    EXPECT_EQ(full.rim, m.rim);
+  }
+}
+
+TEST(VertexLitDispatch, EnvMapMasksAsTheHelpersLeaveThem) {
+  using M = ModelEnvmapMask;
+  // The bumped path: the normal map's alpha is a static combo.
+  VertexLitMaterial bumped{.bump = true, .envmap = true, .envmap_mask = M::normal_alpha};
+  EXPECT_TRUE(vertexlit_combo(bumped, VertexLitPath::bumped, 2, ShaderModel::ps_2_0, {}).envmap_normal_alpha);
+  bumped.envmap_mask = M::none;
+  EXPECT_TRUE(vertexlit_combo(bumped, VertexLitPath::bumped, 2, ShaderModel::ps_2_0, {}).envmap);
+  EXPECT_FALSE(vertexlit_combo(bumped, VertexLitPath::bumped, 2, ShaderModel::ps_2_0, {}).envmap_normal_alpha);
+  // The skin shader: a constant, 1 only with the flag and a bump map; the combo has no mask axis.
+  VertexLitMaterial skin{.phong = true, .bump = true, .envmap = true, .envmap_mask = M::normal_alpha};
+  EXPECT_FALSE(vertexlit_combo(skin, VertexLitPath::skin, 2, ShaderModel::ps_2_b, {}).envmap_normal_alpha);
+  EXPECT_EQ(skin_envmap_mask_control(skin), 1.0f);
+  skin.envmap_mask = M::none;
+  EXPECT_EQ(skin_envmap_mask_control(skin), 0.0f) << "the base alpha masks the skin shader's env map by default";
+  const VertexLitMaterial skin_no_bump{.phong = true, .base_map_alpha_phong_mask = true, .envmap = true, .envmap_mask = M::normal_alpha};
+  EXPECT_EQ(skin_envmap_mask_control(skin_no_bump), 0.0f) << "no tangent space: the flag is cleared";
+  // The plain path and UnlitGeneric: $basealphaenvmapmask only over a translucent base, no
+  // $normalmapalphaenvmapmask.
+  for (bool diffuse_lighting : {false, true}) {
+    VertexLitMaterial plain{.envmap = true, .envmap_mask = M::base_alpha};
+    EXPECT_EQ(generic_combo(plain, diffuse_lighting, Fog::none).mask, UnlitEnvmapMask::none) << "an opaque base";
+    plain.base_translucent = true;
+    EXPECT_EQ(generic_combo(plain, diffuse_lighting, Fog::none).mask, UnlitEnvmapMask::base_alpha_inverted);
+    plain.envmap_mask = M::texture;
+    EXPECT_EQ(generic_combo(plain, diffuse_lighting, Fog::none).mask, UnlitEnvmapMask::texture);
+    plain.envmap_mask = M::normal_alpha;
+    EXPECT_EQ(generic_combo(plain, diffuse_lighting, Fog::none).mask, UnlitEnvmapMask::none);
+    plain.envmap = false;
+    plain.envmap_mask = M::texture;
+    EXPECT_FALSE(generic_combo(plain, diffuse_lighting, Fog::none).envmap);
+    EXPECT_EQ(generic_combo(plain, diffuse_lighting, Fog::none).mask, UnlitEnvmapMask::none);
+    EXPECT_EQ(generic_combo(plain, diffuse_lighting, Fog::range).fog, Fog::range);
+  }
+  const VertexLitMaterial colored{.vertex_color = true};
+  EXPECT_TRUE(generic_combo(colored, false, Fog::none).vertex_color);
+  EXPECT_FALSE(generic_combo(colored, true, Fog::none).vertex_color) << "VertexLitGeneric's lighting takes i.color";
 }
 
 }  // namespace
