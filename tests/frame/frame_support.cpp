@@ -30,6 +30,26 @@ scenes::Scene top_down() {
   return s;
 }
 
+void attach_lightmaps(scenes::Scene& s, const glm::vec3& flat, const glm::vec3 (&basis)[3]) {
+  scenes::Lightmaps maps;
+  maps.width = maps.height = 4;
+  auto add = [&](const glm::vec3& c) {
+    scenes::Texture t;
+    t.name = "lightmap";
+    t.color_space = scenes::ColorSpace::linear;
+    scenes::PixelImage image;
+    image.width = image.height = 4;
+    for (int i = 0; i < 16; ++i) image.rgba32f.insert(image.rgba32f.end(), {c.r, c.g, c.b, 1.0f});
+    t.faces = {image};
+    t.mipmaps = false;
+    s.textures.push_back(t);
+    return static_cast<int>(s.textures.size()) - 1;
+  };
+  maps.flat = add(flat);
+  for (int k = 0; k < 3; ++k) maps.textures[static_cast<size_t>(k)] = add(basis[k]);
+  s.lightmaps = maps;
+}
+
 scenes::Scene color_ramp() {
   scenes::Scene s = top_down();
   scenes::Material m;

@@ -34,6 +34,9 @@ double srgb_encode(double linear);
 /// +Y), nothing else.
 scenes::Scene top_down();
 
+/// Four constant lightmaps (flat, then the three basis maps) attached to `s`.
+void attach_lightmaps(scenes::Scene& s, const glm::vec3& flat, const glm::vec3 (&basis)[3]);
+
 /// top_down() filled by an unlit square whose corners are four saturated colors (something for a
 /// grade to change), at a fixed exposure of 1.
 scenes::Scene color_ramp();

@@ -2,16 +2,23 @@
 // docs/fidelity.md#world-env-maps-vbsp): the nearest sample in front of a face group's plane from
 // the mean of its vertices, else the nearest overall, ties to the lower index; no samples, no env
 // map. Each case is built so that the rule it checks picks another sample than the rules it
-// replaces (the nearest overall, the bounding-box centre, a strict plane test, the sky).
+// replaces (the nearest overall, the bounding-box centre, a strict plane test, the sky); in the
+// frame, the pixels each face group draws are the colour of its sample's cube as the test computes
+// it (the env map's scale, tint and the sRGB write, from docs/fidelity.md#lightmappedgeneric).
 
 #include "frame/frame_support.hpp"
 
 #include "luxel/frame/renderer.hpp"
 #include "luxel/frame/world_envmaps.hpp"
 
+#include <glm/gtc/packing.hpp>
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
+#include <cstdlib>
+#include <array>
+#include <string>
 #include <vector>
 
 namespace luxel::frame {
@@ -107,6 +114,90 @@ TEST(WorldEnvmaps, WorldWithoutSamplesDrawsNoEnvMap) {
   FrameSettings f{160, 90, 4};
   f.color_correction = false;
   EXPECT_TRUE(render_frame(without_samples, f).rgba == render_frame(without_envmaps, f).rgba);
+}
+
+/// A cube map of one linear colour on every face.
+scenes::Texture uniform_cube(const glm::vec3& c) {
+  scenes::Texture t;
+  t.name = "cube";
+  t.shape = scenes::TextureShape::cube;
+  t.color_space = scenes::ColorSpace::linear;
+  t.mipmaps = false;
+  scenes::PixelImage face;
+  face.width = face.height = 2;
+  for (int i = 0; i < 4; ++i) face.rgba32f.insert(face.rgba32f.end(), {c.r, c.g, c.b, 1.0f});
+  t.faces.assign(6, face);
+  return t;
+}
+
+const glm::vec3 kRed(0.4f, 0.1f, 0.0f), kGreen(0.1f, 0.4f, 0.05f);
+
+/// Looking down at one LightmappedGeneric mesh of black albedo (only its env map shows), drawn
+/// from both sides, in two face groups: the left half faces up (+Z), the right half down (-Z).
+/// Sample 0 (red) lies below the surface near its centre, sample 1 (green) high above: the left
+/// half has only green in front of it, the right half both, red the nearer. The mesh's centre
+/// is nearest red.
+scenes::Scene two_faced_floor(bool with_samples) {
+  scenes::Scene s = top_down();
+  const glm::vec3 zero(0.0f), basis[3] = {zero, zero, zero};
+  attach_lightmaps(s, zero, basis);
+  s.textures.push_back(uniform_cube(kRed));
+  s.textures.push_back(uniform_cube(kGreen));
+  if (with_samples) {
+    s.cubemap_samples.push_back(scenes::CubemapSample{{0.0f, 0.0f, -0.5f}, 16, int(s.textures.size()) - 2});
+    s.cubemap_samples.push_back(scenes::CubemapSample{{0.0f, 0.0f, 3.0f}, 16, int(s.textures.size()) - 1});
+  }
+  scenes::Material m;
+  m.family = scenes::ShaderFamily::lightmapped_generic;
+  m.color = {0.0f, 0.0f, 0.0f, 1.0f};
+  m.envmap = scenes::EnvmapSource::nearest_sample;
+  m.double_sided = true;
+  s.materials = {m};
+  scenes::Mesh left = square(-1, -1, 0, 1, 0, 0), right = square(0, -1, 1, 1, 0, 0, true);
+  right.normals.assign(4, {0.0f, 0.0f, -1.0f});
+  scenes::Mesh mesh = left;
+  auto& indices = std::get<std::vector<uint16_t>>(mesh.indices);
+  for (uint16_t i : std::get<std::vector<uint16_t>>(right.indices)) indices.push_back(uint16_t(i + 4));
+  mesh.positions.insert(mesh.positions.end(), right.positions.begin(), right.positions.end());
+  mesh.normals.insert(mesh.normals.end(), right.normals.begin(), right.normals.end());
+  mesh.uv0.insert(mesh.uv0.end(), right.uv0.begin(), right.uv0.end());
+  mesh.uv1 = mesh.uv0;
+  s.meshes = {mesh};
+  return s;
+}
+
+/// The 8-bit value the frame writes for linear colour `c` reflected at scale 1: the cube's
+/// half-float texel (RGBA16F upload) x ENV_MAP_SCALE 1 x $envmaptint 1, the LINEAR tone map at
+/// exposure 1, the sRGB write.
+std::array<double, 3> reflected(const glm::vec3& c) {
+  std::array<double, 3> out{};
+  for (int k = 0; k < 3; ++k) out[size_t(k)] = 255.0 * srgb_encode(double(glm::unpackHalf1x16(glm::packHalf1x16(c[k]))));
+  return out;
+}
+
+/// Pixels of columns [x0, x1) more than one step from `want`.
+int off_in(const rasterizer::Image& image, int x0, int x1, const std::array<double, 3>& want) {
+  int off = 0;
+  for (int y = 0; y < image.height; ++y)
+    for (int x = x0; x < x1; ++x)
+      for (int c = 0; c < 3; ++c) off += std::abs(image.pixel(x, y)[c] - want[size_t(c)]) > 1.0;
+  return off;
+}
+
+TEST(WorldEnvmaps, EachFaceGroupOfAMeshReflectsItsOwnSampleInTheFrame) {
+  FrameSettings f{64, 64, 4};
+  f.exposure = 1.0f;
+  f.color_correction = false;
+  for (shading::ShaderModel card : {shading::ShaderModel::ps_2_0, shading::ShaderModel::ps_3_0}) {
+    SCOPED_TRACE(std::string(shading::caps(card).name));
+    f.model = card;
+    const rasterizer::Image image = render_frame(two_faced_floor(true), f);
+    // Two columns either side of the seam are left out (MSAA mixes the groups there).
+    EXPECT_EQ(off_in(image, 0, 30, reflected(kGreen)), 0) << "the left half faces only green";
+    EXPECT_EQ(off_in(image, 34, 64, reflected(kRed)), 0) << "the right half faces both, red nearer";
+    const rasterizer::Image none = render_frame(two_faced_floor(false), f);
+    EXPECT_EQ(off_in(none, 0, 64, {0.0, 0.0, 0.0}), 0) << "no samples: no env map, black albedo";
+  }
 }
 
 }  // namespace
