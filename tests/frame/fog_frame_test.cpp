@@ -22,8 +22,8 @@
 namespace luxel::frame {
 namespace {
 
-constexpr int kSize = 96;
-constexpr double kNear = 0.5, kFar = 100.0, kTanHalfFov = 0.57735026918962573;  // 60 degrees
+constexpr int kFogSide = 96;
+constexpr double kEyeNear = 0.5, kEyeFar = 100.0, kTanHalfFov = 0.57735026918962573;  // 60 degrees
 constexpr double kStart = 5.0, kEnd = 30.0, kMaxDensity = 0.7;
 const glm::dvec3 kColor(0.8, 0.6, 0.1), kFogColor(0.1, 0.3, 0.9);
 constexpr double kX0 = -5.0, kX1 = 5.0, kY0 = 1.0, kY1 = 40.0;  // the floor, at z = 0
@@ -38,8 +38,8 @@ scenes::Scene fogged_floor() {
   c.up = {0, 0, 1};
   c.vertical_fov = float(2.0 * std::atan(kTanHalfFov));
   c.aspect = 1;
-  c.near_plane = float(kNear);
-  c.far_plane = float(kFar);
+  c.near_plane = float(kEyeNear);
+  c.far_plane = float(kEyeFar);
   s.cameras.push_back(c);
   scenes::Material m;
   m.family = scenes::ShaderFamily::unlit_generic;
@@ -53,7 +53,7 @@ scenes::Scene fogged_floor() {
 }
 
 /// D3D's projected z (perspectiveRH_ZO) of a point at view depth d.
-double proj_z(double d) { return kFar * (d - kNear) / (kFar - kNear); }
+double proj_z(double d) { return kEyeFar * (d - kEyeNear) / (kEyeFar - kEyeNear); }
 
 /// ps_2_0's visibility at the vertex shader: RangeFog with c16 = (end/range, 1, 1 - maxDensity, 1/range).
 double vertex_visibility(double d) { return std::max(1.0 - kMaxDensity, (kEnd - proj_z(d)) / (kEnd - kStart)); }
@@ -64,7 +64,7 @@ struct Hit {
 };
 
 Hit floor_hit(int i, int j) {
-  const double ndc_x = 2.0 * (i + 0.5) / kSize - 1.0, ndc_y = 1.0 - 2.0 * (j + 0.5) / kSize;
+  const double ndc_x = 2.0 * (i + 0.5) / kFogSide - 1.0, ndc_y = 1.0 - 2.0 * (j + 0.5) / kFogSide;
   if (ndc_y >= 0.0) return {};
   const double s = -1.0 / (ndc_y * kTanHalfFov);  // along (ndc_x t, 1, ndc_y t) from z = 1 to z = 0
   const Hit h{true, s * ndc_x * kTanHalfFov, s};
@@ -106,7 +106,7 @@ glm::dvec3 expected(const Hit& h, shading::ShaderModel card) {
 }
 
 TEST(FogFrame, RangeFogPerPixelFromPs2bAndPerVertexOnPs20) {
-  FrameSettings f{kSize, kSize, 1};
+  FrameSettings f{kFogSide, kFogSide, 1};
   f.exposure = 1.0f;
   f.color_correction = false;
   const scenes::Scene scene = fogged_floor();
@@ -117,8 +117,8 @@ TEST(FogFrame, RangeFogPerPixelFromPs2bAndPerVertexOnPs20) {
     f.model = card;
     const rasterizer::Image image = render_frame(scene, f);
     int off = 0;
-    for (int j = 0; j < kSize; ++j)
-      for (int i = 0; i < kSize; ++i) {
+    for (int j = 0; j < kFogSide; ++j)
+      for (int i = 0; i < kFogSide; ++i) {
         const Hit h = floor_hit(i, j);
         if (!h.floor) continue;
         const glm::dvec3 want = expected(h, card);

@@ -91,6 +91,14 @@ double srgb_encode(double linear) {
   return linear <= 0.0031308 ? 12.92 * linear : 1.055 * std::pow(linear, 1 / 2.4) - 0.055;
 }
 
+double srgb_decode(double encoded) {
+  return encoded <= 0.04045 ? encoded / 12.92 : std::pow((encoded + 0.055) / 1.055, 2.4);
+}
+
+int srgb8(double linear) { return static_cast<int>(std::floor(srgb_encode(linear) * 255 + 0.5)); }
+
+double through_srgb8(double linear) { return srgb_decode(srgb8(linear) / 255.0); }
+
 void attach_test_bake(scenes::Scene& scene) {
   static std::mutex mutex;
   static std::map<std::string, bake::BakeResult> bakes;  // per scene name: built-ins bake once per binary

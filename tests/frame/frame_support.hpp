@@ -29,6 +29,12 @@ struct RenderedFrame {
 
 /// The sRGB encode (IEC 61966-2-1), written out here so that tests check the frame's against it.
 double srgb_encode(double linear);
+/// The sRGB decode of an encoded value in [0, 1].
+double srgb_decode(double encoded);
+/// What an 8-bit sRGB target stores for a linear value, as a byte.
+int srgb8(double linear);
+/// A linear value through an 8-bit sRGB target and back.
+double through_srgb8(double linear);
 
 /// A scene with one camera looking straight down at [-1, 1]^2 (orthographic; screen right +X, up
 /// +Y), nothing else.

@@ -19,7 +19,7 @@
 namespace luxel::frame {
 namespace {
 
-constexpr int kSide = 17;  // odd: a centre pixel
+constexpr int kSkySide = 17;  // odd: a centre pixel
 constexpr std::array<std::array<uint8_t, 3>, 6> kFaceColors = {
     {{200, 40, 40}, {40, 200, 40}, {40, 40, 200}, {200, 200, 40}, {40, 200, 200}, {200, 40, 200}}};
 
@@ -55,15 +55,15 @@ TEST(SkyFrame, EachAxisSeesItsFace) {
     glm::vec3 look, up;
   } axes[6] = {{{1, 0, 0}, {0, 0, 1}}, {{-1, 0, 0}, {0, 0, 1}}, {{0, 1, 0}, {0, 0, 1}},
                {{0, -1, 0}, {0, 0, 1}}, {{0, 0, 1}, {0, 1, 0}}, {{0, 0, -1}, {0, 1, 0}}};
-  FrameSettings f{kSide, kSide, 1};
+  FrameSettings f{kSkySide, kSkySide, 1};
   f.exposure = 1.0f;
   f.color_correction = false;
   for (size_t face = 0; face < 6; ++face) {
     SCOPED_TRACE("face " + std::to_string(face));
     const rasterizer::Image image = render_frame(sky_only(axes[face].look, axes[face].up), f);
     // The centre and its 3x3 neighbourhood (a quarter of the face's angle around the axis).
-    for (int y = kSide / 2 - 1; y <= kSide / 2 + 1; ++y)
-      for (int x = kSide / 2 - 1; x <= kSide / 2 + 1; ++x)
+    for (int y = kSkySide / 2 - 1; y <= kSkySide / 2 + 1; ++y)
+      for (int x = kSkySide / 2 - 1; x <= kSkySide / 2 + 1; ++x)
         for (int c = 0; c < 3; ++c)
           EXPECT_LE(std::abs(int(image.pixel(x, y)[c]) - int(kFaceColors[face][size_t(c)])), 1)
               << "pixel (" << x << ", " << y << "), channel " << c;
@@ -71,7 +71,7 @@ TEST(SkyFrame, EachAxisSeesItsFace) {
 }
 
 TEST(SkyFrame, AWideViewSeesUpAboveAndTheRightHandedSides) {
-  FrameSettings f{kSide, kSide, 1};
+  FrameSettings f{kSkySide, kSkySide, 1};
   f.exposure = 1.0f;
   f.color_correction = false;
   // 120 degrees: the edges' directions leave the +X face (tan 60 x 16/17 > 1).
@@ -80,9 +80,9 @@ TEST(SkyFrame, AWideViewSeesUpAboveAndTheRightHandedSides) {
     int x, y;
     size_t face;
     const char* where;
-  } probes[] = {{kSide / 2, 0, 4, "top: +Z"},     {kSide / 2, kSide - 1, 5, "bottom: -Z"},
-                {0, kSide / 2, 2, "left: +Y"},    {kSide - 1, kSide / 2, 3, "right: -Y"},
-                {kSide / 2, kSide / 2, 0, "centre: +X"}};
+  } probes[] = {{kSkySide / 2, 0, 4, "top: +Z"},     {kSkySide / 2, kSkySide - 1, 5, "bottom: -Z"},
+                {0, kSkySide / 2, 2, "left: +Y"},    {kSkySide - 1, kSkySide / 2, 3, "right: -Y"},
+                {kSkySide / 2, kSkySide / 2, 0, "centre: +X"}};
   for (const auto& p : probes)
     for (int c = 0; c < 3; ++c)
       EXPECT_LE(std::abs(int(image.pixel(p.x, p.y)[c]) - int(kFaceColors[p.face][size_t(c)])), 1) << p.where << ", channel " << c;

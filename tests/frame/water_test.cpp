@@ -40,17 +40,6 @@ constexpr double kSpread = 2;
 
 // ---- Reference math ---------------------------------------------------------------------------
 
-double srgb_encode(double linear) {
-  linear = std::clamp(linear, 0.0, 1.0);
-  return linear <= 0.0031308 ? 12.92 * linear : 1.055 * std::pow(linear, 1 / 2.4) - 0.055;
-}
-double srgb_decode(double encoded) {
-  return encoded <= 0.04045 ? encoded / 12.92 : std::pow((encoded + 0.055) / 1.055, 2.4);
-}
-/// What an 8-bit sRGB target stores for a linear value, as a byte.
-int srgb8(double linear) { return static_cast<int>(std::floor(srgb_encode(linear) * 255 + 0.5)); }
-/// A linear value through an 8-bit sRGB target and back.
-double through_srgb8(double linear) { return srgb_decode(srgb8(linear) / 255.0); }
 /// A [0, 1] value through an 8-bit UNORM channel and back (alpha).
 double through_unorm8(double x) { return std::floor(std::clamp(x, 0.0, 1.0) * 255 + 0.5) / 255; }
 /// $fogcolor and $reflecttint are gamma-space: mathlib's (i / 255)^2.2 for i = round(255 x).
