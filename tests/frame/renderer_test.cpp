@@ -331,6 +331,85 @@ TEST(Renderer, FourDirectionalLightsSumOnTheBumpedPath) {
     expect_everywhere(render_with_lights(s, model, 4), 0, kRendererSize, expected, shading::caps(model).name.data());
 }
 
+// A point light with constant, linear and quadratic terms and a spot light whose cone edge
+// crosses the flat bumped square, against the SDK's formulas in double (docs/fidelity.md#model-lights):
+// per light 1 / (a0 + a1 d + a2 d^2), the spot's sat(max(1e-4, (dot(axis, -L) - cos outer) /
+// (cos inner - cos outer))^exponent), Lambert per pixel; the attenuation at the square's corners
+// interpolated over its two triangles (the SDK's, the default) or at each pixel
+// (--pixel-attenuation). The pixels on the triangles' shared diagonal, shaded from both, are
+// left out of the per-vertex check.
+TEST(Renderer, PointAndSpotLightsEndToEndOnTheBumpedPath) {
+  scenes::Scene s = lit_by_cube_and_sun(false);
+  add_flat_bump_map(s);
+  scenes::Light point, spot;
+  point.position = {0.3f, -0.2f, 0.9f};
+  point.color = {1.2f, 0.9f, 0.6f};
+  point.constant = 0.4f, point.linear = 0.3f, point.quadratic = 0.8f;
+  spot.type = scenes::LightType::spot;
+  spot.position = {-0.4f, 0.3f, 1.2f};
+  spot.direction = glm::normalize(glm::vec3(0.2f, -0.1f, -1.0f));
+  spot.color = {0.9f, 1.1f, 1.3f};
+  spot.inner_cone = 0.25f, spot.outer_cone = 0.6f, spot.spot_exponent = 2.0f;
+  s.lights = {point, spot};
+  // Attenuation of light `l` at world point p, in double.
+  auto attenuation = [](const scenes::Light& l, const glm::dvec3& p) {
+    const glm::dvec3 v = glm::dvec3(l.position) - p;
+    const double d = glm::length(v);
+    double a = 1.0 / (double(l.constant) + double(l.linear) * d + double(l.quadratic) * d * d);
+    if (l.type == scenes::LightType::spot) {
+      const double cos_inner = std::cos(double(l.inner_cone)), cos_outer = std::cos(double(l.outer_cone));
+      const double c = (glm::dot(glm::dvec3(l.direction), -v / d) - cos_outer) / (cos_inner - cos_outer);
+      a *= std::clamp(std::pow(std::max(c, 1e-4), double(l.spot_exponent)), 0.0, 1.0);
+    }
+    return a;
+  };
+  const glm::dvec3 corner[4] = {{-1, -1, 0}, {1, -1, 0}, {1, 1, 0}, {-1, 1, 0}};
+  // The attenuation at p interpolated from the corners over square()'s triangles (0, 1, 2), (0, 2, 3).
+  auto interpolated = [&](const scenes::Light& l, const glm::dvec3& p) {
+    const bool lower = p.x >= p.y;  // (0, 1, 2): below the diagonal from corner 0 to corner 2
+    const glm::dvec3 a = corner[0], b = corner[lower ? 1 : 2], c = corner[lower ? 2 : 3];
+    const double area = (b.x - a.x) * (c.y - a.y) - (c.x - a.x) * (b.y - a.y);
+    const double wb = ((p.x - a.x) * (c.y - a.y) - (c.x - a.x) * (p.y - a.y)) / area;
+    const double wc = ((b.x - a.x) * (p.y - a.y) - (p.x - a.x) * (b.y - a.y)) / area;
+    return (1.0 - wb - wc) * attenuation(l, a) + wb * attenuation(l, b) + wc * attenuation(l, c);
+  };
+  const double t = 2.0 * 128.0 / 255.0 - 1.0;  // the flat normal map's 8-bit texel
+  const glm::dvec3 n = glm::normalize(glm::dvec3(t, t, 1.0));
+  const double albedo[3] = {0.8, 0.6, 0.4}, cube[3] = {0.5, 0.25, 0.125};
+  double gap = 0.0;  // between the two modes' expectations
+  for (bool per_pixel : {false, true})
+    for (shading::ShaderModel model : {shading::ShaderModel::ps_2_b, shading::ShaderModel::ps_3_0}) {
+      FrameSettings f{kRendererSize, kRendererSize, 4};
+      f.model = model;
+      f.pixel_attenuation = per_pixel;
+      const rasterizer::Image image = render_frame(s, f);
+      int off = 0, checked = 0;
+      for (int y = 0; y < kRendererSize; ++y)
+        for (int x = 0; x < kRendererSize; ++x) {
+          const glm::dvec3 p(-1.0 + 2.0 * (x + 0.5) / kRendererSize, 1.0 - 2.0 * (y + 0.5) / kRendererSize, 0.0);
+          if (!per_pixel && std::abs(p.x - p.y) < 3.0 / kRendererSize) continue;
+          glm::dvec3 want_mode[2];
+          for (int mode = 0; mode < 2; ++mode) {
+            glm::dvec3 lit(cube[0], cube[1], cube[2]);
+            for (const scenes::Light& l : s.lights) {
+              const double a = mode == 1 ? attenuation(l, p) : interpolated(l, p);
+              lit += glm::dvec3(l.color) * a * std::max(0.0, glm::dot(n, glm::normalize(glm::dvec3(l.position) - p)));
+            }
+            for (int c = 0; c < 3; ++c) want_mode[mode][c] = 255 * srgb_encode(albedo[c] * lit[c]);
+          }
+          const glm::dvec3& want = want_mode[per_pixel ? 1 : 0];
+          for (int c = 0; c < 3; ++c) {
+            off += std::abs(image.pixel(x, y)[c] - want[c]) > 1.0;
+            gap = std::max(gap, std::abs(want_mode[0][c] - want_mode[1][c]));
+          }
+          ++checked;
+        }
+      EXPECT_EQ(off, 0) << shading::caps(model).name << (per_pixel ? ", per pixel" : ", per vertex");
+      EXPECT_GT(checked, kRendererSize * kRendererSize * 3 / 4);
+    }
+  EXPECT_GT(gap, 5.0) << "per-vertex and per-pixel attenuation must differ on this square";
+}
+
 TEST(Renderer, LightmappedReadsTheFlatMapOrWeighsTheBasisMaps) {
   scenes::Scene s = top_down();
   const glm::vec3 basis[3] = {{0.3f, 0.1f, 0.2f}, {0.6f, 0.2f, 0.1f}, {0.9f, 0.3f, 0.05f}};
