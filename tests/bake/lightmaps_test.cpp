@@ -1,6 +1,7 @@
 // RNM lightmaps against answers known in closed form: a white furnace (uniform sky over a lone
-// quad), one distant light from each RNM basis direction and between them, the radiosity of a
-// closed box (the geometric series of bounces), and borders that bilinear filtering may read.
+// quad), one distant light from each RNM basis direction and between them, a point light's and a
+// spot light's falloff with a blocker's hard shadow, the radiosity of a closed box (the geometric
+// series of bounces), and borders that bilinear filtering may read.
 
 #include "bake_support.hpp"
 
@@ -8,7 +9,9 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <random>
 
 namespace luxel::bake::test {
@@ -135,6 +138,85 @@ TEST(BakeLightmaps, ADistantLightLandsInTheBasisMapsByItsCosinesToTheBasis) {
               << "light toward (" << c.to_light.x << ", " << c.to_light.y << ", " << c.to_light.z << "), map " << k;
         }
   }
+}
+
+// A point light with constant, linear and quadratic terms and a spot light across its cone over a
+// black floor (no bounce), a black blocker between the point light and part of the floor: at
+// each luxel centre the flat map is, from vrad's rules worked out here (docs/fidelity.md#bake-vrad),
+// the sum over the lights the luxel sees of color x 1 / (a0 + a1 d + a2 d^2) x cos to the normal,
+// the spot's also x sat((cos a - cos outer) / (cos inner - cos outer))^exponent x cos a inside its
+// outer cone; a luxel in the blocker's umbra gets none of the point light.
+TEST(BakeLightmaps, PointAndSpotLightsFallOffAndABlockerCastsAHardShadow) {
+  scenes::Scene s;
+  s.name = "test:lit floor";
+  s.materials = {lightmapped(glm::vec3(0.0f))};
+  s.lightmap_luxel_size = 4;
+  scenes::Mesh m = empty_mesh("floor and blocker", 0);
+  add_quad(m, {-32, -32, 0}, {64, 0, 0}, {0, 64, 0}, 0, 0, 2, 16);    // the floor, cell (0, 0)
+  add_quad(m, {-24, -4, 20}, {0, 12, 0}, {13.5f, 0, 0}, 1, 0, 2, 16);  // facing down, cell (1, 0)
+  s.meshes = {m};
+  scenes::Light point, spot;
+  point.position = {-10, 5, 40};
+  point.color = {300, 200, 100};
+  point.constant = 0.5f, point.linear = 0.02f, point.quadratic = 0.05f;
+  spot.type = scenes::LightType::spot;
+  spot.position = {20, -15, 30};
+  spot.direction = glm::normalize(glm::vec3(-0.3f, 0.2f, -1.0f));
+  spot.color = {4000, 5000, 6000};
+  spot.inner_cone = 0.2f, spot.outer_cone = 0.45f, spot.spot_exponent = 1.5f;
+  s.lights = {point, spot};
+  BakeSettings settings = quick_bake(16);
+  settings.supersample = 1;  // each luxel's direct light at its centre
+  const BakeResult r = bake(s, settings);
+
+  auto falloff = [](const scenes::Light& l, double d) {
+    d = std::max(d, 1.0);
+    return 1.0 / (double(l.constant) + double(l.linear) * d + double(l.quadratic) * d * d);
+  };
+  // Whether the segment from p to the light crosses the blocker (z = 20, x in [-24, -10.5], y in [-4, 8]):
+  // no luxel's ray passes within half an inch of its edges.
+  auto blocked = [](const glm::dvec3& p, const glm::dvec3& light) {
+    const double t = (20.0 - p.z) / (light.z - p.z);
+    if (t <= 0.0 || t >= 1.0) return false;
+    const glm::dvec3 q = p + t * (light - p);
+    return q.x > -24.0 && q.x < -10.5 && q.y > -4.0 && q.y < 8.0;
+  };
+  int shadowed = 0, in_cone = 0, checked = 0;
+  const int side = r.lightmaps.width;
+  for (int y = 1; y <= 16; ++y)
+    for (int x = 1; x <= 16; ++x) {
+      const glm::dvec3 p(-32.0 + 4.0 * (x - 1) + 2.0, 32.0 - 4.0 * (y - 1) - 2.0, 0.0);
+      glm::dvec3 want(0.0);
+      bool edge = false;  // a luxel whose centre's ray grazes the blocker's edge, or the cone's
+      for (const scenes::Light& l : s.lights) {
+        const glm::dvec3 v = glm::dvec3(l.position) - p;
+        const double d = glm::length(v);
+        const glm::dvec3 to_light = v / d;
+        double a = falloff(l, d) * std::max(0.0, to_light.z);
+        if (l.type == scenes::LightType::spot) {
+          const double cos_a = glm::dot(glm::dvec3(l.direction), -to_light);
+          const double cos_inner = std::cos(double(l.inner_cone)), cos_outer = std::cos(double(l.outer_cone));
+          edge = edge || std::abs(cos_a - cos_outer) < 1e-3;
+          if (cos_a <= cos_outer) continue;
+          ++in_cone;
+          a *= std::pow(std::clamp((cos_a - cos_outer) / (cos_inner - cos_outer), 0.0, 1.0), double(l.spot_exponent)) * cos_a;
+        } else if (blocked(p, glm::dvec3(l.position))) {
+          ++shadowed;
+          continue;
+        }
+        want += glm::dvec3(l.color) * a;
+      }
+      if (edge) continue;
+      const size_t texel = size_t(y) * size_t(side) + size_t(x);
+      ASSERT_EQ(r.lightmaps.coverage[texel], LuxelCoverage::covered);
+      for (int c = 0; c < 3; ++c)
+        EXPECT_NEAR(r.lightmaps.maps[0][texel][c], want[c], 1e-3 * want[c] + 1e-4) << "luxel (" << x << ", " << y << "), channel " << c;
+      ++checked;
+    }
+  EXPECT_GT(shadowed, 10) << "the blocker's umbra covers some luxels";
+  EXPECT_GT(in_cone, 10) << "the spot's cone covers some luxels";
+  EXPECT_LT(in_cone, checked) << "and not all";
+  std::printf("point and spot: %d luxels checked, %d in the umbra, %d in the cone\n", checked, shadowed, in_cone);
 }
 
 TEST(BakeLightmaps, TheBasisFollowsTheTangentFrame) {
