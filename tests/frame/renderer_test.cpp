@@ -4,6 +4,7 @@
 // and depth order.
 
 #include "frame/frame_support.hpp"
+#include "shading/phong_reference.hpp"
 
 #include "luxel/frame/renderer.hpp"
 
@@ -215,6 +216,70 @@ TEST(Renderer, PhongOnlyForBumpedModelsFromPs2b) {
   int brighter = 0;
   for (size_t i = 0; i < ps30.rgba.size(); ++i) brighter += ps30.rgba[i] > plain30.rgba[i];
   EXPECT_GT(brighter, 0) << "Phong adds light on ps_3_0";
+}
+
+// The skin shader's material parameters reach it: $phongexponent, $phongboost, $phongtint and
+// $phongfresnelranges on a flat bumped square under one directional light, seen in perspective
+// (the view vector varies), against the Phong reference written from docs/fidelity.md#phong in
+// double (tests/shading/phong_reference.hpp) plus the ambient cube along the normal.
+TEST(Renderer, PhongParametersReachTheSkinShader) {
+  scenes::Scene s = lit_by_cube_and_sun(true);
+  add_flat_bump_map(s);
+  scenes::Material& m = s.materials[0];
+  m.phong = true;
+  m.phong_exponent = 8;
+  m.phong_boost = 3;
+  m.phong_tint = {1.0f, 0.7f, 0.4f};
+  m.phong_fresnel_ranges = {0.2f, 0.6f, 0.9f};
+  scenes::Camera& c = s.cameras[0];
+  c.projection = scenes::Projection::perspective;
+  c.position = {0.3f, -2.0f, 3.0f};
+  c.vertical_fov = 1.0f;
+  // The sun where the square mirrors the eye: a highlight in view.
+  const glm::dvec3 to_sun = glm::normalize(glm::dvec3(-0.3, 2.0, 3.0));
+  s.lights[0].direction = -glm::vec3(to_sun);
+  shading::source::testing::PhongReference ref;
+  ref.light_dir = glm::dvec3(glm::normalize(glm::vec3(to_sun)));
+  ref.light_color = {0.5, 0.375, 0.25};
+  ref.base = {0.8, 0.6, 0.4};
+  ref.exponent_constant = 8;
+  ref.boost = 3;
+  ref.tint = {1.0, 0.7, 0.4};
+  ref.fresnel_min = 0.2, ref.fresnel_mid = 0.6, ref.fresnel_max = 0.9;
+  const double t = 2.0 * 128.0 / 255.0 - 1.0;  // the flat normal map's 8-bit texel
+  const glm::dvec3 n = glm::normalize(glm::dvec3(t, t, 1.0));
+  // The ambient cube along n: the +Z side (0.5, 0.25, 0.125), the x and y sides 9.
+  const glm::dvec3 ambient = n.z * n.z * glm::dvec3(0.5, 0.25, 0.125) + (n.x * n.x + n.y * n.y) * glm::dvec3(9.0);
+  const glm::dvec3 eye(c.position), forward = glm::normalize(glm::dvec3(c.target) - eye);
+  const glm::dvec3 right = glm::normalize(glm::cross(forward, glm::dvec3(c.up))), up = glm::cross(right, forward);
+  const double tan_half = std::tan(0.5 * double(c.vertical_fov));
+  for (shading::ShaderModel model : {shading::ShaderModel::ps_2_b, shading::ShaderModel::ps_3_0}) {
+    const rasterizer::Image image = render_as(s, model);
+    int off = 0, checked = 0;
+    double specular_steps = 0.0;  // how much of a pixel the specular is: the test must see it
+    for (int y = 0; y < kRendererSize; ++y)
+      for (int x = 0; x < kRendererSize; ++x) {
+        const double ndc_x = 2.0 * (x + 0.5) / kRendererSize - 1.0, ndc_y = 1.0 - 2.0 * (y + 0.5) / kRendererSize;
+        const glm::dvec3 dir = forward + tan_half * (ndc_x * right + ndc_y * up);
+        if (dir.z >= 0.0) continue;
+        const glm::dvec3 p = eye - (eye.z / dir.z) * dir;
+        if (std::abs(p.x) > 0.9 || std::abs(p.y) > 0.9) continue;  // away from the square's edges
+        const glm::dvec3 view = glm::normalize(eye - p);
+        const glm::dvec3 lit = ref.base * ambient + ref(n, view);
+        shading::source::testing::PhongReference dull = ref;
+        dull.boost = 0.0;
+        const glm::dvec3 unlit_spec = ref.base * ambient + dull(n, view);
+        for (int ch = 0; ch < 3; ++ch) {
+          const double want = 255 * srgb_encode(lit[ch]);
+          off += std::abs(image.pixel(x, y)[ch] - want) > 1.0;
+          specular_steps = std::max(specular_steps, want - 255 * srgb_encode(unlit_spec[ch]));
+        }
+        ++checked;
+      }
+    EXPECT_EQ(off, 0) << shading::caps(model).name;
+    EXPECT_GT(checked, 150) << shading::caps(model).name;
+    EXPECT_GT(specular_steps, 10.0) << "the specular must show for the parameters to be tested";
+  }
 }
 
 // $basemapalphaphongmask: the skin shader takes the normal (0, 0, 1) and the mask from the base
