@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
 #include <map>
 #include <memory>
 #include <mutex>
@@ -98,6 +99,14 @@ double srgb_decode(double encoded) {
 int srgb8(double linear) { return static_cast<int>(std::floor(srgb_encode(linear) * 255 + 0.5)); }
 
 double through_srgb8(double linear) { return srgb_decode(srgb8(linear) / 255.0); }
+
+int channels_off(const rasterizer::Image& image, int x0, int x1, const std::array<double, 3>& want) {
+  int off = 0;
+  for (int y = 0; y < image.height; ++y)
+    for (int x = x0; x < x1; ++x)
+      for (int c = 0; c < 3; ++c) off += std::abs(image.pixel(x, y)[c] - want[size_t(c)]) > 1.0;
+  return off;
+}
 
 void attach_test_bake(scenes::Scene& scene) {
   static std::mutex mutex;

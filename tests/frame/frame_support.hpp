@@ -4,6 +4,7 @@
 #include "luxel/frame/renderer.hpp"
 #include "luxel/scenes/builtin.hpp"
 
+#include <array>
 #include <cstddef>
 #include <memory>
 #include <string_view>
@@ -35,6 +36,8 @@ double srgb_decode(double encoded);
 int srgb8(double linear);
 /// A linear value through an 8-bit sRGB target and back.
 double through_srgb8(double linear);
+/// Channel values in columns [x0, x1) of `image` more than one 8-bit step from `want` (rgb).
+int channels_off(const rasterizer::Image& image, int x0, int x1, const std::array<double, 3>& want);
 
 /// A scene with one camera looking straight down at [-1, 1]^2 (orthographic; screen right +X, up
 /// +Y), nothing else.
