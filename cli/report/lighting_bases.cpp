@@ -111,6 +111,10 @@ std::vector<Environment> published_environments(const ReportSettings& s) {
 std::vector<std::filesystem::path> probe_files(const std::string& folder, std::vector<std::string>& notes) {
   std::vector<std::filesystem::path> files;
   std::error_code ec;
+  if (folder.empty()) {
+    notes.push_back("probes: none given; the probe rows are skipped (--probes DIR)");
+    return files;
+  }
   if (!std::filesystem::is_directory(folder, ec)) {
     notes.push_back("probes: " + folder + " is not a folder; the probe rows are skipped (--probes DIR)");
     return files;

@@ -146,6 +146,11 @@ TEST(ReportCommandProbes, AMissingFolderSkipsTheProbeRowsWithANote) {
                                 " --out " + out.string() + " 2>/dev/null");
   ASSERT_EQ(run.exit_code, 0) << run.out;
   EXPECT_NE(run.out.find("is not a folder; the probe rows are skipped"), std::string::npos) << run.out;
+  // Without --probes: the same rows, and a note that none was given.
+  const Process none = run_luxel("report speed-error --sections lighting_bases --normals 20 --grid 16 --repeats 1 --out " +
+                                 (out / "no_option").string() + " 2>/dev/null");
+  ASSERT_EQ(none.exit_code, 0) << none.out;
+  EXPECT_NE(none.out.find("probes: none given; the probe rows are skipped"), std::string::npos) << none.out;
   EXPECT_EQ(nlohmann::json::parse(test::file_text(out / "speed_error.json"))["sections"][0]["rows"].size(), 9u);
   fs::remove_all(out);
 }
