@@ -24,7 +24,7 @@ std::vector<uint8_t> render(std::string_view name, const FrameSettings& settings
   return f.image.rgba;
 }
 
-void check(std::string_view name, const FrameSettings& settings) {
+void check_fast_paths(std::string_view name, const FrameSettings& settings) {
   rasterizer::DrawStats all_on_stats, all_off_stats;
   const std::vector<uint8_t> all_on = render(name, settings, FastPaths(), &all_on_stats);
   EXPECT_EQ(render(name, settings, FastPaths::none(), &all_off_stats), all_on) << name << ": all fast paths off";
@@ -38,13 +38,13 @@ void check(std::string_view name, const FrameSettings& settings) {
 }
 
 // Each switch keeps the bytes; a test per scene, so that gtest's shards share them out.
-TEST(FrameFastPaths, FillKeepsTheBytes) { check("fill", {kReduced ? 96 : 200, kReduced ? 64 : 120, 4}); }
-TEST(FrameFastPaths, TrisKeepsTheBytes) { check("tris", {kReduced ? 96 : 256, kReduced ? 64 : 144, 4}); }
+TEST(FrameFastPaths, FillKeepsTheBytes) { check_fast_paths("fill", {kReduced ? 96 : 200, kReduced ? 64 : 120, 4}); }
+TEST(FrameFastPaths, TrisKeepsTheBytes) { check_fast_paths("tris", {kReduced ? 96 : 256, kReduced ? 64 : 144, 4}); }
 TEST(FrameFastPaths, DemoKeepsTheBytes) {
-  check("demo", {kReduced ? 96 : 200, kReduced ? 64 : 120, 4});
-  check("demo", {131, 67, 1});
+  check_fast_paths("demo", {kReduced ? 96 : 200, kReduced ? 64 : 120, 4});
+  check_fast_paths("demo", {131, 67, 1});
 }
-TEST(FrameFastPaths, CourtyardKeepsTheBytes) { check("courtyard", {kReduced ? 96 : 200, kReduced ? 64 : 120, 4}); }
+TEST(FrameFastPaths, CourtyardKeepsTheBytes) { check_fast_paths("courtyard", {kReduced ? 96 : 200, kReduced ? 64 : 120, 4}); }
 
 }  // namespace
 }  // namespace luxel::frame
