@@ -521,7 +521,7 @@ class FrameBuilder {
   }
 
   /// The cube of cube-map sample `s`: its baked cube, or the sky while it has none or while the
-  /// frame captures the samples' cubes (docs/fidelity.md#env-maps-on-world-surfaces).
+  /// frame captures the samples' cubes (docs/fidelity.md#world-env-maps-vbsp).
   const GpuTexture* sample_cube(int s) const {
     const int baked = scene_.cubemap_samples[static_cast<size_t>(s)].texture;
     return baked >= 0 && !st_.settings.cubemap_capture ? cube_at(baked) : cube_at(scene_.sky_texture);

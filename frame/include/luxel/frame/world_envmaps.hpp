@@ -1,6 +1,6 @@
 #pragma once
 // Which cube-map sample each face of a world mesh reflects, as vbsp assigns the
-// literal `env_cubemap` of LightmappedGeneric (docs/fidelity.md#env-maps-on-world-surfaces). vbsp
+// literal `env_cubemap` of LightmappedGeneric (docs/fidelity.md#world-env-maps-vbsp). vbsp
 // works per brush side; a luxel mesh has no brush sides, so its triangles are grouped by the plane
 // they lie on. Per group: the centre is the mean of the group's vertices; the sample is the
 // nearest one in front of the plane (dot(normalize(sample - centre), normal) >= 0), else the
