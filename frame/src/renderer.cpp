@@ -352,8 +352,7 @@ class FrameBuilder {
     pass.geometry = geometry_of(*mesh);
     if (m.family == scenes::ShaderFamily::lightmapped_generic && m.envmap == scenes::EnvmapSource::nearest_sample)
       return add_reflecting_world(index, *mesh, m, offset, std::move(pass));
-    DrawTarget target{pass.state, pass.geometry, vertex_setup(*mesh, m, offset), st_.settings.count_shading,
-                      view_.water_fog && !translucent(m) && m.alpha == scenes::AlphaMode::opaque};
+    const DrawTarget target = draw_target(pass, *mesh, m, offset);
     switch (m.family) {
       case scenes::ShaderFamily::lightmapped_generic: pass.source = lightmapped(*mesh, m, target, envmap_of(m, index)); break;
       case scenes::ShaderFamily::vertexlit_generic: pass.source = vertexlit(index, *mesh, m, target); break;
@@ -371,6 +370,13 @@ class FrameBuilder {
     queue(m, index, std::move(pass));
   }
 
+  /// Where `pass` draws mesh `mesh` with material `m`: its own vertex stage; the refraction view's
+  /// opaque draws write the water fog factor to alpha.
+  DrawTarget draw_target(const Pass& pass, const scenes::Mesh& mesh, const scenes::Material& m, const glm::vec3& offset) {
+    return DrawTarget{pass.state, pass.geometry, vertex_setup(mesh, m, offset), st_.settings.count_shading,
+                      view_.water_fog && !translucent(m) && m.alpha == scenes::AlphaMode::opaque};
+  }
+
   /// A LightmappedGeneric mesh reflecting the samples (`env_cubemap`): one draw per sample its
   /// face groups reflect (world_envmaps.hpp); none without samples, as the engine draws it.
   void add_reflecting_world(size_t index, const scenes::Mesh& mesh, const scenes::Material& m, const glm::vec3& offset,
@@ -378,9 +384,7 @@ class FrameBuilder {
     std::unique_ptr<std::vector<EnvmapFaceGroup>>& groups = st_.envmap_groups[index];
     if (!groups) groups = std::make_unique<std::vector<EnvmapFaceGroup>>(envmap_face_groups(mesh, scene_.cubemap_samples));
     if (groups->empty()) {
-      DrawTarget target{pass.state, pass.geometry, vertex_setup(mesh, m, offset), st_.settings.count_shading,
-                        view_.water_fog && !translucent(m) && m.alpha == scenes::AlphaMode::opaque};
-      pass.source = lightmapped(mesh, m, target, nullptr);
+      pass.source = lightmapped(mesh, m, draw_target(pass, mesh, m, offset), nullptr);
       queue(m, index, std::move(pass));
       return;
     }
@@ -388,9 +392,7 @@ class FrameBuilder {
       Pass part;
       part.state = pass.state;
       part.geometry = Geometry::indexed(std::span<const uint32_t>(group.indices), static_cast<uint32_t>(mesh.vertex_count()));
-      DrawTarget target{part.state, part.geometry, vertex_setup(mesh, m, offset), st_.settings.count_shading,
-                        view_.water_fog && !translucent(m) && m.alpha == scenes::AlphaMode::opaque};
-      part.source = lightmapped(mesh, m, target, sample_cube(group.sample));
+      part.source = lightmapped(mesh, m, draw_target(part, mesh, m, offset), sample_cube(group.sample));
       queue(m, index, std::move(part));
     }
   }

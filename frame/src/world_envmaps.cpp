@@ -42,10 +42,9 @@ PlaneKey plane_key(const glm::vec3& normal, float distance) {
 std::vector<EnvmapFaceGroup> envmap_face_groups(const scenes::Mesh& mesh, std::span<const scenes::CubemapSample> samples) {
   if (samples.empty()) return {};
   const size_t triangles = mesh.triangle_count();
-  // Per plane: its normal, the sum and count of its vertices (each vertex once), its triangles.
+  // Per plane: its normal, its vertices (each once, after the sort below), its triangles.
   struct Plane {
     glm::vec3 normal{0.0f};
-    glm::dvec3 vertex_sum{0.0};
     std::vector<uint32_t> vertices;
     std::vector<size_t> triangles;
   };
@@ -63,7 +62,7 @@ std::vector<EnvmapFaceGroup> envmap_face_groups(const scenes::Mesh& mesh, std::s
     }
     const glm::vec3 normal = cross / area2;
     const auto [it, added] = plane_of_key.try_emplace(plane_key(normal, glm::dot(normal, a)), planes.size());
-    if (added) planes.push_back(Plane{normal, glm::dvec3(0.0), {}, {}});
+    if (added) planes.push_back(Plane{normal, {}, {}});
     Plane& plane = planes[it->second];
     plane.triangles.push_back(t);
     for (uint32_t i : v) plane.vertices.push_back(i);
@@ -71,8 +70,9 @@ std::vector<EnvmapFaceGroup> envmap_face_groups(const scenes::Mesh& mesh, std::s
   for (Plane& plane : planes) {
     std::sort(plane.vertices.begin(), plane.vertices.end());
     plane.vertices.erase(std::unique(plane.vertices.begin(), plane.vertices.end()), plane.vertices.end());
-    for (uint32_t i : plane.vertices) plane.vertex_sum += glm::dvec3(mesh.positions[i]);
-    const glm::vec3 centre(plane.vertex_sum / double(plane.vertices.size()));
+    glm::dvec3 sum(0.0);
+    for (uint32_t i : plane.vertices) sum += glm::dvec3(mesh.positions[i]);
+    const glm::vec3 centre(sum / double(plane.vertices.size()));
     const int sample = envmap_sample_for(centre, plane.normal, samples);
     for (size_t t : plane.triangles) sample_of_triangle[t] = sample;
   }
