@@ -198,7 +198,7 @@ Runner add_cost_command(CLI::App& app) {
     print_header(*options);
     for (const src::ShaderVariant& v : src::shader_catalog()) {
       if (options->shader != "all" && options->shader != v.option) continue;
-      const src::LaneTimes t = v.time(options->pixels, options->repeats);
+      const src::LaneTimes t = src::time_lanes(v, options->pixels, options->repeats);
       for (ShaderModel card : v.models) {
         const ShaderModel binary = *v.builds.binary_for(card);
         print_row(v, card, binary, v.measure(binary), t);

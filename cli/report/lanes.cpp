@@ -41,8 +41,8 @@ SectionResult run_lanes(const ReportSettings& s) {
   std::string differing;
   for (const src::ShaderVariant& v : src::shader_catalog()) {
     s.progress("lanes: " + v.family + " " + v.variant);
-    const src::LaneAgreement a = v.compare_lanes(kComparedPixels);
-    const src::LaneTimes t = v.time(kTimedPixels, s.timing_repeats);
+    const src::LaneAgreement a = src::compare_lanes(v, kComparedPixels);
+    const src::LaneTimes t = src::time_lanes(v, kTimedPixels, s.timing_repeats);
     shading::ShaderModel model = v.models.back();
     for (shading::ShaderModel m : v.models)
       if (m == shading::ShaderModel::ps_3_0) model = m;

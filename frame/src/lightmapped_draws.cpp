@@ -1,7 +1,6 @@
-// LightmappedGeneric draws (source_draws.hpp): the frame's combo space of world surfaces.
+// LightmappedGeneric draws (source_draws.hpp): every LightmappedGeneric combo (drawn_combos.hpp).
 
-#include "combo_slots.hpp"
-#include "combo_spaces.hpp"
+#include "drawn_combos.hpp"
 #include "source_draws.hpp"
 
 namespace luxel::frame {
@@ -11,11 +10,10 @@ using namespace shading::source;
 SourceDraw lightmapped_draw(const LightmappedCombo& combo, shading::ShaderModel model, const DrawTarget& target,
                             const LightmappedGenericParams& params, const LightmapPage& page, const glm::vec3& eye) {
   SourceDraw d;
-  const bool found = detail::with_combo<detail::kLightmappedSpace>(combo, [&]<LightmappedCombo C>() {
+  const bool found = detail::with_combo<detail::kLightmappedDrawn>(combo, [&]<LightmappedCombo C>() {
     LightmappedPixelShader<C> ps{params, page, eye};
     const shading::ShaderModel binary = detail::binary_for(C, model);
-    d = detail::make_source_draw(ps, target, "LightmappedGeneric", C.name(), binary,
-                                 detail::lightmapped_slots(C, binary));
+    d = detail::make_source_draw(ps, target, "LightmappedGeneric", C.name(), binary, counted_cost(C, binary).total_slots());
   });
   if (!found) detail::outside_space("LightmappedGeneric", combo.name());
   return d;

@@ -19,6 +19,7 @@
 #include "luxel/scenes/paths.hpp"
 #include "luxel/scenes/tangents.hpp"
 #include "luxel/shading/source/normalization_cube.hpp"
+#include "luxel/shading/source/registry.hpp"
 
 #include <glm/ext/matrix_clip_space.hpp>
 #include <glm/ext/matrix_double4x4.hpp>

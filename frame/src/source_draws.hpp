@@ -3,10 +3,10 @@
 // functor built through the shading adapter (shading/source/adapter.hpp), its vertex stage
 // (source_vertex.hpp) told which attributes to write.
 //
-// Each family compiles the combos the frame can choose (its "combo space", combo_spaces.hpp) in
-// its own source file, so the families compile in parallel; their slots are counted apart
-// (combo_slots.hpp). A combo outside the space is a frame bug (std::logic_error), never a
-// silent substitute.
+// Each family compiles the combos the frame can choose (drawn_combos.hpp, a part of the
+// registry's space) in its own source file, so the families compile in parallel; their slots are
+// the registry's counts. A combo outside them is a frame bug (std::logic_error), never a silent
+// substitute.
 
 #include "source_vertex.hpp"
 
@@ -141,7 +141,7 @@ SourceDraw make_source_draw(PS ps, const DrawTarget& target, std::string family,
 }
 
 [[noreturn]] inline void outside_space(const char* family, const std::string& combo) {
-  throw std::logic_error(std::string(family) + " combo " + combo + " is outside the frame's combo space");
+  throw std::logic_error(std::string(family) + " combo " + combo + " is outside the combos the frame draws");
 }
 
 }  // namespace detail

@@ -1,10 +1,9 @@
 #pragma once
-// Private: the VertexLitGeneric draw of a combo from one part of the frame's combo space
-// (combo_spaces.hpp). The combos without an env map compile in vertexlit_draws.cpp, those with
+// Private: the VertexLitGeneric draw of a combo from one half of the drawn combos
+// (drawn_combos.hpp). The combos without an env map compile in vertexlit_draws.cpp, those with
 // one in vertexlit_envmap_draws.cpp, so that the two build in parallel.
 
-#include "combo_slots.hpp"
-#include "combo_spaces.hpp"
+#include "drawn_combos.hpp"
 #include "source_draws.hpp"
 
 namespace luxel::frame::detail {
@@ -17,7 +16,7 @@ SourceDraw vertexlit_draw_in(const shading::source::VertexLitCombo& combo, shadi
   const bool found = with_combo<kSpace>(combo, [&]<VertexLitCombo C>() {
     shading::source::VertexLitPixelShader<C> ps{params};
     const shading::ShaderModel binary = binary_for(C, model);
-    d = make_source_draw(ps, target, "VertexLitGeneric", C.name(), binary, vertexlit_slots(C, binary));
+    d = make_source_draw(ps, target, "VertexLitGeneric", C.name(), binary, shading::source::counted_cost(C, binary).total_slots());
   });
   if (!found) outside_space("VertexLitGeneric", combo.name());
   return d;

@@ -6,7 +6,7 @@ namespace luxel::frame::detail {
 
 SourceDraw vertexlit_envmap_draw(const shading::source::VertexLitCombo& combo, shading::ShaderModel model,
                                  const DrawTarget& target, const shading::source::VertexLitParams& params) {
-  return vertexlit_draw_in<kVertexLitEnvmapSpace>(combo, model, target, params);
+  return vertexlit_draw_in<kVertexLitEnvmapDrawn>(combo, model, target, params);
 }
 
 }  // namespace luxel::frame::detail

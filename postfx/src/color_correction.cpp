@@ -4,6 +4,8 @@
 
 #include "counted_draw.hpp"
 
+#include "luxel/shading/source/registry.hpp"
+
 #include "luxel/rasterizer/draw.hpp"
 #include "luxel/rasterizer/framebuffer.hpp"
 #include "luxel/postfx/full_frame.hpp"
@@ -80,15 +82,16 @@ std::vector<rasterizer::Texture> set_lookups(std::span<const WeightedLut> luts, 
 
 /// One full-frame draw of pixel functor `Shader<C>` for the combo C of `Combo` that blends `luts`
 /// lookups, into a new target, counted into `tally`; its pixels resolved into `out`.
-template <class Combo, template <Combo> class Shader, class Params>
+template <class Combo, template <Combo> class Shader, auto kSpace, class Params>
 void draw_pass(rasterizer::Context& ctx, int width, int height, size_t luts, const auto& rectangle, const Params& params,
-               const ShaderTally& tally, rasterizer::Image& out, auto for_each_combo, auto measure) {
+               const ShaderTally& tally, rasterizer::Image& out) {
   // Invalidated (the draw writes every pixel) and discarded once resolved: the target lives in
   // tile memory only, and is never filled (rasterizer/framebuffer.hpp).
   rasterizer::ColorTarget target(width, height);
-  for_each_combo([&]<Combo C>() {
+  src::for_each_combo<kSpace>([&]<Combo C>() {
     if (C.luts != int(luts)) return;
-    counted_draw<Shader<C>>(tally, C.name(), measure.template operator()<C>(), [&](std::atomic<uint64_t>* pixels) {
+    const auto measure = [](shading::ShaderModel binary) { return src::counted_cost(C, binary); };
+    counted_draw<Shader<C>>(tally, C.name(), measure, [&](std::atomic<uint64_t>* pixels) {
       rasterizer::invalidate(ctx, target);
       draw_screen_rectangle(ctx, target, post_pass_state(), rectangle, Shader<C>{&params, pixels});
       rasterizer::discard(ctx, target);
@@ -128,10 +131,8 @@ void color_correct_into(rasterizer::Context& ctx, const rasterizer::Texture& fra
   check_frame_copy(frame, "color correction");
   params.frame.texture = &frame;
   const int w = frame.width(), h = frame.height();
-  draw_pass<src::ColorCorrectionCombo, src::ColorCorrectionPixelShader>(
-      ctx, w, h, luts.size(), screen_rectangle(w, h, whole_texture(w, h)), params, tally, out,
-      [](auto f) { src::for_each_color_correction_combo(f); },
-      []<src::ColorCorrectionCombo C>() { return &src::measure_color_correction<C>; });
+  draw_pass<src::ColorCorrectionCombo, src::ColorCorrectionPixelShader, src::kColorCorrectionSpace>(
+      ctx, w, h, luts.size(), screen_rectangle(w, h, whole_texture(w, h)), params, tally, out);
 }
 
 void color_correct_into(rasterizer::Context& ctx, const Bloom& bloom, std::span<const WeightedLut> luts,
@@ -143,9 +144,8 @@ void color_correct_into(rasterizer::Context& ctx, const Bloom& bloom, std::span<
   const std::vector<rasterizer::Texture> volumes = set_lookups(luts, params);
   const int w = frame.width(), h = frame.height();
   const ScreenRectanglePair rectangle{screen_rectangle(w, h, whole_texture(w, h)), screen_rectangle(w, h, bloom.bloom_rectangle())};
-  draw_pass<src::EnginePostCombo, src::EnginePostPixelShader>(
-      ctx, w, h, luts.size(), rectangle, params, tally, out, [](auto f) { src::for_each_engine_post_combo(f); },
-      []<src::EnginePostCombo C>() { return &src::measure_engine_post<C>; });
+  draw_pass<src::EnginePostCombo, src::EnginePostPixelShader, src::kEnginePostSpace>(ctx, w, h, luts.size(), rectangle,
+                                                                                  params, tally, out);
 }
 
 std::vector<float> color_correct_exact(const rasterizer::Image& frame, std::span<const WeightedTransform> transforms) {

@@ -7,6 +7,7 @@
 
 #include "luxel/shading/source/catalog.hpp"
 #include "luxel/shading/source/common.hpp"
+#include "luxel/shading/source/registry.hpp"
 #include "luxel/shading/source/vertexlit_vertex_shader.hpp"
 #include "cli/run_luxel.hpp"
 
@@ -149,7 +150,7 @@ TEST(CostCommand, PrintsOnlyTheVertexShaderWhenAskedFor) {
     EXPECT_TRUE(cols[2] == "vs_2_0" || cols[2] == "vs_3_0") << key;
   }
   int expected = 0;
-  for (const VertexLitVsCombo& c : kVertexLitVsCombos)
+  for (const VertexLitVsCombo& c : kVertexLitVsSpace)
     for (ShaderModel m : kVertexModels) expected += c.valid(m) ? 1 : 0;
   EXPECT_EQ(rows, expected) << "every vertex-shader combo on each vertex model it exists on (4 lights: vs_3_0 only)";
 }

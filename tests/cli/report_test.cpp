@@ -157,8 +157,9 @@ TEST(ReportCommandProbes, AMissingFolderSkipsTheProbeRowsWithANote) {
 
 // The lanes section: a row per catalog variant; the SIMD lane gives the scalar lane's bits for
 // every pixel, but where the combine stage samples a texture (the ps_2_0 normalization cube), which
-// the scalar lane filters in double: there within texture_test.cpp's bound of 1e-6 and one 8-bit
-// step.
+// the scalar lane filters in double: there within one 8-bit step, and within 1e-5 (texture_test.cpp
+// bounds a texel's difference at 1e-6; the combine stage carries it through dot products with up
+// to four lights, Half-Lambert's square and the timing's r² tone map).
 TEST(ReportLanes, SimdGivesTheScalarLanesBitsButWhereItSamplesATexture) {
   const std::filesystem::path out = std::filesystem::temp_directory_path() / ("luxel-report-lanes-" + std::to_string(getpid()));
   std::filesystem::remove_all(out);
@@ -175,7 +176,7 @@ TEST(ReportLanes, SimdGivesTheScalarLanesBitsButWhereItSamplesATexture) {
     EXPECT_EQ(named, row["error"]["differing_share"].get<double>() > 0.0) << name << ": the plot names the rows that differ";
     if (name.find("normcube") != std::string::npos) {
       ++texture_reading;
-      EXPECT_LE(row["error"]["max_abs"].get<double>(), 1e-6) << name;
+      EXPECT_LE(row["error"]["max_abs"].get<double>(), 1e-5) << name;
       EXPECT_LE(row["error"]["max_steps"].get<double>(), 1.0) << name;
     } else {
       EXPECT_EQ(row["error"]["max_abs"].get<double>(), 0.0) << name;

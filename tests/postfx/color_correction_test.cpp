@@ -8,6 +8,7 @@
 #include "lut_support.hpp"
 #include "scenes/temp_dir.hpp"
 
+#include "luxel/shading/source/registry.hpp"
 #include "luxel/postfx/color_correction.hpp"
 #include "luxel/postfx/full_frame.hpp"
 #include "luxel/postfx/grade.hpp"
@@ -156,7 +157,7 @@ TEST(ColorCorrection, PassGivesTheBytesOfTheScalarShaderAtEachPixel) {
   const WeightedLut weighted[] = {{&luts[0], 0.3f}, {&luts[1], 0.25f}, {&luts[2], 0.2f}, {&luts[3], 0.15f}};
   const rasterizer::Image frame = random_frame(150, 90, 17);  // not whole tiles or stamps
   rasterizer::Context ctx(2);
-  src::for_each_color_correction_combo([&]<src::ColorCorrectionCombo C>() {
+  src::for_each_combo<src::kColorCorrectionSpace>([&]<src::ColorCorrectionCombo C>() {
     const std::span<const WeightedLut> used(weighted, size_t(C.luts));
     const rasterizer::Image pass = color_correct(ctx, frame, used);
     const std::vector<glm::vec4> scalar = ScalarReference(frame, used).run<C>(frame.width, frame.height);

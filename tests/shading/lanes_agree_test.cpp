@@ -4,6 +4,7 @@
 
 #include "lanes.hpp"
 
+#include "luxel/shading/source/registry.hpp"
 #include "luxel/shading/source/fog.hpp"
 #include "luxel/shading/source/light_folding.hpp"
 #include "luxel/shading/source/vertexlit_vertex_shader.hpp"
@@ -240,7 +241,7 @@ void check_source_pieces() {
     return std::array<L, 9>{o.proj_pos.z, o.lighting.x, o.lighting.y, o.lighting.z, o.eye_vector.x,
                             o.world_normal.y, o.world_pos_proj_z.w, o.fog, o.proj_pos.w};
   };
-  source::for_each_vertexlit_vs_combo([&]<source::VertexLitVsCombo C>() {
+  source::for_each_combo<source::kVertexLitVsSpace>([&]<source::VertexLitVsCombo C>() {
     expect_lanes_agree<6, 9>(
         "vertexlit vertex shader " + C.name(), kBatches,
         [&](const std::array<simd::Float, 6>& a) { return vs_body.template operator()<C>(a); },

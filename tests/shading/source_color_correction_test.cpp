@@ -39,7 +39,7 @@ TEST(SourceColorCorrection, BlendIsFrameTimesDefaultPlusWeightedLookups) {
   const float3<float> frame(0.8f, 0.3f, 0.55f);
   const std::array<float3<float>, 4> lookups = {float3<float>(0.1f, 0.9f, 0.4f), float3<float>(0.7f, 0.2f, 0.35f),
                                                 float3<float>(0.05f, 0.6f, 1.0f), float3<float>(0.95f, 0.45f, 0.15f)};
-  for_each_color_correction_combo([&]<ColorCorrectionCombo C>() {
+  for_each_combo<kColorCorrectionSpace>([&]<ColorCorrectionCombo C>() {
     const float3<float> out = color_correction_combine<C>(frame, lookups, p.lut_weights, p.default_weight);
     for (int c = 0; c < 3; ++c) {
       double expect = double(frame[c]) * p.default_weight;
@@ -53,7 +53,7 @@ TEST(SourceColorCorrection, SimdAgreesWithScalarInBits) {
   ColorCorrectionParams p;
   p.lut_weights = glm::vec4(0.3f, 0.2f, 0.15f, 0.1f);
   p.default_weight = 0.25f;
-  for_each_color_correction_combo([&]<ColorCorrectionCombo C>() {
+  for_each_combo<kColorCorrectionSpace>([&]<ColorCorrectionCombo C>() {
     for (int hard_every : {0, 4}) {
       auto shade = [&]<class L>(const auto& get) -> float4<L> {
         std::array<float3<L>, 4> lookups;
@@ -67,7 +67,7 @@ TEST(SourceColorCorrection, SimdAgreesWithScalarInBits) {
 }
 
 TEST(SourceColorCorrection, EveryComboFitsEveryPixelShaderModel) {
-  for_each_color_correction_combo([&]<ColorCorrectionCombo C>() {
+  for_each_combo<kColorCorrectionSpace>([&]<ColorCorrectionCombo C>() {
     for (ShaderModel m : kPixelModels) {
       const Cost cost = measure_color_correction<C>(m);
       const Verdict v = fits(cost, caps(m));

@@ -37,7 +37,7 @@ TEST(SourceEnginePost, BlendIsTheBloomedFrameTimesDefaultPlusWeightedLookups) {
   const float3<float> frame(0.6f, 0.3f, 0.55f), bloom(0.2f, 0.05f, 0.4f);
   const std::array<float3<float>, 4> lookups = {float3<float>(0.1f, 0.9f, 0.4f), float3<float>(0.7f, 0.2f, 0.35f),
                                                 float3<float>(0.05f, 0.6f, 1.0f), float3<float>(0.95f, 0.45f, 0.15f)};
-  for_each_engine_post_combo([&]<EnginePostCombo C>() {
+  for_each_combo<kEnginePostSpace>([&]<EnginePostCombo C>() {
     const float3<float> out = color_correction_combine<C.correction()>(engine_post_bloomed(frame, bloom, p), lookups,
                                                                        p.lut_weights, p.default_weight);
     for (int c = 0; c < 3; ++c) {
@@ -52,7 +52,7 @@ TEST(SourceEnginePost, SimdAgreesWithScalarInBits) {
   EnginePostParams p;
   p.lut_weights = glm::vec4(0.3f, 0.2f, 0.15f, 0.1f);
   p.default_weight = 0.25f;
-  for_each_engine_post_combo([&]<EnginePostCombo C>() {
+  for_each_combo<kEnginePostSpace>([&]<EnginePostCombo C>() {
     for (int hard_every : {0, 4}) {
       auto shade = [&]<class L>(const auto& get) -> float4<L> {
         const float3<L> bloomed = engine_post_bloomed(float3<L>(get(0), get(1), get(2)), float3<L>(get(3), get(4), get(5)), p);
@@ -67,7 +67,7 @@ TEST(SourceEnginePost, SimdAgreesWithScalarInBits) {
 }
 
 TEST(SourceEnginePost, EveryComboFitsEveryPixelShaderModel) {
-  for_each_engine_post_combo([&]<EnginePostCombo C>() {
+  for_each_combo<kEnginePostSpace>([&]<EnginePostCombo C>() {
     for (ShaderModel m : kPixelModels) {
       const Cost cost = measure_engine_post<C>(m);
       const Verdict v = fits(cost, caps(m));

@@ -30,7 +30,7 @@ FogSettings test_settings() {
   return s;
 }
 constexpr double kScale = 1.5;
-const glm::vec3 kEye(0.0f, 0.0f, 20.0f);
+const glm::vec3 kFogTestEye(0.0f, 0.0f, 20.0f);
 const float4<float> kColor(0.6f, 0.3f, 0.1f, 0.7f);
 
 double clamp01(double x) { return std::clamp(x, 0.0, 1.0); }
@@ -43,7 +43,7 @@ double blended(int c, double amount) {
 }
 
 float4<float> fogged(Fog f, float world_z, float proj_z) {
-  const FogConstants fog = fog_constants(test_settings(), kEye, float(kScale));
+  const FogConstants fog = fog_constants(test_settings(), kFogTestEye, float(kScale));
   const ToneMapConstants tm = ToneMapConstants::for_scale(float(kScale));
   const FogInputs<float> in{world_z, proj_z};
   switch (f) {
@@ -95,7 +95,7 @@ TEST(SourceFog, Ps20RangeFogIsFixedFunctionByTheVertexFactor) {
   EXPECT_NEAR(vertex_fog<float>(590.0f, c16), 0.2, 1e-6);
   EXPECT_NEAR(vertex_fog<float>(20.0f, c16), (600.0 - 20.0) / 500.0, 1e-6) << "> 1 before the start: the fog unit clamps";
   // The fog unit: v rgb + (1 - v) fog; v clamped to [0, 1].
-  const FogConstants fog = fog_constants(test_settings(), kEye, float(kScale));
+  const FogConstants fog = fog_constants(test_settings(), kFogTestEye, float(kScale));
   const float4<float> out = fixed_function_fog(shader, vertex_fog<float>(350.0f, c16), fog);
   for (int c = 0; c < 3; ++c) EXPECT_NEAR(out[c], 0.5 * kColor[c] * kScale + 0.5 * test_settings().color[c] * kScale, 1e-6);
   const float4<float> clear = fixed_function_fog(shader, vertex_fog<float>(20.0f, c16), fog);
@@ -103,7 +103,7 @@ TEST(SourceFog, Ps20RangeFogIsFixedFunctionByTheVertexFactor) {
 }
 
 TEST(SourceFog, NoFogByDefault) {
-  const FogConstants fog = fog_constants(FogSettings{}, kEye);
+  const FogConstants fog = fog_constants(FogSettings{}, kFogTestEye);
   const FogInputs<float> in{-100.0f, 1e6f};
   const float4<float> c = fogged_output<ToneMap::none, Fog::range>(kColor, ToneMapConstants{}, in, fog);
   for (int i = 0; i < 4; ++i) EXPECT_EQ(c[i], kColor[i]) << "max density 0";
@@ -113,7 +113,7 @@ TEST(SourceFog, NoFogByDefault) {
 // Every pixel shader's fog combo is its unfogged combo's color blended by the fog formula.
 template <class Shade>
 void expect_shader_fogs(const char* name, Shade&& shade) {
-  const FogConstants fog = fog_constants(test_settings(), kEye, float(kScale));
+  const FogConstants fog = fog_constants(test_settings(), kFogTestEye, float(kScale));
   const FogInputs<float> at{-10.0f, 350.0f};
   const float4<float> plain = shade(Fog::none, fog, at);
   const float4<float> range = shade(Fog::range, fog, at);

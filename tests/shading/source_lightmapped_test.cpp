@@ -376,7 +376,7 @@ TEST(SourceLightmapped, FastPathQuirkIsOnByDefault) {
   EXPECT_EQ(choose_lightmapped_combo(m).path, EnvmapPath::full);
   m.mask = EnvmapMask::texture;  // with a bump map the helper drops $envmapmask
   EXPECT_EQ(choose_lightmapped_combo(m).mask, EnvmapMask::none);
-  for (const LightmappedCombo& c : kLightmappedCombos) EXPECT_TRUE(c.valid()) << c.name();
+  for (const LightmappedCombo& c : kLightmappedSpace) EXPECT_TRUE(c.valid()) << c.name();
 }
 
 TEST(SourceLightmapped, LdrLightmapRoundTripThroughSrgbRead) {
@@ -499,7 +499,7 @@ TEST(SourceLightmapped, SimdAgreesWithScalarBitForBitForEveryCombo) {
   uint32_t seed = 11;
   const LightmappedGenericParams p = lane_test_params();
   const auto hard_pixels = lightmapped_hard_pixels();
-  for_each_lightmapped_combo([&]<LightmappedCombo C>() {
+  for_each_combo<testing::kLightmappedSampled>([&]<LightmappedCombo C>() {
     const auto random = compare_lightmapped<C>(0, seed++);
     const auto hard = compare_lightmapped<C>(3, seed++);
     const auto constructed = testing::compare_lanes_at<kLightmappedInputs>(lightmapped_lane_shader<C>(p), hard_pixels);
@@ -515,15 +515,15 @@ TEST(SourceLightmapped, SimdAgreesWithScalarBitForBitForEveryCombo) {
 // ---- Budgets ----------------------------------------------------------------------------------
 
 TEST(SourceLightmapped, EveryComboFitsEveryPixelShaderModel) {
-  for_each_lightmapped_combo([&]<LightmappedCombo C>() {
+  for (const LightmappedCombo& c : kLightmappedSpace) {
     for (ShaderModel m : kPixelModels) {
-      if (!C.valid(m)) continue;
-      const Cost cost = measure_lightmapped_generic<C>(m);
+      if (!c.valid(m)) continue;
+      const Cost cost = counted_cost(c, m);
       const Verdict v = fits(cost, caps(m));
-      EXPECT_TRUE(v) << C.name() << ": " << v.reason << " (" << describe(cost) << ")";
-      EXPECT_GE(cost.texture_slots, C.bump ? 5 : 2) << C.name();
+      EXPECT_TRUE(v) << c.name() << ": " << v.reason << " (" << describe(cost) << ")";
+      EXPECT_GE(cost.texture_slots, c.bump ? 5 : 2) << c.name();
     }
-  });
+  }
 }
 
 }  // namespace

@@ -76,7 +76,7 @@ TEST(SourceLuminanceRange, ConstantSubstitutesTheTopBucketAndScalesOnlyInFloatMo
 TEST(SourceLuminanceRange, SimdAgreesWithScalarExactly) {
   for (int hard_every : {0, 3}) {
     int worst = 0;
-    for_each_luminance_range_combo([&]<LuminanceRangeCombo C>() {
+    for_each_combo<kLuminanceRangeSpace>([&]<LuminanceRangeCombo C>() {
       LuminanceRangeParams p;
       p.min_max_scale = glm::vec3(0.2f, 0.6f, 1.0f);
       auto shade = [&]<class L>(const auto& get) -> float4<L> {
@@ -92,7 +92,7 @@ TEST(SourceLuminanceRange, SimdAgreesWithScalarExactly) {
 }
 
 TEST(SourceLuminanceRange, EveryComboFitsEveryPixelShaderModel) {
-  for_each_luminance_range_combo([&]<LuminanceRangeCombo C>() {
+  for_each_combo<kLuminanceRangeSpace>([&]<LuminanceRangeCombo C>() {
     for (ShaderModel m : kPixelModels) {
       const Cost cost = measure_luminance_range<C>(m);
       const Verdict v = fits(cost, caps(m));

@@ -157,7 +157,7 @@ testing::LaneComparison compare_sky(int hard_every, uint32_t seed) {
 
 TEST(SourceSky, SimdAgreesWithScalarBitForBitForEveryCombo) {
   uint32_t seed = 71;
-  for_each_sky_combo([&]<SkyCombo C>() {
+  for_each_combo<kSkySpace>([&]<SkyCombo C>() {
     const auto random = compare_sky<C>(0, seed++);
     const auto hard = compare_sky<C>(3, seed++);
     testing::expect_bit_identical(random, C.name());
@@ -167,7 +167,7 @@ TEST(SourceSky, SimdAgreesWithScalarBitForBitForEveryCombo) {
 }
 
 TEST(SourceSky, EveryComboFitsEveryPixelShaderModel) {
-  for_each_sky_combo([&]<SkyCombo C>() {
+  for_each_combo<kSkySpace>([&]<SkyCombo C>() {
     for (ShaderModel m : kPixelModels) {
       const Cost cost = measure_sky<C>(m);
       const Verdict v = fits(cost, caps(m));

@@ -6,6 +6,7 @@
 #include "luxel/rasterizer/texture.hpp"
 #include "luxel/shading/source/common.hpp"
 #include "luxel/shading/source/fog.hpp"
+#include "luxel/shading/source/registry.hpp"
 
 #include <gtest/gtest.h>
 
@@ -21,6 +22,23 @@
 namespace luxel::shading::source::testing {
 
 using shading::testing::lane_of;
+
+/// kMax combos spread evenly through a registry space (its first and last included), or all of it
+/// when it has no more: what the per-combo template tests walk, each combo compiled for both
+/// lanes. Every combo of every space is compared through the catalog's entry points
+/// (registry_test.cpp).
+template <auto kSpace, size_t kMax>
+constexpr auto spread() {
+  constexpr size_t kCount = kSpace.size() < kMax ? kSpace.size() : kMax;
+  std::array<typename decltype(kSpace)::value_type, kCount> out{};
+  for (size_t i = 0; i < kCount; ++i) out[i] = kSpace[kCount == 1 ? 0 : i * (kSpace.size() - 1) / (kCount - 1)];
+  return out;
+}
+
+inline constexpr auto kLightmappedSampled = spread<kLightmappedSpace, 18>();
+inline constexpr auto kVertexLitSampled = spread<kVertexLitSpace, 36>();
+inline constexpr auto kUnlitSampled = spread<kUnlitSpace, 18>();
+inline constexpr auto kWaterSampled = spread<kWaterSpace, 12>();
 
 /// Inputs that break things: zeros, denormals, ±1, huge (HDR up to 1e30), NaN, infinities.
 inline const std::vector<float>& hard_values() {

@@ -253,17 +253,17 @@ testing::LaneComparison compare_unlit_sampled(const RandomTextures& tex, rasteri
 TEST(SourceTextured, SimdAgreesWithScalarThroughPointSamplingForEveryCombo) {
   const RandomTextures tex;
   uint32_t seed = 500;
-  for_each_lightmapped_combo([&]<LightmappedCombo C>() {
+  for_each_combo<testing::kLightmappedSampled>([&]<LightmappedCombo C>() {
     for (int hard_every : {0, 3})
       testing::expect_bit_identical(compare_lightmapped_sampled<C>(tex, rasterizer::Filter::Point, hard_every, seed++),
                                     "LightmappedGeneric " + C.name());
   });
-  for_each_vertexlit_combo([&]<VertexLitCombo C>() {
+  for_each_combo<testing::kVertexLitSampled>([&]<VertexLitCombo C>() {
     for (int hard_every : {0, 3})
       testing::expect_bit_identical(compare_vertexlit_sampled<C>(tex, rasterizer::Filter::Point, hard_every, seed++),
                                     "VertexLitGeneric " + C.name());
   });
-  for_each_unlit_combo([&]<UnlitCombo C>() {
+  for_each_combo<testing::kUnlitSampled>([&]<UnlitCombo C>() {
     for (int hard_every : {0, 3})
       testing::expect_bit_identical(compare_unlit_sampled<C>(tex, rasterizer::Filter::Point, hard_every, seed++),
                                     "UnlitGeneric " + C.name());
@@ -275,21 +275,21 @@ TEST(SourceTextured, SimdWithinOneStepOfScalarThroughBilinearSampling) {
   uint32_t seed = 900;
   int worst = 0;
   long mismatched = 0, channels = 0;
-  for_each_lightmapped_combo([&]<LightmappedCombo C>() {
+  for_each_combo<testing::kLightmappedSampled>([&]<LightmappedCombo C>() {
     const auto r = compare_lightmapped_sampled<C>(tex, rasterizer::Filter::Linear, 0, seed++);
     EXPECT_LE(r.max_step, 1) << "LightmappedGeneric " << C.name();
     worst = std::max(worst, r.max_step);
     mismatched += r.bit_mismatches;
     channels += 4 * r.pixels;
   });
-  for_each_vertexlit_combo([&]<VertexLitCombo C>() {
+  for_each_combo<testing::kVertexLitSampled>([&]<VertexLitCombo C>() {
     const auto r = compare_vertexlit_sampled<C>(tex, rasterizer::Filter::Linear, 0, seed++);
     EXPECT_LE(r.max_step, 1) << "VertexLitGeneric " << C.name();
     worst = std::max(worst, r.max_step);
     mismatched += r.bit_mismatches;
     channels += 4 * r.pixels;
   });
-  for_each_unlit_combo([&]<UnlitCombo C>() {
+  for_each_combo<testing::kUnlitSampled>([&]<UnlitCombo C>() {
     const auto r = compare_unlit_sampled<C>(tex, rasterizer::Filter::Linear, 0, seed++);
     EXPECT_LE(r.max_step, 1) << "UnlitGeneric " << C.name();
     worst = std::max(worst, r.max_step);

@@ -168,7 +168,7 @@ testing::LaneComparison compare_unlit(int hard_every, uint32_t seed) {
 
 TEST(SourceUnlit, SimdAgreesWithScalarBitForBitForEveryCombo) {
   uint32_t seed = 51;
-  for_each_unlit_combo([&]<UnlitCombo C>() {
+  for_each_combo<testing::kUnlitSampled>([&]<UnlitCombo C>() {
     const auto random = compare_unlit<C>(0, seed++);
     const auto hard = compare_unlit<C>(3, seed++);
     testing::expect_bit_identical(random, C.name());
@@ -180,17 +180,17 @@ TEST(SourceUnlit, SimdAgreesWithScalarBitForBitForEveryCombo) {
 }
 
 TEST(SourceUnlit, EveryComboFitsEveryPixelShaderModel) {
-  for_each_unlit_combo([&]<UnlitCombo C>() {
-    EXPECT_TRUE(C.valid()) << C.name();
+  for (const UnlitCombo& c : kUnlitSpace) {
+    EXPECT_TRUE(c.valid()) << c.name();
     for (ShaderModel m : kPixelModels) {
-      if (!C.valid(m)) continue;
-      const Cost cost = measure_unlit_generic<C>(m);
+      if (!c.valid(m)) continue;
+      const Cost cost = counted_cost(c, m);
       const Verdict v = fits(cost, caps(m));
-      EXPECT_TRUE(v) << C.name() << ": " << v.reason << " (" << describe(cost) << ")";
-      const int fetches = 1 + (C.detail != UnlitDetail::none) + C.envmap + (C.mask == UnlitEnvmapMask::texture);
-      EXPECT_EQ(cost.texture_slots, fetches) << C.name();
+      EXPECT_TRUE(v) << c.name() << ": " << v.reason << " (" << describe(cost) << ")";
+      const int fetches = 1 + (c.detail != UnlitDetail::none) + c.envmap + (c.mask == UnlitEnvmapMask::texture);
+      EXPECT_EQ(cost.texture_slots, fetches) << c.name();
     }
-  });
+  }
   EXPECT_FALSE((UnlitCombo{UnlitDetail::none, false, UnlitEnvmapMask::texture, false}.valid()));
 }
 

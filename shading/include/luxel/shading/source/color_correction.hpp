@@ -46,17 +46,9 @@ struct ColorCorrectionCombo {
   int luts = 1;  ///< lookups blended, 1..kMaxColorCorrectionLuts
 
   constexpr bool valid() const { return luts >= 1 && luts <= kMaxColorCorrectionLuts; }
+  friend constexpr bool operator==(const ColorCorrectionCombo&, const ColorCorrectionCombo&) = default;
   std::string name() const { return std::to_string(luts) + (luts == 1 ? "lut" : "luts"); }
 };
-
-inline constexpr ColorCorrectionCombo kColorCorrectionCombos[] = {{1}, {2}, {3}, {4}};
-
-template <class F>
-inline void for_each_color_correction_combo(F&& f) {
-  [&]<size_t... I>(std::index_sequence<I...>) {
-    (f.template operator()<kColorCorrectionCombos[I]>(), ...);
-  }(std::make_index_sequence<std::size(kColorCorrectionCombos)>());
-}
 
 /// How the frame is read: point, no mips (see above); clamped, so nothing wraps at the edges.
 inline rasterizer::Sampler color_correction_frame_sampler() {

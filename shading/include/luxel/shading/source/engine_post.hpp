@@ -31,18 +31,10 @@ struct EnginePostCombo {
   int luts = 1;  ///< lookups blended, 1..kMaxColorCorrectionLuts
 
   constexpr bool valid() const { return luts >= 1 && luts <= kMaxColorCorrectionLuts; }
+  friend constexpr bool operator==(const EnginePostCombo&, const EnginePostCombo&) = default;
   constexpr ColorCorrectionCombo correction() const { return {luts}; }
   std::string name() const { return correction().name(); }
 };
-
-inline constexpr EnginePostCombo kEnginePostCombos[] = {{1}, {2}, {3}, {4}};
-
-template <class F>
-inline void for_each_engine_post_combo(F&& f) {
-  [&]<size_t... I>(std::index_sequence<I...>) {
-    (f.template operator()<kEnginePostCombos[I]>(), ...);
-  }(std::make_index_sequence<std::size(kEnginePostCombos)>());
-}
 
 /// How the bloom texture is read: bilinear, no mips, clamped (the LUTs' state, one axis less).
 inline rasterizer::Sampler engine_post_bloom_sampler() { return color_correction_lut_sampler(); }

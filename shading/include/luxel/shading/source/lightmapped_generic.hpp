@@ -85,36 +85,6 @@ struct LightmappedCombo {
   }
 };
 
-/// Every valid combo, in a fixed order (for the budget test, the cost table and the benchmark).
-inline constexpr LightmappedCombo kLightmappedCombos[] = {
-    {false, false, EnvmapMask::none, EnvmapPath::fast},
-    {true, false, EnvmapMask::none, EnvmapPath::fast},
-    {false, true, EnvmapMask::none, EnvmapPath::fast},
-    {false, true, EnvmapMask::base_alpha_inverted, EnvmapPath::fast},
-    {false, true, EnvmapMask::texture, EnvmapPath::fast},
-    {false, true, EnvmapMask::texture, EnvmapPath::fast_contrast},
-    {false, true, EnvmapMask::texture, EnvmapPath::full},
-    {true, true, EnvmapMask::none, EnvmapPath::fast},
-    {true, true, EnvmapMask::normal_alpha, EnvmapPath::fast},
-    {true, true, EnvmapMask::normal_alpha, EnvmapPath::fast_contrast},
-    {true, true, EnvmapMask::normal_alpha, EnvmapPath::full},
-    {false, true, EnvmapMask::base_alpha_inverted, EnvmapPath::full},
-    {false, false, EnvmapMask::none, EnvmapPath::fast, Fog::range},
-    {false, false, EnvmapMask::none, EnvmapPath::fast, Fog::vertex_range},
-    {true, false, EnvmapMask::none, EnvmapPath::fast, Fog::height},
-    {true, true, EnvmapMask::normal_alpha, EnvmapPath::full, Fog::range},
-    {true, true, EnvmapMask::normal_alpha, EnvmapPath::full, Fog::vertex_range},
-    {true, true, EnvmapMask::normal_alpha, EnvmapPath::full, Fog::height},
-};
-
-/// Calls f.template operator()<C>() for every combo of kLightmappedCombos, in order.
-template <class F>
-inline void for_each_lightmapped_combo(F&& f) {
-  [&]<size_t... I>(std::index_sequence<I...>) {
-    (f.template operator()<kLightmappedCombos[I]>(), ...);
-  }(std::make_index_sequence<std::size(kLightmappedCombos)>());
-}
-
 /// The dynamic state: samplers and constant registers.
 struct LightmappedGenericParams {
   Sampler2D base{0};

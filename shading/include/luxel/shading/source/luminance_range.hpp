@@ -52,20 +52,9 @@ struct LuminanceRangeCombo {
   LuminanceReject reject = LuminanceReject::alpha_test;
 
   constexpr bool valid() const { return true; }
+  friend constexpr bool operator==(const LuminanceRangeCombo&, const LuminanceRangeCombo&) = default;
   std::string name() const { return reject == LuminanceReject::alpha_test ? "alphatest" : "texkill"; }
 };
-
-inline constexpr LuminanceRangeCombo kLuminanceRangeCombos[] = {
-    {LuminanceReject::alpha_test},
-    {LuminanceReject::texkill},
-};
-
-template <class F>
-inline void for_each_luminance_range_combo(F&& f) {
-  [&]<size_t... I>(std::index_sequence<I...>) {
-    (f.template operator()<kLuminanceRangeCombos[I]>(), ...);
-  }(std::make_index_sequence<std::size(kLuminanceRangeCombos)>());
-}
 
 /// The luminance weights of the histogram.
 inline constexpr float kHistogramLuminance[3] = {0.2125f, 0.7154f, 0.0721f};

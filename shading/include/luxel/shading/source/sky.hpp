@@ -59,15 +59,6 @@ struct SkyCombo {
   constexpr bool operator==(const SkyCombo&) const = default;
 };
 
-inline constexpr SkyCombo kSkyCombos[] = {{SkyTexture::hdr16}, {SkyTexture::rgbs_compressed}};
-
-template <class F>
-inline void for_each_sky_combo(F&& f) {
-  [&]<size_t... I>(std::index_sequence<I...>) {
-    (f.template operator()<kSkyCombos[I]>(), ...);
-  }(std::make_index_sequence<std::size(kSkyCombos)>());
-}
-
 /// The texture formats the hdr16 combo reads.
 enum class SkyFormat {
   rgba16,   ///< 16-bit UNORM holding linear / 16

@@ -67,33 +67,6 @@ struct UnlitCombo {
   }
 };
 
-inline constexpr UnlitCombo kUnlitCombos[] = {
-    {UnlitDetail::none, false, UnlitEnvmapMask::none, false},
-    {UnlitDetail::none, false, UnlitEnvmapMask::none, true},
-    {UnlitDetail::mod2x, false, UnlitEnvmapMask::none, false},
-    {UnlitDetail::additive, false, UnlitEnvmapMask::none, true},
-    {UnlitDetail::none, true, UnlitEnvmapMask::none, false},
-    {UnlitDetail::none, true, UnlitEnvmapMask::base_alpha_inverted, false},
-    {UnlitDetail::none, true, UnlitEnvmapMask::texture, true},
-    {UnlitDetail::mod2x, true, UnlitEnvmapMask::texture, true},
-    {UnlitDetail::none, false, UnlitEnvmapMask::none, false, false, Fog::range},
-    {UnlitDetail::none, false, UnlitEnvmapMask::none, false, false, Fog::vertex_range},
-    {UnlitDetail::none, false, UnlitEnvmapMask::none, false, true},
-    {UnlitDetail::none, false, UnlitEnvmapMask::none, false, true, Fog::range},
-    {UnlitDetail::none, false, UnlitEnvmapMask::none, false, true, Fog::vertex_range},
-    {UnlitDetail::none, false, UnlitEnvmapMask::none, false, true, Fog::height},
-    {UnlitDetail::none, true, UnlitEnvmapMask::none, false, true},
-    {UnlitDetail::mod2x, true, UnlitEnvmapMask::texture, false, true, Fog::range},
-    {UnlitDetail::mod2x, true, UnlitEnvmapMask::texture, false, true, Fog::height},
-};
-
-template <class F>
-inline void for_each_unlit_combo(F&& f) {
-  [&]<size_t... I>(std::index_sequence<I...>) {
-    (f.template operator()<kUnlitCombos[I]>(), ...);
-  }(std::make_index_sequence<std::size(kUnlitCombos)>());
-}
-
 /// Samplers and constants (registers as in the SDK shader).
 struct UnlitGenericParams {
   Sampler2D base{0};

@@ -124,58 +124,6 @@ struct VertexLitCombo {
   }
 };
 
-inline constexpr VertexLitCombo kVertexLitCombos[] = {
-    {0, false, false, false, true, true},
-    {2, false, false, false, true, true},
-    {2, false, false, false, false, true},
-    {2, true, false, false, true, true},
-    {2, false, false, false, true, false},
-    {2, true, false, false, true, false},
-    {4, false, false, false, true, false},
-    {4, true, false, false, true, false},
-    {2, true, true, false, true, true},
-    {2, true, true, true, true, true},
-    {2, false, true, false, true, true},
-    {4, true, true, true, true, false},
-    {0, false, false, false, true, true, true},
-    {2, true, true, true, true, true, true},
-    {4, true, true, true, true, false, true},
-    // ps_2_0: the same shaders normalizing through the cube map.
-    {0, false, false, false, true, true, false, Fog::none, true},
-    {2, false, false, false, true, false, false, Fog::none, true},
-    {2, true, false, false, true, false, false, Fog::none, true},
-    // ps_2_0 with luxel's per-pixel attenuation: allowed by the rules; the count decides
-    // (vertexlit_compiles). Two Lambert lights fit ps_2_0's 64 arithmetic slots; Half-Lambert
-    // and height fog push the arithmetic over them (which is why the SDK attenuates per vertex
-    // on ps_2_0).
-    {2, false, false, false, false, true, false, Fog::none, true},
-    {2, false, false, false, true, true, false, Fog::none, true},
-    {2, true, false, false, true, true, false, Fog::none, true},
-    {2, true, false, false, true, true, false, Fog::height, true},
-    // Fog, per model.
-    {2, true, false, false, true, false, false, Fog::vertex_range, true},
-    {2, true, false, false, true, false, false, Fog::height, true},
-    {2, true, false, false, true, false, false, Fog::range},
-    {2, true, false, false, true, false, false, Fog::height},
-    {4, true, true, true, true, false, false, Fog::range},
-    {4, true, true, true, true, false, true, Fog::height},
-    // Env maps: the bumped path's, unmasked and masked by the normal map's alpha, and the skin
-    // shader's, on its full path and FASTPATH_NOBUMP.
-    {2, true, false, false, true, false, false, Fog::none, false, true},
-    {2, true, false, false, true, false, false, Fog::none, false, true, true},
-    {2, true, false, false, true, false, false, Fog::none, true, true, true},
-    {2, true, true, true, true, false, false, Fog::none, false, true},
-    {2, false, true, false, true, false, false, Fog::none, false, true},
-    {4, true, true, true, true, false, false, Fog::range, false, true},
-};
-
-template <class F>
-inline void for_each_vertexlit_combo(F&& f) {
-  [&]<size_t... I>(std::index_sequence<I...>) {
-    (f.template operator()<kVertexLitCombos[I]>(), ...);
-  }(std::make_index_sequence<std::size(kVertexLitCombos)>());
-}
-
 /// One local light as the pixel shader's constant registers hold it.
 struct LocalLight {
   glm::vec4 color{0.0f};           ///< rgb linear; w = 1 directional

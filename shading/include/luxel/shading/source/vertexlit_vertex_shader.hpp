@@ -57,19 +57,11 @@ struct VertexLitVsCombo {
   }
   /// vertexlit_and_unlit_generic_vs20.fxc: vs20 and vs30.
   static constexpr ShaderBuilds builds() { return {true, false, true}; }
+  friend constexpr bool operator==(const VertexLitVsCombo&, const VertexLitVsCombo&) = default;
   std::string name() const {
     return std::to_string(lights) + (lights == 1 ? " light" : " lights") + (half_lambert ? "" : "+lambert");
   }
 };
-
-inline constexpr VertexLitVsCombo kVertexLitVsCombos[] = {{0, true}, {1, true}, {2, true}, {2, false}, {4, true}};
-
-template <class F>
-inline void for_each_vertexlit_vs_combo(F&& f) {
-  [&]<size_t... I>(std::index_sequence<I...>) {
-    (f.template operator()<kVertexLitVsCombos[I]>(), ...);
-  }(std::make_index_sequence<std::size(kVertexLitVsCombos)>());
-}
 
 /// The vertex shader's constant registers.
 struct VertexLitVsParams {
@@ -155,15 +147,6 @@ inline glm::vec3 vertex_lighting_at(const glm::vec3& world, const glm::vec3& nor
 }
 
 using VertexLightingFn = glm::vec3 (*)(const glm::vec3& world, const glm::vec3& normal, const VertexLitVsParams& p);
-
-/// vertex_lighting_at of the combo of kVertexLitVsCombos equal to `combo`; null when none is.
-inline VertexLightingFn vertex_lighting_fn(const VertexLitVsCombo& combo) {
-  VertexLightingFn fn = nullptr;
-  for_each_vertexlit_vs_combo([&]<VertexLitVsCombo C>() {
-    if (C.lights == combo.lights && C.half_lambert == combo.half_lambert) fn = &vertex_lighting_at<C>;
-  });
-  return fn;
-}
 
 template <VertexLitVsCombo C>
 inline Cost measure_vertexlit_vertex_shader(ShaderModel model) {

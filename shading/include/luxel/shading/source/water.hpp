@@ -88,23 +88,6 @@ struct WaterCombo {
   }
 };
 
-inline constexpr WaterCombo kWaterCombos[] = {
-    {true, true, true, false, false},  {true, true, false, false, false}, {true, false, true, false, false},
-    {false, true, true, false, false}, {true, true, true, true, false},   {true, true, true, false, true},
-    {true, true, false, true, true},
-    {true, true, true, false, false, Fog::range},
-    {true, true, true, false, false, Fog::vertex_range},
-    {true, true, true, true, true, Fog::range},
-    {true, true, false, false, false, Fog::height},
-};
-
-template <class F>
-inline void for_each_water_combo(F&& f) {
-  [&]<size_t... I>(std::index_sequence<I...>) {
-    (f.template operator()<kWaterCombos[I]>(), ...);
-  }(std::make_index_sequence<std::size(kWaterCombos)>());
-}
-
 /// Samplers and constants (registers as in water_ps2x.fxc).
 struct WaterParams {
   Sampler2D refraction{0};  ///< _rt_WaterRefraction: sRGB read; alpha = water depth
