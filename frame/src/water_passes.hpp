@@ -1,5 +1,5 @@
 #pragma once
-// Private: the water's views (issue #14), as viewrender.cpp's CAboveWaterView draws them. For
+// Private: the water's views, as viewrender.cpp's CAboveWaterView draws them. For
 // each height at which the scene has water that the camera sees from above, two views of the
 // scene are drawn before the frame into square one-sample targets (renderer.hpp's
 // water_texture_side: 1024, the SDK's render targets), each over the whole target with the

@@ -750,8 +750,7 @@ LUXEL_INLINE Context<Format> one_level_context(const Texture& texture, const Sam
   // Within a tile, a read of a screen-aligned copy reads lower texel rows stamp row by stamp row.
   // A tile reads only a few lines of each texel row, each row in another page: too short a run for
   // the hardware prefetchers to follow, so without the hint every line is a miss the shader waits
-  // for. Asked for four or eight texel rows below, the lines still came late (bench/README.md,
-  // session 33).
+  // for. Asked for four or eight texel rows below, the lines still came late (bench/README.md).
   constexpr int32_t kPrefetchRowsBelow = 16;
   if constexpr (Kind == TextureKind::Texture2D && F == Filter::Point) {
     // The post passes' point reads of the frame, a texel per pixel.
@@ -761,7 +760,7 @@ LUXEL_INLINE Context<Format> one_level_context(const Texture& texture, const Sam
     // Bilinear reads of a level too large to stay in a core's cache from one pass to the next: the
     // bloom's downsample of the frame, four texels per pixel along each axis, each read once. The
     // quarter-size textures the blurs read thirteen times over stay cached, and the hints only cost
-    // them (bench/README.md, sessions 35 and 36).
+    // them (bench/README.md).
     constexpr int64_t kStreamedLevelBytes = int64_t(1) << 20;
     if (int64_t(texture.width()) * texture.height() * int64_t(sizeof(int32_t)) > kStreamedLevelBytes)
       ctx.prefetch_words_below = kPrefetchRowsBelow * texture.width();
@@ -769,7 +768,7 @@ LUXEL_INLINE Context<Format> one_level_context(const Texture& texture, const Sam
   // The same reads, and the color-correction volumes' (neighbouring pixels, neighbouring colors),
   // find a stamp row's texels within a few words of each other. The mip-mapped path does not try
   // the windows: its footprints turn with the surface and its stamps straddle levels, and the
-  // check cost the 3D passes as much as the windows saved (bench/README.md, session 31). Cube maps
+  // check cost the 3D passes as much as the windows saved (bench/README.md). Cube maps
   // are read from their bordered copy, which keeps no padding for a window.
   if constexpr (Kind != TextureKind::Cube) ctx.reads_stamp_rows = true;
   if constexpr (Kind == TextureKind::Texture2D) ctx.skips_zero_weights = true;

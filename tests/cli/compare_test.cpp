@@ -93,7 +93,7 @@ TEST_F(CompareCommand, APairForEveryTwoModelsInOrderWithConsistentNumbers) {
   }
   const char* expected[][2] = {{"ps_2_0", "ps_2_b"}, {"ps_2_0", "ps_3_0"}, {"ps_2_b", "ps_3_0"}};
   ASSERT_EQ(j["pairs"].size(), 3u);
-  // ps_2_0 runs simpler combos than ps_2_b (#14), so the first pair has numbers to check.
+  // ps_2_0 runs simpler combos than ps_2_b, so the first pair has numbers to check.
   EXPECT_GT(j["pairs"][0]["differing_pixels"].get<uint64_t>(), 0u);
   EXPECT_GT(j["pairs"][0]["psnr_db"].get<double>(), 0.0);
   for (size_t i = 0; i < 3; ++i) {

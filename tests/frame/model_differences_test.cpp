@@ -1,5 +1,5 @@
-// ps_2_0 differs from ps_2_b and ps_3_0 exactly where their combos differ, on the courtyard
-// (issue #14): the frame drops Phong and normalizes with the normalization cube on ps_2_0 for
+// ps_2_0 differs from ps_2_b and ps_3_0 exactly where their combos differ, on the courtyard: the
+// frame drops Phong and normalizes with the normalization cube on ps_2_0 for
 // VertexLitGeneric (the models), and fogs per vertex there. Without fog, every other surface (the
 // lightmapped world, the unlit flames, the sky) must be the same bytes on all three models; the
 // water reflects and refracts the models, so its pixels may differ too. ps_2_b and ps_3_0 run the

@@ -1,5 +1,5 @@
-// The built-in scenes: each validates, is deterministic, and `courtyard` holds what issue #12
-// asks of it, checked from its data with math of the test's own.
+// The built-in scenes: each validates, is deterministic, and `courtyard` holds what its comparison
+// of shader models needs, checked from its data with math of the test's own.
 
 #include "luxel/scenes/builtin.hpp"
 

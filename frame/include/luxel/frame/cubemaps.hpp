@@ -1,5 +1,5 @@
 #pragma once
-// HDR cube maps at the scene's cube-map samples, rendered by the frame itself (issue #14), the
+// HDR cube maps at the scene's cube-map samples, rendered by the frame itself, the
 // way Source's buildcubemaps makes them: from each sample point, six 90-degree square faces of
 // the world and the sky (what a capture draws: renderer.hpp), each taken at a bracket of
 // exposures into 8-bit targets through the Source shaders' tone-map epilogue, then merged into

@@ -347,7 +347,7 @@ inline void gather_pairs(const int32_t* base, const Int& index, Int& low, Int& h
 #if defined(__AVX512F__)
   // Two gathers of eight 64-bit elements, not two of sixteen 32-bit ones: a gather costs about a
   // load per element on AMD and Intel cores alike, and two permutes put the halves back in lane
-  // order (bench/README.md, 2026-12-05 session 29).
+  // order (bench/README.md).
   const __m512i first = _mm512_i32gather_epi64(_mm512_castsi512_si256(index), base, 4);
   const __m512i second = _mm512_i32gather_epi64(_mm512_extracti64x4_epi64(index, 1), base, 4);
   const __m512i even = _mm512_setr_epi32(0, 2, 4, 6, 8, 10, 12, 14, 16, 18, 20, 22, 24, 26, 28, 30);
@@ -364,7 +364,7 @@ inline void gather_pairs(const int32_t* base, const Int& index, Int& low, Int& h
 /// a byte through a curve (lookup_bytes3 without AVX-512 VBMI). At 16 lanes the table is read as eight
 /// two-register halves of 32 entries, each permuted by the index's low five bits, and merged by its
 /// top three bits: eight permutes and seven blends in place of a gather, which costs about a load
-/// per lane on AMD and Intel cores alike (bench/README.md, session 31).
+/// per lane on AMD and Intel cores alike (bench/README.md).
 inline Float lookup_byte(const float* table, const Int& index) {
 #if defined(__AVX512F__)
   static_assert(kLanes == 16);
@@ -404,7 +404,7 @@ constexpr ByteTable byte_table(const std::array<float, 256>& entries) {
 /// texel's color through a curve: texture sampling's sRGB). With AVX-512 VBMI all 64 bytes of the
 /// words are looked up at once, a byte plane at a time (two 128-byte permutes merged by the byte's
 /// top bit), and the planes' bytes transposed back into floats by unpacks: fewer shuffles than
-/// three lookup_byte, and a third of their table loads (bench/README.md, session 33).
+/// three lookup_byte, and a third of their table loads (bench/README.md).
 inline void lookup_bytes3(const ByteTable& table, const Int& words, Float& b0, Float& b1, Float& b2) {
 #if defined(__AVX512VBMI__)
   static_assert(kLanes == 16);
@@ -715,7 +715,7 @@ inline void transpose_to_rows(const Int (&fields)[8], int32_t (*rows)[8]) {
 /// words are two 16-byte loads and a transpose puts them in lanes: a gather costs about a load
 /// per lane on AMD and Intel cores alike, so this is a quarter of the loads for three shuffles per
 /// word (texture sampling's trilinear cells, two slices of four texels: texture.hpp;
-/// bench/README.md, sessions 32 and 34).
+/// bench/README.md).
 inline void gather_two_fours(const int32_t* base, const Int& index, int32_t second, Int (&words)[8]) {
 #if defined(__AVX512F__)
   static_assert(kLanes == 16);

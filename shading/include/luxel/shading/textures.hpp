@@ -135,7 +135,7 @@ inline float4<L> fetch_other(const TextureBinding<K>& s, const Vec<L, N>& coords
 
 /// A fetch of `mode`. The SIMD lane's is inlined into the shader: out of line it cost a 64-byte
 /// aligned frame of its own and a copy of the four result registers per read, several reads a
-/// pixel in the post passes (bench/README.md, session 32).
+/// pixel in the post passes (bench/README.md).
 template <SamplerKind K, Lane L, int N>
 LUXEL_INLINE float4<L> fetch(const TextureBinding<K>& s, const Vec<L, N>& coords, LodMode mode) {
   static_assert(N == kCoordinates<K> || N == 4, "coordinates: the texture's dimension, or float4 with bias/LOD in .w");

@@ -58,7 +58,7 @@ inline ToneMapConstants ToneMapConstants::for_scale(float s, float lightmap_scal
 //  - WRITE_DEPTH_TO_DESTALPHA (ps_2_b / ps_3_0: alpha = projZ x c29.w; ps_2_0's DepthToDestAlpha
 //    returns 1 and the ps_2_0 builds pass false): not modelled. Its reader is the water's
 //    refraction alpha (water.hpp takes that depth as given) and soft particles; which passes write
-//    it is the frame's decision (issue #8), so the shaders' alpha stays the shader's alpha here.
+//    it is the frame's decision, so the shaders' alpha stays the shader's alpha here.
 
 /// FinalOutput (docs/fidelity.md#tone-mapping, before fog): rgb x the tone-map scale of type T; alpha
 /// passes. Returns the linear color the output merger encodes; fogged_output() (fog.hpp) adds step 3.
