@@ -41,10 +41,6 @@
 
 namespace {
 
-/// Where the peer looks for Sponza (its ../../assets, relative to its folder), from luxel's.
-constexpr const char* kSponzaDefaults[2] = {"../shared/assets/sponza/Sponza.gltf",
-                                            "../shared/assets/gltf/sponza/glTF/Sponza.gltf"};
-
 double median_of(std::vector<double> v) {
   std::sort(v.begin(), v.end());
   const size_t n = v.size();
@@ -78,8 +74,8 @@ int main(int argc, char** argv) {
   std::optional<uint64_t> film_grain_seed;
   app.add_flag("--bloom", bloom, "Add the bloom to the Source frames (as luxel render does; off in the library's FrameSettings)");
   app.add_option("--film-grain", film_grain_seed, "Blend film grain seeded by SEED onto the Source frames");
-  app.add_option("--sponza", sponza_path, "glTF file for the sponza workload (default: the first that exists of " +
-                                             std::string(kSponzaDefaults[0]) + " and " + kSponzaDefaults[1] + ")");
+  app.add_option("--sponza", sponza_path, "glTF file for the sponza workload (without it the workload is skipped, as the "
+                                             "peer skips it without its asset)");
   app.add_option("--eye", eye_text, "Sponza camera position X,Y,Z in glTF space (with --target)");
   app.add_option("--target", target_text, "Sponza camera target X,Y,Z in glTF space (with --eye)");
   app.add_option("workloads", workloads,
@@ -103,14 +99,6 @@ int main(int argc, char** argv) {
     std::fprintf(stderr, "luxel_frame_bench: --eye and --target must be given together\n");
     return 2;
   }
-  std::string sponza_also_tried;
-  if (sponza_path.empty()) {
-    sponza_path = kSponzaDefaults[0];
-    sponza_also_tried = kSponzaDefaults[1];
-    if (!std::filesystem::is_regular_file(sponza_path) && std::filesystem::is_regular_file(sponza_also_tried))
-      std::swap(sponza_path, sponza_also_tried);
-  }
-
   luxel::rasterizer::ContextOptions options;
   options.threads = threads;
   if (const char* off = std::getenv("LUXEL_NO_FASTPATH")) {
@@ -130,9 +118,13 @@ int main(int argc, char** argv) {
     std::unique_ptr<luxel::frame::Renderer> renderer;
     std::unique_ptr<luxel::bench::SponzaFrame> sponza;
     if (name == "sponza") {
+      if (sponza_path.empty()) {
+        std::printf("workload=sponza skipped reason=\"no glTF file given (--sponza PATH)\"\n");
+        std::fflush(stdout);
+        continue;
+      }
       if (!std::filesystem::is_regular_file(sponza_path)) {
-        std::printf("workload=sponza skipped reason=\"glTF file not found: %s%s (place the Sponza glTF there or pass --sponza PATH)\"\n",
-                    sponza_path.c_str(), sponza_also_tried.empty() ? "" : (" nor " + sponza_also_tried).c_str());
+        std::printf("workload=sponza skipped reason=\"glTF file not found: %s\"\n", sponza_path.c_str());
         std::fflush(stdout);
         continue;
       }
