@@ -191,5 +191,53 @@ TEST(WorldEnvmaps, EachFaceGroupOfAMeshReflectsItsOwnSampleInTheFrame) {
   }
 }
 
+TEST(WorldEnvmaps, TheMaterialsEnvMapConstantsReachTheShader) {
+  // $envmaptint, $envmapcontrast, $envmapsaturation and $fresnelreflection on the left half (green
+  // reflected, normal +Z): LightmappedGeneric's full env-map path (lightmappedgeneric_ps2_3_x.h),
+  // written out here: s = cube x tint; s = lerp(s, s^2, contrast); s = lerp(grey(s), s, saturation)
+  // with grey the (0.299, 0.587, 0.114) dot; times (1 - N.V)^5 (1 - R0) + R0. Each value changes
+  // the answer: tint per channel, contrast by the square, saturation toward grey, R0 as a scale.
+  const glm::vec3 tint(0.5f, 1.0f, 0.25f);
+  const double contrast = 0.5, saturation = 0.3, r0 = 0.2;
+  scenes::Scene s = two_faced_floor(true);
+  s.materials[0].envmap_tint = tint;
+  s.materials[0].envmap_contrast = float(contrast);
+  s.materials[0].envmap_saturation = float(saturation);
+  s.materials[0].fresnel_reflection = float(r0);
+  FrameSettings f{64, 64, 4};
+  f.exposure = 1.0f;
+  f.color_correction = false;
+  const glm::dvec3 eye(0.0, 0.0, 10.0);  // top_down()'s camera
+  for (shading::ShaderModel card : {shading::ShaderModel::ps_2_0, shading::ShaderModel::ps_3_0}) {
+    SCOPED_TRACE(std::string(shading::caps(card).name));
+    f.model = card;
+    const rasterizer::Image image = render_frame(s, f);
+    int checked = 0, off = 0;
+    for (int py = 2; py < 62; py += 3)
+      for (int px = 1; px < 30; px += 3) {
+        const glm::dvec3 world(-1.0 + (px + 0.5) / 32.0, 1.0 - (py + 0.5) / 32.0, 0.0);
+        double spec[3];
+        for (int k = 0; k < 3; ++k) {
+          const double c = double(glm::unpackHalf1x16(glm::packHalf1x16(kGreen[k]))) * tint[k];
+          spec[k] = c + (c * c - c) * contrast;
+        }
+        const double grey = 0.299 * spec[0] + 0.587 * spec[1] + 0.114 * spec[2];
+        const double n_dot_v = glm::normalize(eye - world).z;
+        const double fresnel = std::pow(1.0 - n_dot_v, 5.0) * (1.0 - r0) + r0;
+        for (int k = 0; k < 3; ++k) {
+          const double want = 255.0 * srgb_encode((grey + (spec[k] - grey) * saturation) * fresnel);
+          const int got = image.pixel(px, py)[k];
+          if (std::abs(got - want) > 1.0) {
+            ++off;
+            ADD_FAILURE() << "pixel (" << px << ", " << py << ") channel " << k << ": " << got << ", want " << want;
+          }
+        }
+        ++checked;
+        if (off > 5) break;
+      }
+    EXPECT_GT(checked, 150);
+  }
+}
+
 }  // namespace
 }  // namespace luxel::frame
