@@ -40,7 +40,8 @@ uint64_t cubemap_input_hash(const scenes::Scene& scene, const CubemapSettings& s
              m.envmap_saturation, m.envmap_fresnel, m.fresnel_reflection, m.self_illum, m.self_illum_tint, m.emissive, m.alpha,
              m.alpha_cutoff, m.translucent, m.double_sided, m.linear_write);
     h.values(m.phong, m.phong_exponent, m.phong_boost, m.phong_fresnel_ranges, m.phong_tint, m.base_map_alpha_phong_mask,
-             m.rim, m.rim_exponent, m.rim_boost, m.rim_mask, m.half_lambert, m.hero_boost);
+             m.rim, m.rim_exponent, m.rim_boost, m.rim_mask, m.half_lambert, m.hero_boost, m.phong_exponent_factor,
+             m.phong_albedo_tint, m.invert_phong_mask);
     for (const scenes::TextureRef* r : {&m.base, &m.bump, &m.detail, &m.envmap_texture, &m.envmap_mask_texture,
                                         &m.phong_exponent_texture, &m.water_normal})
       hash_ref(h, *r);

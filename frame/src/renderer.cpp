@@ -618,10 +618,13 @@ class FrameBuilder {
     p.lights = lighting.lights;
     p.eye_position = glm::vec4(eye_, 1.0f);
     p.modulation = m.color;
-    p.phong_tint_boost = glm::vec4(m.phong_tint, m.phong_boost);
-    p.phong_params =
-        glm::vec4(phong_exponent_constant(m.phong_exponent), std::max(m.rim_exponent, 1.0f), m.rim_boost, m.rim_mask ? 1.0f : 0.0f);
-    p.base_map_alpha_phong_mask.x = m.base_map_alpha_phong_mask ? 1.0f : 0.0f;
+    const bool exponent_texture = m.phong_exponent_texture.bound();
+    p.phong_tint_boost = glm::vec4(skin_specular_tint(m.phong_tint, m.phong_albedo_tint, exponent_texture), m.phong_boost);
+    const SkinExponentConstants exponent =
+        skin_exponent_constants(m.phong_exponent, m.phong_exponent_factor, path == VertexLitPath::skin && skin_fast_path(vm));
+    p.phong_params = glm::vec4(exponent.exponent, std::max(m.rim_exponent, 1.0f), m.rim_boost, m.rim_mask ? 1.0f : 0.0f);
+    p.shader_controls = glm::vec4(m.base_map_alpha_phong_mask ? 1.0f : 0.0f, exponent.texture_scale, 0.0f,
+                                  m.invert_phong_mask ? 1.0f : 0.0f);
     p.fresnel_ranges = encode_fresnel_ranges(m.phong_fresnel_ranges.x, m.phong_fresnel_ranges.y, m.phong_fresnel_ranges.z);
     if (env) p.envmap = SamplerCube{8, &env->texture, biased(env->sampler)};
     p.envmap_tint = glm::vec4(m.envmap_tint, skin_envmap_mask_control(vm));

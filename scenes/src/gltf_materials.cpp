@@ -24,6 +24,7 @@ constexpr FloatKey kFloats[] = {
     {"envmapcontrast", &Material::envmap_contrast},   {"envmapsaturation", &Material::envmap_saturation},
     {"envmapfresnel", &Material::envmap_fresnel},
     {"fresnelreflection", &Material::fresnel_reflection}, {"phongexponent", &Material::phong_exponent},
+    {"phongexponentfactor", &Material::phong_exponent_factor},
     {"phongboost", &Material::phong_boost},           {"rimlightexponent", &Material::rim_exponent},
     {"rimlightboost", &Material::rim_boost},          {"heroboost", &Material::hero_boost},
     {"alphatestreference", &Material::alpha_cutoff},  {"reflectamount", &Material::reflect_amount},
@@ -41,7 +42,8 @@ constexpr BoolKey kBools[] = {
     {"rimlight", &Material::rim},        {"rimmask", &Material::rim_mask},
     {"halflambert", &Material::half_lambert}, {"selfillum", &Material::self_illum},
     {"translucent", &Material::translucent},  {"nocull", &Material::double_sided},
-    {"blurrefract", &Material::water_blur_refract},
+    {"blurrefract", &Material::water_blur_refract}, {"phongalbedotint", &Material::phong_albedo_tint},
+    {"invertphongmask", &Material::invert_phong_mask},
 };
 constexpr TextureKey kTextures[] = {
     {"basetexture", &Material::base, ColorSpace::srgb},

@@ -100,6 +100,7 @@ void check_material_numbers(const Scene& scene, const Material& m, const std::st
       {"envmapfresnel", {m.envmap_fresnel}},
       {"fresnelreflection", {m.fresnel_reflection}},
       {"phongexponent", {m.phong_exponent}},
+      {"phongexponentfactor", {m.phong_exponent_factor}},
       {"phongboost", {m.phong_boost}},
       {"phongfresnelranges", {m.phong_fresnel_ranges.x, m.phong_fresnel_ranges.y, m.phong_fresnel_ranges.z}},
       {"phongtint", {m.phong_tint.r, m.phong_tint.g, m.phong_tint.b}},

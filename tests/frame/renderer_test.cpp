@@ -222,15 +222,11 @@ TEST(Renderer, PhongOnlyForBumpedModelsFromPs2b) {
 // $phongfresnelranges on a flat bumped square under one directional light, seen in perspective
 // (the view vector varies), against the Phong reference written from docs/fidelity.md#phong in
 // double (tests/shading/phong_reference.hpp) plus the ambient cube along the normal.
-TEST(Renderer, PhongParametersReachTheSkinShader) {
-  scenes::Scene s = lit_by_cube_and_sun(true);
+/// A Phong material on lit_by_cube_and_sun's square (a flat bump map), seen in perspective with the
+/// sun where the square mirrors the eye, against `ref` (its light and normal set here; its base the
+/// caller's): every pixel within a step on ps_2_b and ps_3_0, and the specular showing.
+void expect_skin_frame(scenes::Scene s, shading::source::testing::PhongReference ref) {
   add_flat_bump_map(s);
-  scenes::Material& m = s.materials[0];
-  m.phong = true;
-  m.phong_exponent = 8;
-  m.phong_boost = 3;
-  m.phong_tint = {1.0f, 0.7f, 0.4f};
-  m.phong_fresnel_ranges = {0.2f, 0.6f, 0.9f};
   scenes::Camera& c = s.cameras[0];
   c.projection = scenes::Projection::perspective;
   c.position = {0.3f, -2.0f, 3.0f};
@@ -238,14 +234,8 @@ TEST(Renderer, PhongParametersReachTheSkinShader) {
   // The sun where the square mirrors the eye: a highlight in view.
   const glm::dvec3 to_sun = glm::normalize(glm::dvec3(-0.3, 2.0, 3.0));
   s.lights[0].direction = -glm::vec3(to_sun);
-  shading::source::testing::PhongReference ref;
   ref.light_dir = glm::dvec3(glm::normalize(glm::vec3(to_sun)));
   ref.light_color = {0.5, 0.375, 0.25};
-  ref.base = {0.8, 0.6, 0.4};
-  ref.exponent_constant = 8;
-  ref.boost = 3;
-  ref.tint = {1.0, 0.7, 0.4};
-  ref.fresnel_min = 0.2, ref.fresnel_mid = 0.6, ref.fresnel_max = 0.9;
   const double t = 2.0 * 128.0 / 255.0 - 1.0;  // the flat normal map's 8-bit texel
   const glm::dvec3 n = glm::normalize(glm::dvec3(t, t, 1.0));
   // The ambient cube along n: the +Z side (0.5, 0.25, 0.125), the x and y sides 9.
@@ -280,6 +270,54 @@ TEST(Renderer, PhongParametersReachTheSkinShader) {
     EXPECT_GT(checked, 150) << shading::caps(model).name;
     EXPECT_GT(specular_steps, 10.0) << "the specular must show for the parameters to be tested";
   }
+}
+
+TEST(Renderer, PhongParametersReachTheSkinShader) {
+  scenes::Scene s = lit_by_cube_and_sun(true);
+  scenes::Material& m = s.materials[0];
+  m.phong = true;
+  m.phong_exponent = 8;
+  m.phong_boost = 3;
+  m.phong_tint = {1.0f, 0.7f, 0.4f};
+  m.phong_fresnel_ranges = {0.2f, 0.6f, 0.9f};
+  shading::source::testing::PhongReference ref;
+  ref.base = {0.8, 0.6, 0.4};  // $color over a white texel
+  ref.exponent_constant = 8;
+  ref.boost = 3;
+  ref.tint = {1.0, 0.7, 0.4};
+  ref.fresnel_min = 0.2, ref.fresnel_mid = 0.6, ref.fresnel_max = 0.9;
+  expect_skin_frame(s, ref);
+}
+
+// skin_dx9_helper.cpp: $phongexponentfactor scales the exponent texture's r (1 + factor r) over
+// $phongexponent, and a $phongtint of zero with $phongalbedotint and an exponent texture tints by
+// the albedo where the texture's g says (docs/fidelity.md#phong-defaults).
+TEST(Renderer, PhongExponentFactorAndAlbedoTintReachTheSkinShader) {
+  scenes::Scene s = lit_by_cube_and_sun(true);
+  // The albedo tint reads the base texel (not $color): a coloured base texture, $color white.
+  s.textures.push_back(solid_texture("base", scenes::ColorSpace::srgb, {204, 153, 102, 255}));
+  s.materials[0].base.texture = static_cast<int>(s.textures.size()) - 1;
+  s.materials[0].color = glm::vec4(1.0f);
+  s.textures.push_back(solid_texture("exponent", scenes::ColorSpace::linear, {128, 153, 0, 255}));
+  scenes::Material& m = s.materials[0];
+  m.phong = true;
+  m.phong_exponent = 40;  // overridden by the factor
+  m.phong_exponent_factor = 16;
+  m.phong_exponent_texture.texture = static_cast<int>(s.textures.size()) - 1;
+  m.phong_boost = 3;
+  m.phong_tint = glm::vec3(0.0f);
+  m.phong_albedo_tint = true;
+  shading::source::testing::PhongReference ref;
+  ref.base = {srgb_decode(204.0 / 255.0), srgb_decode(153.0 / 255.0), srgb_decode(102.0 / 255.0)};
+  ref.exponent_factor = 16;
+  ref.exponent_texel = glm::dvec4(128.0 / 255.0, 153.0 / 255.0, 0.0, 1.0);
+  ref.boost = 3;
+  ref.tint = glm::dvec3(-1.0);  // the albedo tint
+  expect_skin_frame(s, ref);
+  // Without $phongalbedotint the zero tint is white, not black.
+  s.materials[0].phong_albedo_tint = false;
+  ref.tint = glm::dvec3(1.0);
+  expect_skin_frame(s, ref);
 }
 
 // $basemapalphaphongmask: the skin shader takes the normal (0, 0, 1) and the mask from the base

@@ -26,6 +26,7 @@ struct PhongReference {
   bool fast_path = false;
   glm::dvec4 exponent_texel{1.0};  // r: exponent 1 + 149 r, g: albedo tint, a: rim mask (white: none)
   double exponent_constant = -1.0;  // c.w: >= 0 the exponent, else from the texel ($phongexponent unset)
+  double exponent_factor = 0.0;     // $phongexponentfactor: not 0, the exponent is 1 + factor r (full path)
   glm::dvec3 tint{1.0};             // $phongtint; r < 0: the albedo tint lerp(1, base, texel g)
   double boost = 1.0;
   double fresnel_min = 0.0, fresnel_mid = 0.5, fresnel_max = 1.0;
@@ -37,6 +38,7 @@ struct PhongReference {
   double mask() const { return fast_path || base_map_alpha_phong_mask ? base_alpha : normal_alpha; }
   double exponent() const {
     if (fast_path) return std::max(exponent_constant, 0.0);
+    if (exponent_factor != 0.0) return 1.0 + exponent_factor * exponent_texel.x;
     return exponent_constant >= 0.0 ? exponent_constant : 1.0 + 149.0 * exponent_texel.x;
   }
   glm::dvec3 specular_tint() const {

@@ -203,7 +203,12 @@ void expect_phong(const testing::PhongReference& ref, const glm::dvec3& normal, 
   t.exponent = float4<float>(float(ref.exponent_texel.x), float(ref.exponent_texel.y), float(ref.exponent_texel.z),
                              float(ref.exponent_texel.w));
   VertexLitParams p = phong_params(ref, eye);
-  p.base_map_alpha_phong_mask.x = ref.base_map_alpha_phong_mask ? 1.0f : 0.0f;
+  p.shader_controls.x = ref.base_map_alpha_phong_mask ? 1.0f : 0.0f;
+  if (ref.exponent_factor != 0.0) {
+    // skin_dx9_helper.cpp's PHONG_USE_EXPONENT_FACTOR binary, as luxel's one binary reads it.
+    p.phong_params.x = -1.0f;
+    p.shader_controls.y = float(ref.exponent_factor);
+  }
   const float4<float> got = shade<C>(p, float3<float>(0.0f), float3<float>(float(normal.x), float(normal.y), float(normal.z)), t);
   // The normal the shader lights with: the texel's, 2 t - 1 in the frame tangent (1, 0, 0),
   // binormal (0, 1, 0), normal `normal` (shade()), or `normal` itself where the normal map is not
@@ -269,6 +274,17 @@ TEST(SourceVertexLit, PhongExponentConstantOverTheTextureAnd150WhenUnset) {
   for (const glm::dvec3& eye : phong_eyes()) expect_phong<kSkin>(ref, kPhongNormal, eye, "constant over the texture");
 }
 
+TEST(SourceVertexLit, PhongExponentFactorScalesTheExponentTexture) {
+  // skin_ps20b.fxc's PHONG_USE_EXPONENT_FACTOR: 1 + factor r, whatever $phongexponent says.
+  testing::PhongReference ref = phong_material();
+  for (double factor : {4.0, 20.0})
+    for (double red : {0.1, 0.5}) {
+      ref.exponent_factor = factor;
+      ref.exponent_texel = glm::dvec4(red, 0.0, 0.0, 1.0);
+      for (const glm::dvec3& eye : phong_eyes()) expect_phong<kSkin>(ref, kPhongNormal, eye, "exponent factor");
+    }
+}
+
 TEST(SourceVertexLit, PhongTintBelowZeroTintsWithTheAlbedo) {
   testing::PhongReference ref = phong_material();
   ref.tint = glm::dvec3(-1.0);
@@ -288,9 +304,9 @@ TEST(SourceVertexLit, BaseMapAlphaPhongMaskDropsTheNormalMapAndMasksWithTheBase)
   p.modulation.w = 0.6f;
   VertexLitTexels<float> t;
   t.base.w = 0.3f;
-  p.base_map_alpha_phong_mask.x = 1.0f;
+  p.shader_controls.x = 1.0f;
   EXPECT_FLOAT_EQ(shade<kSkin>(p, float3<float>(0.0f), float3<float>(0, 0, 1), t).w, 0.6f);
-  p.base_map_alpha_phong_mask.x = 0.0f;
+  p.shader_controls.x = 0.0f;
   EXPECT_NEAR(shade<kSkin>(p, float3<float>(0.0f), float3<float>(0, 0, 1), t).w, 0.18f, 1e-6f);
   // Without the flag the texel is the normal and the normal map's alpha the mask.
   ref.base_map_alpha_phong_mask = false;
@@ -362,10 +378,12 @@ TEST(SourceVertexLit, SkinEnvMapTakesTheFresnelRangesAndTheBaseAlphaAsItsMask) {
   const glm::dvec3 tint(0.9, 0.7, 0.5);
   for (bool fast : {false, true})
     for (bool phong_mask : {false, true})
+      for (bool invert : {false, true})  // $invertphongmask: lerp(mask, 1 - mask, invert)
       for (double envmap_fresnel : {0.0, 0.6, 1.0})
         for (const glm::dvec3& eye : phong_eyes()) {
           ref.fast_path = fast;
           VertexLitParams p = phong_params(ref, eye);
+          p.shader_controls.w = invert ? 1.0f : 0.0f;
           p.tonemap.c30.z = 1.5f;  // ENV_MAP_SCALE
           p.envmap_tint = glm::vec4(glm::vec3(tint), phong_mask ? 1.0f : 0.0f);
           p.envmap_fresnel.x = float(envmap_fresnel);
@@ -376,11 +394,12 @@ TEST(SourceVertexLit, SkinEnvMapTakesTheFresnelRangesAndTheBaseAlphaAsItsMask) {
                                       : env_term<kSkinEnv, kSkin>(p, kPhongNormal, t);
           const glm::dvec3 n = kPhongNormal, v = glm::normalize(eye);
           const glm::dvec3 r = 2.0 * glm::dot(n, v) * n - v;
-          const double mask = phong_mask ? ref.mask() : ref.base_alpha;
+          const double unmasked = phong_mask ? ref.mask() : ref.base_alpha;
+          const double mask = invert ? 1.0 - unmasked : unmasked;
           const double scale = 1.5 * (1.0 + (ref.fresnel(n, v) - 1.0) * envmap_fresnel) * mask;
           expect_env(got, scale * test_env(r) * tint,
                      std::string(fast ? "fast path" : "full path") + (phong_mask ? ", Phong mask" : ", base alpha") +
-                         ", $envmapfresnel " + std::to_string(envmap_fresnel));
+                         (invert ? ", inverted" : "") + ", $envmapfresnel " + std::to_string(envmap_fresnel));
         }
 }
 

@@ -107,5 +107,34 @@ TEST(VertexLitDispatch, EnvMapMasksAsTheHelpersLeaveThem) {
   EXPECT_FALSE(generic_combo(colored, true, Fog::none).vertex_color) << "VertexLitGeneric's lighting takes i.color";
 }
 
+TEST(VertexLitDispatch, SkinExponentConstantsAsTheHelperSetsThem) {
+  // skin_dx9_helper.cpp: c.w = $phongexponentfactor when not 0 (the PHONG_USE_EXPONENT_FACTOR
+  // binary: 1 + factor r), else $phongexponent when above 0, else -1 (1 + 149 r from the texture).
+  // luxel's one binary: the texture path with the factor as its scale; the fast path reads c.w.
+  const SkinExponentConstants unset = skin_exponent_constants(0.0f, 0.0f, false);
+  EXPECT_EQ(unset.exponent, -1.0f);
+  EXPECT_EQ(unset.texture_scale, 149.0f);
+  EXPECT_EQ(skin_exponent_constants(-3.0f, 0.0f, false).exponent, -1.0f) << "not above 0: unset";
+  const SkinExponentConstants constant = skin_exponent_constants(12.0f, 0.0f, false);
+  EXPECT_EQ(constant.exponent, 12.0f);
+  EXPECT_EQ(constant.texture_scale, 149.0f);
+  const SkinExponentConstants factor = skin_exponent_constants(12.0f, 20.0f, false);
+  EXPECT_EQ(factor.exponent, -1.0f) << "the factor wins over $phongexponent";
+  EXPECT_EQ(factor.texture_scale, 20.0f);
+  EXPECT_EQ(skin_exponent_constants(12.0f, 20.0f, true).exponent, 20.0f) << "FASTPATH_NOBUMP: max(c.w, 0), c.w the factor";
+  EXPECT_EQ(skin_exponent_constants(12.0f, 0.0f, true).exponent, 12.0f);
+}
+
+TEST(VertexLitDispatch, SkinSpecularTintAsTheHelperSetsIt) {
+  // skin_dx9_helper.cpp: $phongtint as given; all zero: -1 (the albedo tint) with $phongalbedotint
+  // and an exponent texture, else white.
+  const glm::vec3 tint(0.5f, 0.25f, 1.0f), zero(0.0f);
+  EXPECT_EQ(skin_specular_tint(tint, true, true), tint) << "a tint wins over $phongalbedotint";
+  EXPECT_EQ(skin_specular_tint(zero, true, true), glm::vec3(-1.0f, 0.0f, 0.0f));
+  EXPECT_EQ(skin_specular_tint(zero, true, false), glm::vec3(1.0f)) << "no exponent texture: no tint map";
+  EXPECT_EQ(skin_specular_tint(zero, false, true), glm::vec3(1.0f)) << "zero means unset: white, not black";
+  EXPECT_EQ(skin_specular_tint(glm::vec3(0.0f, 0.0f, 0.5f), true, true), glm::vec3(0.0f, 0.0f, 0.5f));
+}
+
 }  // namespace
 }  // namespace luxel::shading::source

@@ -123,8 +123,13 @@ struct Material {
   float phong_exponent = 0.0f;
   float phong_boost = 1.0f;         ///< $phongboost
   glm::vec3 phong_fresnel_ranges{0.0f, 0.5f, 1.0f};  ///< $phongfresnelranges
-  glm::vec3 phong_tint{1.0f};       ///< $phongtint
+  /// $phongexponentfactor; not 0: the exponent is 1 + factor x the exponent texture's r
+  float phong_exponent_factor = 0.0f;
+  /// $phongtint; all zero: none (white, or the albedo tint with $phongalbedotint)
+  glm::vec3 phong_tint{1.0f};
+  bool phong_albedo_tint = false;   ///< $phongalbedotint: with no tint, tint by the albedo where the exponent texture's g says
   TextureRef phong_exponent_texture;  ///< $phongexponenttexture: r = exponent, g = albedo tint mask
+  bool invert_phong_mask = false;   ///< $invertphongmask: the skin shader's env map masked by 1 - its mask
   bool base_map_alpha_phong_mask = false;  ///< $basemapalphaphongmask (else the normal map's alpha)
   bool rim = false;                 ///< $rimlight
   float rim_exponent = 4.0f;        ///< $rimlightexponent

@@ -145,10 +145,14 @@ struct VertexLitParams {
   glm::vec4 modulation{1.0f};                          ///< $color (linear) and alpha
   /// rgb $phongtint (r < 0: the albedo tint lerp(1, base, exponent texel g)), w $phongboost
   glm::vec4 phong_tint_boost{1.0f, 1.0f, 1.0f, 1.0f};
-  /// x the exponent (phong_exponent_constant()), y $rimlightexponent, z $rimlightboost, w $rimmask (0/1)
+  /// x the exponent (skin_exponent_constants()), y $rimlightexponent, z $rimlightboost, w $rimmask (0/1)
   glm::vec4 phong_params{-1.0f, 4.0f, 1.0f, 0.0f};
-  /// x $basemapalphaphongmask (0/1): the skin shader's normal (0, 0, 1), mask and alpha from the base
-  glm::vec4 base_map_alpha_phong_mask{0.0f};
+  /// The skin shader's controls (its g_ShaderControls, and the exponent texture's scale):
+  /// x $basemapalphaphongmask (0/1): the normal (0, 0, 1), mask and alpha from the base;
+  /// y what the full path multiplies the exponent texture's r by (1 + y r): 149, or
+  /// $phongexponentfactor (skin_exponent_constants()); w $invertphongmask (0/1): the env map's
+  /// mask inverted.
+  glm::vec4 shader_controls{0.0f, 149.0f, 0.0f, 0.0f};
   /// $phongfresnelranges re-encoded (2(mid-min), mid, 2(max-mid)); (1, 0.5, 1) = plain (1-N·V)²
   glm::vec4 fresnel_ranges{1.0f, 0.5f, 1.0f, 0.0f};
   /// rgb $envmaptint; w (the skin shader) 1 with $normalmapalphaenvmapmask: the Phong mask masks
@@ -163,10 +167,28 @@ struct VertexLitParams {
   SamplerCube normalization_cube{5, nullptr, normalization_cube_sampler()};
 };
 
-/// The skin shader's exponent constant, as skin_dx9_helper.cpp sets it: $phongexponent when it is
-/// above 0, else -1, which the full path reads as "from the exponent texture" (1 + 149 r; a white
-/// texture when there is none: 150) and FASTPATH_NOBUMP as 0.
-inline float phong_exponent_constant(float phong_exponent) { return phong_exponent > 0.0f ? phong_exponent : -1.0f; }
+/// The skin shader's exponent constants as skin_dx9_helper.cpp sets them: c.w is
+/// $phongexponentfactor when it is not 0, else $phongexponent when it is above 0, else -1. The full
+/// path reads c.w >= 0 as the exponent and otherwise takes it from the exponent texture (a white
+/// one when there is none), 1 + 149 r; with a factor the SDK runs the PHONG_USE_EXPONENT_FACTOR
+/// binary, 1 + factor r, which luxel's one binary computes as the texture path with the factor as
+/// the scale (exponent -1, scale factor). FASTPATH_NOBUMP reads max(c.w, 0).
+struct SkinExponentConstants {
+  float exponent = -1.0f;         ///< VertexLitParams::phong_params.x
+  float texture_scale = 149.0f;   ///< VertexLitParams::shader_controls.y
+};
+inline SkinExponentConstants skin_exponent_constants(float phong_exponent, float phong_exponent_factor, bool fast_path) {
+  if (phong_exponent_factor != 0.0f) return fast_path ? SkinExponentConstants{phong_exponent_factor} : SkinExponentConstants{-1.0f, phong_exponent_factor};
+  return {phong_exponent > 0.0f ? phong_exponent : -1.0f};
+}
+
+/// The skin shader's specular tint constant (skin_dx9_helper.cpp): $phongtint; all zero (no tint)
+/// sends -1 in r, the albedo tint lerp(1, base, exponent texel g), with $phongalbedotint and an
+/// exponent texture, else white.
+inline glm::vec3 skin_specular_tint(const glm::vec3& phong_tint, bool albedo_tint, bool exponent_texture) {
+  if (phong_tint != glm::vec3(0.0f)) return phong_tint;
+  return albedo_tint && exponent_texture ? glm::vec3(-1.0f, 0.0f, 0.0f) : glm::vec3(1.0f);
+}
 
 /// The CPU re-encoding of $phongfresnelranges (docs/fidelity.md#phong).
 inline glm::vec4 encode_fresnel_ranges(float min, float mid, float max) {
@@ -263,7 +285,7 @@ inline float4<L> vertexlit_combine(const VertexLitTexels<L>& t, const VertexLitI
   float3<L> n;
   if constexpr (C.bump) {
     float3<L> tn = t.bump.xyz() * 2.0f - 1.0f;
-    if constexpr (C.phong) tn = lerp(tn, float3<L>(0.0f, 0.0f, 1.0f), L(constant<L>(p.base_map_alpha_phong_mask).x));
+    if constexpr (C.phong) tn = lerp(tn, float3<L>(0.0f, 0.0f, 1.0f), L(constant<L>(p.shader_controls).x));
     n = vertexlit_normalize<C>(tn.x * in.tangent + tn.y * in.binormal + tn.z * in.normal, p);
   } else {
     n = vertexlit_normalize<C>(in.normal, p);
@@ -276,7 +298,7 @@ inline float4<L> vertexlit_combine(const VertexLitTexels<L>& t, const VertexLitI
     view = normalize(constant<L>(p.eye_position).xyz() - in.world_pos);
     const L c = constant<L>(p.phong_params).x;
     if constexpr (C.bump) {
-      exponent = select(c >= L(0.0f), c, L(t.exponent.x * 149.0f + 1.0f));
+      exponent = select(c >= L(0.0f), c, L(t.exponent.x * L(constant<L>(p.shader_controls).y) + 1.0f));
     } else {
       exponent = max(c, L(0.0f));
     }
@@ -319,7 +341,7 @@ inline float4<L> vertexlit_combine(const VertexLitTexels<L>& t, const VertexLitI
     L mask = t.base.w;
     float3<L> tint(1.0f);
     if constexpr (C.bump) {
-      mask = lerp(t.bump.w, t.base.w, L(constant<L>(p.base_map_alpha_phong_mask).x));
+      mask = lerp(t.bump.w, t.base.w, L(constant<L>(p.shader_controls).x));
       tint = select(tint_boost.x >= L(0.0f), tint_boost.rgb(), lerp(float3<L>(1.0f), t.base.rgb(), t.exponent.y));
     }
     float3<L> env_color(0.0f);
@@ -327,7 +349,9 @@ inline float4<L> vertexlit_combine(const VertexLitTexels<L>& t, const VertexLitI
       // The base alpha masks the env map, or with $normalmapalphaenvmapmask the Phong mask.
       const float4<L> env_tint = constant<L>(p.envmap_tint);
       const L env_mask = lerp(t.base.w, mask, env_tint.w);
-      const L scale = constant<L>(p.tonemap.c30).z * lerp(L(1.0f), fresnel, L(constant<L>(p.envmap_fresnel).x)) * env_mask;
+      const L invert = constant<L>(p.shader_controls).w;  // $invertphongmask
+      const L scale = constant<L>(p.tonemap.c30).z * lerp(L(1.0f), fresnel, L(constant<L>(p.envmap_fresnel).x)) *
+                      lerp(env_mask, 1.0f - env_mask, invert);
       env_color = env((2.0f * dot(n, view)) * n - view) * scale * env_tint.rgb();
     }
     spec = spec * (mask * fresnel * tint_boost.w);
@@ -356,7 +380,7 @@ inline float4<L> vertexlit_combine(const VertexLitTexels<L>& t, const VertexLitI
     color = color + lerp(float3<L>(grey), s, constant<L>(p.envmap_saturation).xyz());
   }
   L alpha = t.base.w * modulation.w;
-  if constexpr (C.phong) alpha = lerp(alpha, modulation.w, L(constant<L>(p.base_map_alpha_phong_mask).x));
+  if constexpr (C.phong) alpha = lerp(alpha, modulation.w, L(constant<L>(p.shader_controls).x));
   const FogInputs<L> fog{in.world_pos.z, in.proj_z};
   return fogged_output<ToneMap::linear, C.fog>(float4<L>(color, alpha), p.tonemap, fog, p.fog);
 }
