@@ -21,12 +21,7 @@ constexpr double kGrey = 0.15;  // the scene's linear luminance before the tone 
 
 /// An unlit grey square filling the view: the frame's luminance is kGrey x the scale.
 scenes::Scene grey_scene() {
-  scenes::Scene s = top_down();
-  scenes::Material m;
-  m.family = scenes::ShaderFamily::unlit_generic;
-  m.color = {float(kGrey), float(kGrey), float(kGrey), 1.0f};
-  s.materials = {m};
-  s.meshes = {square(-1, -1, 1, 1, 0, 0)};
+  scenes::Scene s = grey_square(kGrey);
   s.exposure.min_scale = 0.5f;
   s.exposure.max_scale = 8.0f;
   return s;

@@ -30,12 +30,7 @@ double unorm8(double v) { return std::nearbyint(std::clamp(v, 0.0, 1.0) * 255.0)
 /// An unlit grey square filling an orthographic view; the camera rises along its path and enters,
 /// after 4 s, a zone whose controls are the scene's but for a bloom scale of 2.
 scenes::Scene bloom_zone_scene() {
-  scenes::Scene s = top_down();
-  scenes::Material m;
-  m.family = scenes::ShaderFamily::unlit_generic;
-  m.color = {float(kBloomGrey), float(kBloomGrey), float(kBloomGrey), 1.0f};
-  s.materials = {m};
-  s.meshes = {square(-1, -1, 1, 1, 0, 0)};
+  scenes::Scene s = grey_square(kBloomGrey);
   // A narrow range: the scale moves from 1 to 1.2 and stays below where grey plus bloom clips.
   s.exposure.min_scale = 0.5f;
   s.exposure.max_scale = 1.2f;

@@ -31,6 +31,16 @@ scenes::Scene top_down() {
   return s;
 }
 
+scenes::Scene grey_square(double grey) {
+  scenes::Scene s = top_down();
+  scenes::Material m;
+  m.family = scenes::ShaderFamily::unlit_generic;
+  m.color = {float(grey), float(grey), float(grey), 1.0f};
+  s.materials = {m};
+  s.meshes = {square(-1, -1, 1, 1, 0, 0)};
+  return s;
+}
+
 void attach_lightmaps(scenes::Scene& s, const glm::vec3& flat, const glm::vec3 (&basis)[3]) {
   scenes::Lightmaps maps;
   maps.width = maps.height = 4;

@@ -43,6 +43,10 @@ int channels_off(const rasterizer::Image& image, int x0, int x1, const std::arra
 /// +Y), nothing else.
 scenes::Scene top_down();
 
+/// top_down() filled by an unlit square of linear grey `grey`: the frame's luminance is `grey` x
+/// the exposure scale.
+scenes::Scene grey_square(double grey);
+
 /// Four constant lightmaps (flat, then the three basis maps) attached to `s`.
 void attach_lightmaps(scenes::Scene& s, const glm::vec3& flat, const glm::vec3 (&basis)[3]);
 
