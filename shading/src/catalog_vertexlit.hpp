@@ -5,22 +5,15 @@
 
 #include "catalog_entries.hpp"
 
-#include "luxel/shading/source/normalization_cube.hpp"
-
 namespace luxel::shading::source::detail {
+
+/// The constants both halves time with: two lights and the normalization cube (the ps_2_0
+/// combos), made once (catalog_vertexlit.cpp).
+const VertexLitParams& vertexlit_timing_params();
 
 template <auto kCombos>
 void add_vertexlit(std::vector<ShaderVariant>& out) {
-  static const rasterizer::Texture normalization_cube = normalization_cube_map();  // the ps_2_0 combos
-  static VertexLitParams p = [] {
-    VertexLitParams q;
-    for (auto& l : q.lights) {
-      l.color = glm::vec4(1.0f, 0.8f, 0.6f, 0.0f);
-      l.position = glm::vec4(2.0f, 1.0f, 3.0f, 1.0f);
-    }
-    q.normalization_cube.texture = &normalization_cube;
-    return q;
-  }();
+  static const VertexLitParams& p = vertexlit_timing_params();
   for_each_combo<kCombos>([&]<VertexLitCombo C>() {
     auto shade = []<class L>(const auto& get) {
       VertexLitTexels<L> t;
