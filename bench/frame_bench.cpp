@@ -17,6 +17,7 @@
 #include "sponza.hpp"
 
 #include "luxel/bake/bake.hpp"
+#include "luxel/frame/cubemaps.hpp"
 #include "luxel/frame/renderer.hpp"
 #include "luxel/rasterizer/fast_paths.hpp"
 #include "luxel/scenes/builtin.hpp"
@@ -147,9 +148,12 @@ int main(int argc, char** argv) {
     } else {
       try {
         scene = luxel::scenes::make_builtin_scene(name, {settings.width, settings.height});
-        // Scenes that need baked data get a quick bake, before the clock and not timed.
-        if (name == "demo" || name == "courtyard")
+        // Scenes that need baked data get what `luxel render --bake quick` bakes (the lightmaps,
+        // the irradiance volume and the cube maps), before the clock and not timed.
+        if (name == "demo" || name == "courtyard") {
           luxel::bake::attach(scene, luxel::bake::bake(scene, luxel::bake::BakeSettings::quick()));
+          luxel::frame::attach_cubemaps(scene, luxel::frame::bake_cubemaps(scene, luxel::frame::CubemapSettings::quick(), ctx));
+        }
         renderer = std::make_unique<luxel::frame::Renderer>(scene, settings);
         // As luxel render starts a still: auto exposure settled on the view (untimed).
         if (const luxel::frame::SettledExposure s = renderer->settle_exposure(ctx); s.draws > 0)

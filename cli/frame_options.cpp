@@ -79,6 +79,13 @@ void FrameOptions::add_to(CLI::App& cmd) {
                  "bumped and skin models on ps_2_b and ps_3_0, as the SDK's later shaders take")
       ->check(CLI::Range(1, 4))
       ->capture_default_str();
+  const std::map<std::string, rasterizer::SamplingRules> sampling{{"hardware", rasterizer::SamplingRules::hardware},
+                                                                   {"ideal", rasterizer::SamplingRules::ideal}};
+  cmd.add_option("--sampling", settings.sampling,
+                 "How the 3D passes filter textures: hardware (as DX9-era cards did: a LOD per 2x2 quad, 8-bit weights "
+                 "and LOD fraction, 8-bit texels in fixed point, sRGB decoded after filtering; the default) or ideal "
+                 "(float, a LOD per pixel, sRGB decoded first: docs/fidelity.md#texture-sampling)")
+      ->transform(CLI::CheckedTransformer(sampling, CLI::ignore_case));
   cmd.add_flag("--pixel-attenuation", settings.pixel_attenuation,
                "Attenuate the models' local lights per pixel where the combo fits the model, instead of per vertex as "
                "the SDK does");

@@ -9,6 +9,7 @@ namespace luxel::cli {
 ReportSection lighting_bases_section();
 ReportSection msaa_section();
 ReportSection shader_models_section();
+ReportSection texture_sampling_section();
 ReportSection vertex_lighting_section();
 ReportSection world_lighting_section();
 ReportSection ambient_sampling_section();

@@ -430,7 +430,7 @@ class FrameBuilder {
       pass.geometry = Geometry::indexed(std::span<const uint16_t>(kQuad), 4);
       SkyParams p;
       const GpuTexture& face = st_.sky_faces[static_cast<size_t>(f)];
-      p.base = Sampler2D{0, &face.texture, biased(face.sampler)};
+      p.base = Sampler2D{0, &face.texture, drawn(face.sampler)};
       const bool hdr = cube.faces.at(0).is_hdr();
       p.input_scale = glm::vec4(hdr ? sky_input_scale(SkyFormat::rgba16f) : glm::vec3(1.0f), 1.0f);
       p.tonemap = tonemap_;
@@ -511,11 +511,14 @@ class FrameBuilder {
 
   Sampler2D sampler2d(int slot, const scenes::TextureRef& ref) const {
     const GpuTexture& t = ref.bound() ? st_.textures[static_cast<size_t>(ref.texture)] : st_.white;
-    return Sampler2D{slot, &t.texture, biased(t.sampler)};
+    return Sampler2D{slot, &t.texture, drawn(t.sampler)};
   }
 
-  /// A material's, the sky's or a reflection's sampler with FrameSettings::texture_lod_bias.
-  rasterizer::Sampler biased(const rasterizer::Sampler& s) const { return with_lod_bias(s, st_.settings.texture_lod_bias); }
+  /// A sampler as the frame's draws read with it (as_drawn: FrameSettings::texture_lod_bias and
+  /// FrameSettings::sampling).
+  rasterizer::Sampler drawn(const rasterizer::Sampler& s) const {
+    return as_drawn(s, st_.settings.texture_lod_bias, st_.settings.sampling);
+  }
 
   /// Scene texture `t` if it is a cube, else null.
   const GpuTexture* cube_at(int t) const {
@@ -570,8 +573,8 @@ class FrameBuilder {
     combo.fog = fog_;
     LightmappedGenericParams p;
     p.base = sampler2d(0, m.base);
-    p.lightmap = Sampler2D{1, &st_.lightmaps->texture, st_.lightmaps->sampler};
-    if (env) p.envmap = SamplerCube{2, &env->texture, biased(env->sampler)};
+    p.lightmap = Sampler2D{1, &st_.lightmaps->texture, drawn(st_.lightmaps->sampler)};
+    if (env) p.envmap = SamplerCube{2, &env->texture, drawn(env->sampler)};
     p.bump = sampler2d(4, m.bump);
     p.envmap_mask = sampler2d(5, m.envmap_mask_texture);
     p.tint_lightmap_scale = glm::vec4(glm::vec3(m.color) * lightmap_scale_factor(LightmapFormat::hdr_float16), m.color.a);
@@ -612,7 +615,7 @@ class FrameBuilder {
     VertexLitParams p;
     p.base = sampler2d(0, m.base);
     // The skin shader's full path reads a normal map, a flat one when the material has none.
-    p.bump = m.bump.bound() ? sampler2d(3, m.bump) : Sampler2D{3, &st_.flat_normal.texture, st_.flat_normal.sampler};
+    p.bump = m.bump.bound() ? sampler2d(3, m.bump) : Sampler2D{3, &st_.flat_normal.texture, drawn(st_.flat_normal.sampler)};
     p.phong_exponent = sampler2d(7, m.phong_exponent_texture);
     p.ambient = lighting.cube;
     p.lights = lighting.lights;
@@ -626,7 +629,7 @@ class FrameBuilder {
     p.shader_controls = glm::vec4(m.base_map_alpha_phong_mask ? 1.0f : 0.0f, exponent.texture_scale, 0.0f,
                                   m.invert_phong_mask ? 1.0f : 0.0f);
     p.fresnel_ranges = encode_fresnel_ranges(m.phong_fresnel_ranges.x, m.phong_fresnel_ranges.y, m.phong_fresnel_ranges.z);
-    if (env) p.envmap = SamplerCube{8, &env->texture, biased(env->sampler)};
+    if (env) p.envmap = SamplerCube{8, &env->texture, drawn(env->sampler)};
     p.envmap_tint = glm::vec4(m.envmap_tint, skin_envmap_mask_control(vm));
     p.envmap_fresnel.x = m.envmap_fresnel;
     p.envmap_contrast = glm::vec4(m.envmap_contrast);
@@ -636,6 +639,7 @@ class FrameBuilder {
     if (combo->normalization_cube) {
       if (!st_.normalization_cube) st_.normalization_cube = GpuTexture{normalization_cube_map(), normalization_cube_sampler()};
       p.normalization_cube.texture = &st_.normalization_cube->texture;
+      p.normalization_cube.state = drawn(st_.normalization_cube->sampler);
     }
     target.vertex->lights = lighting.lights;
     return vertexlit_draw(*combo, model_, target, p);
@@ -671,7 +675,7 @@ class FrameBuilder {
   UnlitGenericParams generic_params(const scenes::Material& m, const GpuTexture* env) const {
     UnlitGenericParams p;
     p.base = sampler2d(0, m.base);
-    if (env) p.envmap = SamplerCube{1, &env->texture, biased(env->sampler)};
+    if (env) p.envmap = SamplerCube{1, &env->texture, drawn(env->sampler)};
     p.envmap_mask = sampler2d(4, m.envmap_mask_texture);
     p.envmap_tint = glm::vec4(m.envmap_tint, 0.0f);
     p.modulation = m.color;

@@ -312,11 +312,12 @@ std::optional<SourceDraw> WaterPasses::surface_draw(size_t index, const scenes::
                         settings_.dispatch_cards.water_blur.value_or(settings_.model) != shading::ShaderModel::ps_2_0;
   combo.fog = frame.fog;
   WaterParams p = water_constants(water_material(m), HdrType::integer, frame.tonemap);
-  p.refraction = Sampler2D{0, &plane.refraction_texture->texture, plane.refraction_texture->sampler};
+  auto drawn = [&](const rasterizer::Sampler& s) { return as_drawn(s, settings_.texture_lod_bias, settings_.sampling); };
+  p.refraction = Sampler2D{0, &plane.refraction_texture->texture, drawn(plane.refraction_texture->sampler)};
   // A refract-only combo never reads the reflection; the binding only has to be valid.
   const GpuTexture& reflection = plane.reflect ? *plane.reflection_texture : *plane.refraction_texture;
-  p.reflection = Sampler2D{2, &reflection.texture, reflection.sampler};
-  p.normal = Sampler2D{4, &normal_map.texture, with_lod_bias(normal_map.sampler, settings_.texture_lod_bias)};
+  p.reflection = Sampler2D{2, &reflection.texture, drawn(reflection.sampler)};
+  p.normal = Sampler2D{4, &normal_map.texture, drawn(normal_map.sampler)};
   p.pixel_fog = frame.fog_constants;
   WaterVertexConstants c;
   const scenes::UvTransform t = scenes::UvTransform::of(m.water_normal);

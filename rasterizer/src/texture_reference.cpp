@@ -2,9 +2,11 @@
 //
 // It follows the conventions in texture.hpp step by step. Where they fix float32 arithmetic
 // (coordinate reduction, texel positions, filter weights, face projection) it does exactly those
-// float operations, so that it picks the same texels as the SIMD path; everything after that
-// (decoding, filtering, cube seams) is done in double, by different means than the SIMD path
-// (true modulo for addressing, geometry for cube seams), so the two check each other.
+// float operations, so that it picks the same texels as the SIMD path. Under the ideal rules,
+// everything after that (decoding, filtering, cube seams) is done in double; under the hardware
+// rules, filtering is the rules' own fixed-point and float32 arithmetic, step by step. Either way
+// by different means than the SIMD path (true modulo for addressing, geometry for cube seams,
+// plain integers for the fixed point), so the two check each other.
 
 #include "luxel/rasterizer/texture.hpp"
 
@@ -14,6 +16,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
+#include <cstring>
 #include <optional>
 
 namespace luxel::rasterizer {
@@ -23,6 +27,31 @@ namespace {
 using glm::dvec4;
 
 dvec4 lerp(const dvec4& a, const dvec4& b, double t) { return a + t * (b - a); }
+
+/// The hardware rules' blend of two values (texture.hpp, "Sampling rules"): in fixed point, with
+/// integers (a, b: 8-bit values; w: the weight's 8 bits); otherwise in float32, rounded once.
+struct HardwareBlend {
+  bool fixed_point;
+  dvec4 operator()(const dvec4& a, const dvec4& b, int w) const {
+    dvec4 r;
+    for (int c = 0; c < 4; ++c) {
+      if (fixed_point) {
+        const int64_t ai = static_cast<int64_t>(a[c]), bi = static_cast<int64_t>(b[c]);
+        // a + floor(w (b - a) / 256 + 1/2) = floor((256 a + w (b - a) + 128) / 256)
+        const int64_t n = 256 * ai + w * (bi - ai) + 128;
+        r[c] = static_cast<double>(n >= 0 ? n / 256 : -((-n + 255) / 256));
+      } else {
+        const float fa = static_cast<float>(a[c]), fb = static_cast<float>(b[c]);
+        r[c] = std::fma(static_cast<float>(w) / 256.0f, fb - fa, fa);
+      }
+    }
+    return r;
+  }
+};
+
+/// A float converted to 16.8 fixed point, rounded to nearest, ties to even (the hardware rules'
+/// texel positions and LOD).
+int64_t to_fixed_8(float x) { return static_cast<int64_t>(std::nearbyint(static_cast<double>(x) * 256.0)); }
 
 /// One period of the coordinate, in float32 as the header prescribes.
 float reduce(float c, Address mode) {
@@ -116,19 +145,26 @@ struct Reference {
   dvec4 cube_texel(int level, int face, int i, int j) const {
     const int n = texture.width(level);
     if (i >= 0 && i < n && j >= 0 && j < n) return texel(level, face, i, j, 0);
+    int hit = 0, hi = 0, hj = 0;
+    texel_across_edge(level, face, i, j, hit, hi, hj);
+    return texel(level, hit, hi, hj, 0);
+  }
+
+  /// Where texel (i, j) of `face`, one texel past one of its edges, lies: face `hit`, texel (hi, hj).
+  void texel_across_edge(int level, int face, int i, int j, int& hit, int& hi, int& hj) const {
+    const int n = texture.width(level);
     const auto& basis = texture_detail::kCubeFaceBasis[face];
     const double s = (2.0 * i + 1.0) / n - 1.0, t = (2.0 * j + 1.0) / n - 1.0;
     const glm::dvec3 d =
         glm::dvec3(basis.normal) + glm::dvec3(basis.u_axis) * s + glm::dvec3(basis.v_axis) * t;
     const glm::dvec3 a = glm::abs(d);
     const int axis = a.z >= a.x && a.z >= a.y ? 2 : a.y >= a.x ? 1 : 0;
-    const int hit = 2 * axis + (d[axis] < 0.0 ? 1 : 0);
+    hit = 2 * axis + (d[axis] < 0.0 ? 1 : 0);
     const auto& hit_basis = texture_detail::kCubeFaceBasis[hit];
     const double u = (glm::dot(glm::dvec3(hit_basis.u_axis), d) / a[axis] + 1.0) * 0.5;
     const double v = (glm::dot(glm::dvec3(hit_basis.v_axis), d) / a[axis] + 1.0) * 0.5;
-    const int hi = std::clamp(static_cast<int>(std::floor(u * n)), 0, n - 1);
-    const int hj = std::clamp(static_cast<int>(std::floor(v * n)), 0, n - 1);
-    return texel(level, hit, hi, hj, 0);
+    hi = std::clamp(static_cast<int>(std::floor(u * n)), 0, n - 1);
+    hj = std::clamp(static_cast<int>(std::floor(v * n)), 0, n - 1);
   }
 
   dvec4 filter_cube(int level, Filter filter, const CubeFaceCoord& fc) const {
@@ -169,9 +205,193 @@ struct Reference {
   }
 };
 
+/// The hardware rules: texels in the format's raw domain (8-bit formats as their bytes, RGBA16 as
+/// integers, floats as floats), blended by HardwareBlend, turned into linear RGBA at the end.
+struct HardwareReference {
+  const Texture& texture;
+  const Sampler& sampler;
+  bool bytes = texture.format() == TextureFormat::RGBA8 || texture.format() == TextureFormat::RGBA8_sRGB;
+  bool srgb = texture_detail::read_format(texture, sampler) == TextureFormat::RGBA8_sRGB;
+  HardwareBlend blend{bytes};
+
+  dvec4 raw_texel(int level, int face, int x, int y, int z) const {
+    const auto all = texture.level_bytes(level, face);
+    const size_t index = (static_cast<size_t>(z) * texture.height(level) + y) * texture.width(level) + static_cast<size_t>(x);
+    const uint8_t* t = all.data() + index * bytes_per_texel(texture.format());
+    auto u16 = [t](int c) { return static_cast<uint16_t>(t[2 * c] | (t[2 * c + 1] << 8)); };
+    switch (texture.format()) {
+      case TextureFormat::RGBA8:
+      case TextureFormat::RGBA8_sRGB: return dvec4(t[0], t[1], t[2], t[3]);
+      case TextureFormat::RGBA16: return dvec4(u16(0), u16(1), u16(2), u16(3));
+      case TextureFormat::RGBA16F:
+        return dvec4(texture_detail::half_to_float(u16(0)), texture_detail::half_to_float(u16(1)),
+                     texture_detail::half_to_float(u16(2)), texture_detail::half_to_float(u16(3)));
+      case TextureFormat::R32F: {
+        float r;
+        std::memcpy(&r, t, sizeof r);
+        return dvec4(r, 1.0, 1.0, 1.0);
+      }
+    }
+    return {};
+  }
+
+  /// The border color in the raw domain: rounded to 8-bit steps (sRGB-encoded for an sRGB read).
+  dvec4 raw_border() const {
+    const glm::vec4 b = sampler.border;
+    if (!bytes) {
+      if (texture.format() == TextureFormat::RGBA16) return dvec4(b * 65535.0f);
+      return dvec4(b);
+    }
+    auto step = [](double c) { return static_cast<double>(std::round(static_cast<float>(c) * 255.0f)); };
+    auto unit = [](float c) { return std::clamp(c, 0.0f, 1.0f); };
+    if (srgb) {
+      return dvec4(step(static_cast<float>(linear_to_srgb(unit(b.x)))), step(static_cast<float>(linear_to_srgb(unit(b.y)))),
+                   step(static_cast<float>(linear_to_srgb(unit(b.z)))), step(unit(b.w)));
+    }
+    return dvec4(step(unit(b.x)), step(unit(b.y)), step(unit(b.z)), step(unit(b.w)));
+  }
+
+  dvec4 addressed(int level, int i, int j, int k) const {
+    const auto x = address(i, texture.width(level), sampler.u);
+    const auto y = address(j, texture.height(level), sampler.v);
+    const auto z = texture.kind() == TextureKind::Volume ? address(k, texture.depth(level), sampler.w) : std::optional<int>(0);
+    if (!x || !y || !z) return raw_border();
+    return raw_texel(level, 0, *x, *y, *z);
+  }
+
+  /// The first texel and the 8-bit weight of the second along an axis of `size` texels.
+  static void footprint(float c, float size, int& first, int& weight) {
+    const int64_t fixed = to_fixed_8(c * size - 0.5f);
+    first = static_cast<int>(fixed >> 8);
+    weight = static_cast<int>(fixed & 255);
+  }
+
+  dvec4 filter_2d_or_volume(int level, Filter filter, glm::vec3 c) const {
+    const bool volume = texture.kind() == TextureKind::Volume;
+    const float size[3] = {static_cast<float>(texture.width(level)), static_cast<float>(texture.height(level)),
+                           static_cast<float>(texture.depth(level))};
+    if (filter == Filter::Point) {
+      const int i = static_cast<int>(std::floor(c.x * size[0]));
+      const int j = static_cast<int>(std::floor(c.y * size[1]));
+      const int k = volume ? static_cast<int>(std::floor(c.z * size[2])) : 0;
+      return addressed(level, i, j, k);
+    }
+    int first[3] = {0, 0, 0}, w[3] = {0, 0, 0};
+    for (int a = 0; a < (volume ? 3 : 2); ++a) footprint(c[a], size[a], first[a], w[a]);
+    const int i = first[0], j = first[1];
+    auto slice = [&](int k) {
+      return blend(blend(addressed(level, i, j, k), addressed(level, i + 1, j, k), w[0]),
+                   blend(addressed(level, i, j + 1, k), addressed(level, i + 1, j + 1, k), w[0]), w[1]);
+    };
+    if (!volume) return slice(0);
+    return blend(slice(first[2]), slice(first[2] + 1), w[2]);
+  }
+
+  /// Texel (i, j) of a cube face at `level`, possibly one texel past an edge (Reference::cube_texel
+  /// finds which texel of which face), in the raw domain.
+  dvec4 cube_texel(int level, int face, int i, int j) const {
+    const int n = texture.width(level);
+    if (i >= 0 && i < n && j >= 0 && j < n) return raw_texel(level, face, i, j, 0);
+    int hit = 0, hi = 0, hj = 0;
+    Reference{texture, sampler}.texel_across_edge(level, face, i, j, hit, hi, hj);
+    return raw_texel(level, hit, hi, hj, 0);
+  }
+
+  dvec4 filter_cube(int level, Filter filter, const CubeFaceCoord& fc) const {
+    const int face = static_cast<int>(fc.face);
+    const int n = texture.width(level);
+    const float size = static_cast<float>(n);
+    if (filter == Filter::Point) {
+      const int i = std::min(static_cast<int>(std::floor(fc.u * size)), n - 1);
+      const int j = std::min(static_cast<int>(std::floor(fc.v * size)), n - 1);
+      return raw_texel(level, face, i, j, 0);
+    }
+    int i, j, wx, wy;
+    footprint(fc.u, size, i, wx);
+    footprint(fc.v, size, j, wy);
+    dvec4 t[2][2];
+    bool corner[2][2];
+    for (int b = 0; b < 2; ++b) {
+      for (int a = 0; a < 2; ++a) {
+        const bool off_i = i + a < 0 || i + a >= n, off_j = j + b < 0 || j + b >= n;
+        corner[b][a] = off_i && off_j;
+        if (!corner[b][a]) t[b][a] = cube_texel(level, face, i + a, j + b);
+      }
+    }
+    for (int b = 0; b < 2; ++b) {
+      for (int a = 0; a < 2; ++a) {
+        if (corner[b][a]) t[b][a] = corner_mean(t[b][1 - a], t[1 - b][a], t[1 - b][1 - a]);
+      }
+    }
+    return blend(blend(t[0][0], t[0][1], wx), blend(t[1][0], t[1][1], wx), wy);
+  }
+
+  /// The mean of three texels: in fixed point the nearest integer (halves up), else float32.
+  dvec4 corner_mean(const dvec4& a, const dvec4& b, const dvec4& d) const {
+    dvec4 m;
+    for (int c = 0; c < 4; ++c) {
+      if (bytes) {
+        const int64_t sum = static_cast<int64_t>(a[c]) + static_cast<int64_t>(b[c]) + static_cast<int64_t>(d[c]);
+        m[c] = static_cast<double>((2 * sum + 3) / 6);
+      } else {
+        m[c] = (static_cast<float>(a[c]) + static_cast<float>(b[c]) + static_cast<float>(d[c])) / 3.0f;
+      }
+    }
+    return m;
+  }
+
+  dvec4 at_level(int level, Filter filter, glm::vec3 coord) const {
+    if (texture.kind() == TextureKind::Cube) return filter_cube(level, filter, cube_face(coord));
+    const glm::vec3 c(reduce(coord.x, sampler.u), reduce(coord.y, sampler.v), reduce(coord.z, sampler.w));
+    return filter_2d_or_volume(level, filter, c);
+  }
+
+  /// Raw to linear RGBA, as each format's last step.
+  glm::vec4 finish(const dvec4& raw) const {
+    const glm::vec4 r(raw);
+    if (srgb) {
+      auto decode = [](float byte) { return kSrgbToLinear[static_cast<size_t>(byte)]; };
+      return {decode(r.x), decode(r.y), decode(r.z), r.w / 255.0f};
+    }
+    if (bytes) return r / 255.0f;
+    if (texture.format() == TextureFormat::RGBA16) return r / 65535.0f;
+    return r;
+  }
+};
+
+/// sample_reference under the hardware rules.
+glm::vec4 hardware_reference(const Texture& texture, const Sampler& sampler, glm::vec3 coord, float lod) {
+  const HardwareReference ref{texture, sampler};
+  lod = lod + sampler.lod_bias;
+  if (std::isnan(lod)) lod = 0.0f;
+  // 8 fractional bits; a LOD so large that it has none to lose (or infinite) stays as it is.
+  if (std::abs(lod) < 65536.0f) lod = static_cast<float>(to_fixed_8(lod)) / 256.0f;
+  lod = std::min(std::max(lod, sampler.min_lod), sampler.max_lod);
+  const Filter filter = lod <= 0.0f ? sampler.mag : sampler.min;
+  const float last = static_cast<float>(texture.mip_levels() - 1);
+  switch (sampler.mip) {
+    case MipFilter::None: return ref.finish(ref.at_level(0, filter, coord));
+    case MipFilter::Point: {
+      const int level = static_cast<int>(std::floor(std::min(std::max(lod, 0.0f), last) + 0.5f));
+      return ref.finish(ref.at_level(level, filter, coord));
+    }
+    case MipFilter::Linear: {
+      const float l = std::min(std::max(lod, 0.0f), last);
+      const float fl = std::floor(l);
+      const int level = static_cast<int>(fl);
+      const int t = static_cast<int>((l - fl) * 256.0f);  // the LOD's 8 fractional bits
+      const dvec4 finer = ref.at_level(level, filter, coord);
+      if (t == 0) return ref.finish(finer);
+      return ref.finish(ref.blend(finer, ref.at_level(level + 1, filter, coord), t));
+    }
+  }
+  return {};
+}
+
 }  // namespace
 
 glm::vec4 sample_reference(const Texture& texture, const Sampler& sampler, glm::vec3 coord, float lod) {
+  if (sampler.rules == SamplingRules::hardware) return hardware_reference(texture, sampler, coord, lod);
   const Reference ref{texture, sampler};
   lod = lod + sampler.lod_bias;
   if (std::isnan(lod)) lod = 0.0f;

@@ -42,12 +42,13 @@ using test::Process;
 using test::run_luxel;
 
 
-const char* const kSections[] = {"msaa", "shader_models", "world_lighting", "ambient_sampling", "tone_mapping", "color_correction"};
+const char* const kSections[] = {"msaa",           "shader_models", "texture_sampling", "world_lighting",
+                                 "ambient_sampling", "tone_mapping", "color_correction"};
 
 /// The report of the frame sections into `out` (ctest runs each test in its own process: the one
 /// run the fixture makes serves a test, and only the determinism test makes a second).
 Process run_report(const fs::path& out) {
-  return run_luxel("report speed-error --sections msaa,shader_models,world_lighting,ambient_sampling,tone_mapping,color_correction "
+  return run_luxel("report speed-error --sections msaa,shader_models,texture_sampling,world_lighting,ambient_sampling,tone_mapping,color_correction "
                    "--scene builtin:courtyard --bake quick --width 64 --height 36 --repeats 1 --out " +
                    out.string() + " 2>/dev/null");
 }
@@ -126,6 +127,13 @@ TEST_F(ReportFrames, ShaderModelsAgainstPs30) {
   EXPECT_EQ(rows[1]["variant"], "ps_2_b");
   expect_reference_last(rows, "ps_3_0");
   for (const nlohmann::json& row : rows) EXPECT_GT(row["cost"]["slots_per_pixel"].get<double>(), 0.0);
+}
+
+TEST_F(ReportFrames, HardwareSamplingAgainstIdeal) {
+  const nlohmann::json rows = section("a", "texture_sampling")["rows"];
+  ASSERT_EQ(rows.size(), 2u);
+  EXPECT_EQ(rows[0]["variant"], "hardware");
+  expect_reference_last(rows, "ideal");
 }
 
 TEST_F(ReportFrames, NearestAmbientAgainstTrilinear) {

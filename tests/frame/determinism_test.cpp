@@ -97,27 +97,32 @@ uint64_t fnv1a(const std::vector<uint8_t>& bytes) {
 // Golden bytes of the courtyard per model (160x90, 4x MSAA, the test bake): any change to what a
 // frame draws shows here first. They hold for 8 and 16 lanes alike (the ASan and release presets
 // on an AVX-512 machine). A deliberate change of the
-// picture updates them: the failure prints the new value. Each model has two: the frame as
-// drawn, and the same without its passes on the finished image (bloom, color correction).
+// picture updates them: the failure prints the new value. Each model has three: the frame as
+// drawn, the same without its passes on the finished image (bloom, color correction), and that
+// with the 3D passes' textures read by the ideal sampling rules (rasterizer/texture.hpp).
 TEST(FrameDeterminism, CourtyardGoldenHashes) {
-  const struct { shading::ShaderModel model; uint64_t hash, without_post; } golden[] = {
-      {shading::ShaderModel::ps_2_0, 0xedde575392d7528dull, 0xbb1f0e5be1f1d6b9ull},
-      {shading::ShaderModel::ps_2_b, 0xedc49ee8fc4a1849ull, 0xd9366270ba0fc728ull},
-      {shading::ShaderModel::ps_3_0, 0xedc49ee8fc4a1849ull, 0xd9366270ba0fc728ull},
+  const struct { shading::ShaderModel model; uint64_t hash, without_post, ideal_without_post; } golden[] = {
+      {shading::ShaderModel::ps_2_0, 0xe2c8934ba49d808cull, 0x40463020b44defb5ull, 0xbb1f0e5be1f1d6b9ull},
+      {shading::ShaderModel::ps_2_b, 0x228f035147358a96ull, 0xc9f4dc9017b4bc3bull, 0xd9366270ba0fc728ull},
+      {shading::ShaderModel::ps_3_0, 0x228f035147358a96ull, 0xc9f4dc9017b4bc3bull, 0xd9366270ba0fc728ull},
   };
   // ps_2_b and ps_3_0 run the same combos on the courtyard (no combo there needs more than
   // ps_2_b offers), hence the same bytes.
+  enum class Variant { drawn, without_post, ideal_without_post };
   for (const auto& g : golden) {
-    for (bool post : {true, false}) {
+    for (Variant v : {Variant::drawn, Variant::without_post, Variant::ideal_without_post}) {
       FrameSettings settings = as_model({160, 90, 4}, g.model);
-      settings.color_correction = post;
-      if (post) settings.bloom = postfx::BloomOptions{};
+      settings.color_correction = v == Variant::drawn;
+      if (v == Variant::drawn) settings.bloom = postfx::BloomOptions{};
+      if (v == Variant::ideal_without_post) settings.sampling = rasterizer::SamplingRules::ideal;
       const RenderedFrame f = render("courtyard", settings, 2, 1);
       const uint64_t h = fnv1a(f.image.rgba);
       char hex[32];
       std::snprintf(hex, sizeof hex, "0x%016llxull", static_cast<unsigned long long>(h));
-      EXPECT_EQ(h, post ? g.hash : g.without_post)
-          << shading::caps(g.model).name << (post ? "" : " without bloom and color correction") << ": the courtyard's bytes changed; new hash " << hex;
+      const uint64_t want = v == Variant::drawn ? g.hash : v == Variant::without_post ? g.without_post : g.ideal_without_post;
+      const char* what = v == Variant::drawn ? "" : v == Variant::without_post ? " without bloom and color correction"
+                                                                              : " without bloom and color correction, ideal sampling";
+      EXPECT_EQ(h, want) << shading::caps(g.model).name << what << ": the courtyard's bytes changed; new hash " << hex;
     }
   }
 }

@@ -161,8 +161,10 @@ TEST(ColorCorrection, PassGivesTheBytesOfTheScalarShaderAtEachPixel) {
     const std::span<const WeightedLut> used(weighted, size_t(C.luts));
     const rasterizer::Image pass = color_correct(ctx, frame, used);
     const std::vector<glm::vec4> scalar = ScalarReference(frame, used).run<C>(frame.width, frame.height);
-    // The float lane filters the volume in double (rasterizer::sample_reference), the SIMD lane in
-    // float: the two may round a value within float error of a half step apart, nothing else.
+    // The float lane reads the volumes through rasterizer::sample_reference, the SIMD lane through
+    // the SIMD sampler: the same bits under the hardware rules, whose 8-bit reads put a tenth of
+    // the blends (weights in tenths) exactly on a half step, which float error may round either
+    // way; nothing else may differ.
     int differ = 0, near_half = 0;
     for (size_t p = 0; p < scalar.size(); ++p) {
       for (int c = 0; c < 4; ++c) {
@@ -176,7 +178,7 @@ TEST(ColorCorrection, PassGivesTheBytesOfTheScalarShaderAtEachPixel) {
       }
     }
     EXPECT_EQ(differ, 0) << C.name();
-    EXPECT_LT(near_half, int(scalar.size()) * 4 / 100) << C.name() << ": few values sit on a half step";
+    EXPECT_LT(near_half, int(scalar.size()) * 4 * 15 / 100) << C.name() << ": most values sit away from half steps";
     EXPECT_GT(max_step(pass, frame), 10) << C.name() << ": the LUTs change the frame";
   });
 }
@@ -212,9 +214,10 @@ TEST(ColorCorrection, IntoAnImageReplacesItsPixels) {
   EXPECT_EQ(other_size.rgba, want.rgba);
 }
 
-/// The 8-bit LUT's trilinear lookup in double, at an 8-bit color (the shader's coordinates: c * 31).
+/// The 8-bit LUT's trilinear lookup as the hardware rules filter it, at an 8-bit color (the
+/// shader's coordinates: c * 31).
 glm::dvec3 lookup_reference(const test::Lattice& lut, const uint8_t* rgb) {
-  return test::trilinear(lut, glm::dvec3(rgb[0], rgb[1], rgb[2]) / 255.0) / 255.0;
+  return test::hardware_trilinear(lut, glm::dvec3(rgb[0], rgb[1], rgb[2]) / 255.0) / 255.0;
 }
 
 TEST(ColorCorrection, WeightsBlendAsTheFormulaSays) {
@@ -239,7 +242,8 @@ TEST(ColorCorrection, WeightsBlendAsTheFormulaSays) {
     EXPECT_EQ(out.rgba[4 * p + 3], in[3]) << "alpha passes";
   }
   EXPECT_EQ(worst, 0) << "away from half steps the bytes are the double formula's";
-  EXPECT_LT(near_half, 10);
+  // The 8-bit LUT reads weighted by quarters put a quarter of the sums on a half step.
+  EXPECT_LT(near_half, int(frame.width * frame.height) * 3 * 30 / 100);
 }
 
 TEST(ColorCorrection, ExactPathAppliesEachLutAtItsOwnResolutionAndBlends) {

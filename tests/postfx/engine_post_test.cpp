@@ -40,7 +40,7 @@ rasterizer::Image bright_frame(int width, int height, uint32_t seed) {
 }
 
 glm::dvec3 lookup(const test::Lattice& lut, glm::dvec3 color) {
-  return test::trilinear(lut, color) / 255.0;  // locate() clamps to the lattice, as the volume's sampler
+  return test::hardware_trilinear(lut, color) / 255.0;  // clamped to the lattice, as the volume's sampler
 }
 
 TEST(EnginePost, MatchesADoubleReferenceOfTheUnroundedSumWithinOneStep) {

@@ -21,12 +21,22 @@ struct Plane {
     y = std::clamp(y, 0, height - 1);
     return texels[size_t(y) * width + x];
   }
-  /// Bilinear, clamped, D3D's texel centres.
+  /// Bilinear, clamped, D3D's texel centres, as the hardware rules filter an 8-bit texture
+  /// (rasterizer/texture.hpp, "Sampling rules"): the position in 16.8 fixed point, rounded to
+  /// nearest; each blend of two 8-bit values, along x and then y, rounded to a step. The plane's
+  /// texels are 8-bit values (k / 255).
   glm::dvec3 sample(double u, double v) const {
-    const double x = u * width - 0.5, y = v * height - 0.5;
-    const int x0 = static_cast<int>(std::floor(x)), y0 = static_cast<int>(std::floor(y));
-    const double fx = x - x0, fy = y - y0;
-    return (at(x0, y0) * (1 - fx) + at(x0 + 1, y0) * fx) * (1 - fy) + (at(x0, y0 + 1) * (1 - fx) + at(x0 + 1, y0 + 1) * fx) * fy;
+    const long fx = std::lround(std::nearbyint((u * width - 0.5) * 256.0));
+    const long fy = std::lround(std::nearbyint((v * height - 0.5) * 256.0));
+    const int x0 = static_cast<int>(fx >> 8), y0 = static_cast<int>(fy >> 8);
+    const long wx = fx & 255, wy = fy & 255;
+    auto blend = [](double a, double b, long w) { return a + std::floor(double(w) * (b - a) / 256.0 + 0.5); };
+    glm::dvec3 out;
+    for (int c = 0; c < 3; ++c) {
+      auto byte = [&](int x, int y) { return std::round(at(x, y)[c] * 255.0); };
+      out[c] = blend(blend(byte(x0, y0), byte(x0 + 1, y0), wx), blend(byte(x0, y0 + 1), byte(x0 + 1, y0 + 1), wx), wy) / 255.0;
+    }
+    return out;
   }
   /// Stored as an 8-bit target stores it.
   Plane rounded() const {

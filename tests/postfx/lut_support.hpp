@@ -96,6 +96,29 @@ inline glm::dvec3 trilinear(const Lattice& l, glm::dvec3 c) {
   return sum;
 }
 
+/// An 8-bit lattice (values 0 to 255) read as the hardware rules read an 8-bit volume under Clamp
+/// (rasterizer/texture.hpp, "Sampling rules"): each position in 16.8 fixed point, rounded to
+/// nearest; each blend of two values (along r, then g, then b) rounded to an integer.
+inline glm::dvec3 hardware_trilinear(const Lattice& l, glm::dvec3 c) {
+  int i[3], w[3];
+  for (int a = 0; a < 3; ++a) {
+    const long fixed = std::lround(std::nearbyint(std::clamp(c[a], 0.0, 1.0) * (l.n - 1) * 256.0));
+    i[a] = static_cast<int>(fixed >> 8);
+    w[a] = static_cast<int>(fixed & 255);
+  }
+  auto blend = [](double a, double b, int weight) { return a + std::floor(weight * (b - a) / 256.0 + 0.5); };
+  auto texel = [&](int dr, int dg, int db) {
+    return l.at(std::min(i[0] + dr, l.n - 1), std::min(i[1] + dg, l.n - 1), std::min(i[2] + db, l.n - 1));
+  };
+  glm::dvec3 out;
+  for (int ch = 0; ch < 3; ++ch) {
+    auto row = [&](int dg, int db) { return blend(texel(0, dg, db)[ch], texel(1, dg, db)[ch], w[0]); };
+    auto slice = [&](int db) { return blend(row(0, db), row(1, db), w[1]); };
+    out[ch] = blend(slice(0), slice(1), w[2]);
+  }
+  return out;
+}
+
 /// Tetrahedral: the cell's tetrahedron that holds the point is the one walking from corner 000 to
 /// 111 along the axes in order of decreasing fraction; the weights are the fractions' differences.
 inline glm::dvec3 tetrahedral(const Lattice& l, glm::dvec3 c) {

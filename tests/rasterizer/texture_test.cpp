@@ -9,6 +9,8 @@
 
 #include "luxel/rasterizer/texture.hpp"
 
+#include "luxel/rasterizer/srgb.hpp"
+
 #include <glm/geometric.hpp>
 #include <gtest/gtest.h>
 
@@ -315,12 +317,16 @@ TEST(TextureFormat, SrgbReadSamplerStateDecodesAnRgba8TextureAsRgba8Srgb) {
     EXPECT_FLOAT_EQ(got.z, 0.21586050011389926f);
     EXPECT_FLOAT_EQ(got.w, 128 / 255.0f);  // alpha is linear
   }
-  // Bilinear halfway between the two texels: the mean of the decoded values, not the decode of
-  // the mean code (0.5 (0.0030353 + 1) = 0.5015177, where decoding code 132.5 would give 0.2346).
+  // Bilinear halfway between the two texels. The ideal rules decode before filtering: the mean of
+  // the decoded values (0.5 (0.0030353 + 1) = 0.5015177). The hardware rules filter the codes in
+  // fixed point (10 + floor(128 (255 - 10) / 256 + 1/2) = 133) and decode that: 0.2346.
   Sampler linear = s;
   linear.min = linear.mag = Filter::Linear;
   linear.u = linear.v = Address::Clamp;
+  linear.rules = SamplingRules::ideal;
   for (const glm::vec4 got : both_paths(plain, linear, {0.5f, 0.5f, 0})) EXPECT_NEAR(got.y, 0.5015176349f, 1e-6f);
+  linear.rules = SamplingRules::hardware;
+  for (const glm::vec4 got : both_paths(plain, linear, {0.5f, 0.5f, 0})) EXPECT_EQ(got.y, kSrgbToLinear[133]);
   // Read without it, the bytes are gamma values; an RGBA8_sRGB texture decodes either way.
   Sampler gamma = s;
   gamma.srgb_read = false;
@@ -453,7 +459,8 @@ TEST(TextureSampling, BilinearBetweenTexelsAverages) {
     SCOPED_TRACE(name(format));
     Texture t = Texture::create_2d(4, 4, format, 1);
     fill_random(t, rng);
-    const Sampler s = linear_sampler(Address::Clamp);
+    Sampler s = linear_sampler(Address::Clamp);
+    s.rules = SamplingRules::ideal;  // exact weights; TextureHardwareRules covers the hardware's
     for (int y = 0; y < 3; ++y) {
       for (int x = 0; x < 3; ++x) {
         // The corner shared by texels (x, y) .. (x+1, y+1): all four weigh 1/4.
@@ -1097,14 +1104,19 @@ std::string describe(const Sampler& s) {
 // >= 1e-3.
 constexpr float kSimdTolerance = 1e-6f;
 
+// Under the hardware rules the two paths do the same fixed-point and float32 steps: they must
+// agree to the bit. Under the ideal rules the reference filters in double.
 TEST(TextureSimd, MatchesReference) {
   std::mt19937 rng(6);
   constexpr int kStampsPerConfig = 48;
-  long compared = 0;
+  long compared = 0, configs = 0;
   float worst = 0;
-  for_each_texture_and_sampler(rng, [&](const TestTexture& tt, const Sampler& s) {
+  for_each_texture_and_sampler(rng, [&](const TestTexture& tt, const Sampler& any_rules) {
     if (HasFatalFailure()) return;
     const Texture& t = tt.texture;
+    Sampler s = any_rules;
+    s.rules = configs++ % 2 ? SamplingRules::ideal : SamplingRules::hardware;
+    const float tolerance = s.rules == SamplingRules::hardware ? 0.0f : kSimdTolerance;
     int failures = 0;
     for (int stamp = 0; stamp < kStampsPerConfig; ++stamp) {
       std::array<glm::vec3, kLanes> coord;
@@ -1124,7 +1136,8 @@ TEST(TextureSimd, MatchesReference) {
         for (int ch = 0; ch < 4; ++ch) {
           const float error = std::fabs(got[l][ch] - want[ch]);
           worst = std::max(worst, error);
-          if (!(error <= kSimdTolerance) && failures++ < 3) {
+          const bool same_nan = std::isnan(got[l][ch]) && std::isnan(want[ch]);
+          if (!(error <= tolerance) && !(same_nan && s.rules == SamplingRules::hardware) && failures++ < 3) {
             ADD_FAILURE() << tt.label << ", " << describe(s) << ": coord (" << coord[l].x << ", "
                           << coord[l].y << ", " << coord[l].z << ") lod " << lod[l] << " channel " << ch
                           << ": SIMD " << got[l][ch] << ", reference " << want[ch];
@@ -1413,16 +1426,18 @@ TEST(TextureSimd, OpaqueTexturesFilterTheColorsAlone) {
 }
 
 TEST(TextureSimd, ImplicitLodMatchesExplicitAndReference) {
-  // sample() must be sample_level() at compute_lod() of the coarse quad derivatives, and
-  // compute_lod() must agree with lod_reference() on those derivatives.
+  // sample() must be sample_level() at compute_lod() of the coarse quad derivatives (under the
+  // hardware rules the quad's top-left pixel's, for the whole quad), and compute_lod() must agree
+  // with lod_reference() on those derivatives.
   std::mt19937 rng(7);
   std::uniform_real_distribution<float> base(-1.0f, 1.0f), slope(-0.2f, 0.2f), curve(-0.05f, 0.05f);
   float worst_lod = 0;
   for (const TextureFormat format : {TextureFormat::RGBA8, TextureFormat::RGBA16F}) {
     for (const TestTexture& tt : random_textures(format, rng)) {
       const Texture& t = tt.texture;
-      const Sampler s;
       for (int stamp = 0; stamp < 40; ++stamp) {
+        Sampler s;
+        s.rules = stamp % 2 ? SamplingRules::ideal : SamplingRules::hardware;
         // Smooth (quadratic) coordinates over the stamp's pixels.
         glm::vec3 c0, gx, gy, q;
         for (int a = 0; a < 3; ++a) {
@@ -1448,7 +1463,10 @@ TEST(TextureSimd, ImplicitLodMatchesExplicitAndReference) {
         compute_lod(t, c, dx, dy).store_unaligned(lod.data());
         const float bias = stamp % 4 == 0 ? 0.0f : slope(rng) * 5;
         const auto implicit = unpack(sample(t, s, c, simd::Float(bias)));
-        const auto explicit_lod = unpack(sample_level(t, s, c, lanes_of(lod) + simd::Float(bias)));
+        LaneValues used = lod;
+        if (s.rules == SamplingRules::hardware)
+          for (int l = 0; l < kLanes; ++l) used[l] = lod[l - l % 4];
+        const auto explicit_lod = unpack(sample_level(t, s, c, lanes_of(used) + simd::Float(bias)));
         for (int l = 0; l < kLanes; ++l) {
           EXPECT_EQ(implicit[l], explicit_lod[l]) << tt.label << " lane " << l;
           // Coarse derivatives: top row and left column of the lane's quad.

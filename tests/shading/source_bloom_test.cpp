@@ -110,6 +110,9 @@ BlurParams delta_blur(const rasterizer::Texture& t, BlurAxis axis, BlurStep step
   p.source.texture = &t;
   p.source.state.mip = rasterizer::MipFilter::None;
   p.source.state.u = p.source.state.v = rasterizer::Address::Clamp;
+  // The kernel's own weights: the ideal rules' exact bilinear weights (the hardware rules round
+  // each tap's to 8 bits: rasterizer/texture.hpp, tested there).
+  p.source.state.rules = rasterizer::SamplingRules::ideal;
   return p;
 }
 

@@ -106,11 +106,14 @@ TEST(SourceColorCorrection, LookupIsTrilinearBetweenLatticePoints) {
   for (const glm::vec3 color : {glm::vec3(0.3f, 0.61f, 0.95f), glm::vec3(0.02f, 0.5f, 0.77f), glm::vec3(1.0f, 0.0f, 0.4f)}) {
     const float3<float> uvw = color_correction_uvw(float3<float>(color.x, color.y, color.z));
     const float4<float> read = tex3D(p.luts[0], uvw);
-    // Separable texels: the trilinear mix of (f, g, h) is the linear mix of each along its axis.
+    // Separable texels: the trilinear mix of (f, g, h) is the mix of each along its axis (the
+    // blends along the other two axes are of equal values). The hardware rules: the position in
+    // 16.8 fixed point, rounded; the blend of two 8-bit values rounded to a step.
     auto linear = [](auto fn, float c) {
-      const double x = std::clamp(double(c) * 31.0, 0.0, 31.0);
-      const int i0 = std::min(int(x), 30);
-      return (fn(i0) + (x - i0) * (fn(i0 + 1) - fn(i0))) / 255.0;
+      const long fixed = std::lround(std::nearbyint(std::clamp(double(c) * 31.0, 0.0, 31.0) * 256.0));
+      const int i0 = int(fixed >> 8), w = int(fixed & 255);
+      const double a = fn(i0), b = fn(std::min(i0 + 1, 31));
+      return (a + std::floor(w * (b - a) / 256.0 + 0.5)) / 255.0;
     };
     EXPECT_NEAR(read.x, linear(f, color.x), 2e-5) << color.x;
     EXPECT_NEAR(read.y, linear(g, color.y), 2e-5) << color.y;

@@ -46,7 +46,11 @@ const DVec kDirection = DVec(0.3, -0.2, 1.0) * 2.5;  // not unit; between texel 
 TEST(SourceNormalizationCube, LookupIsTheBilinearBlendOfQuantizedTexelDirections) {
   const rasterizer::Texture cube = normalization_cube_map();
   EXPECT_EQ(cube.width(), kNormalizationCubeSize);
-  const SamplerCube s{5, &cube, normalization_cube_sampler()};
+  // The cube's contents and where a direction reads it, with the ideal rules' exact bilinear
+  // weights (the hardware rules' are tested with the rasterizer's textures).
+  rasterizer::Sampler ideal = normalization_cube_sampler();
+  ideal.rules = rasterizer::SamplingRules::ideal;
+  const SamplerCube s{5, &cube, ideal};
   const float4<float> got = texCUBE(s, float3<float>(float(kDirection.x), float(kDirection.y), float(kDirection.z)));
   const DVec expect = lookup_pos_z(kDirection, kNormalizationCubeSize);
   const DVec exact = glm::normalize(kDirection);
@@ -64,6 +68,7 @@ TEST(SourceNormalizationCube, Ps20LightsWithTheCubeAndPs2bWithNrm) {
   const rasterizer::Texture cube = normalization_cube_map();
   VertexLitParams p;
   p.normalization_cube.texture = &cube;
+  p.normalization_cube.state.rules = rasterizer::SamplingRules::ideal;  // as lookup_pos_z weighs
   p.ambient.color = {glm::vec3(0.9f, 0.1f, 0.1f), glm::vec3(0.1f, 0.8f, 0.1f), glm::vec3(0.1f, 0.1f, 0.7f),
                      glm::vec3(0.6f, 0.6f, 0.1f), glm::vec3(0.1f, 0.5f, 0.5f), glm::vec3(0.4f, 0.1f, 0.4f)};
   constexpr VertexLitCombo kPs20{0, false, false, false, true, true, false, Fog::none, true};

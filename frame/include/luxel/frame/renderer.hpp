@@ -89,6 +89,10 @@ struct FrameSettings {
   /// (D3DSAMP_MIPMAPLODBIAS): log2(k) draws a frame k times larger with the textures at the mips
   /// of the frame k times smaller (`luxel report`'s MSAA references).
   float texture_lod_bias = 0.0f;
+  /// How the 3D passes' texture reads filter (rasterizer/texture.hpp, "Sampling rules"): as the
+  /// DX9-era cards did (the default), or ideally, in float at a LOD per pixel (the reference that
+  /// luxel report speed-error measures the hardware rules against).
+  rasterizer::SamplingRules sampling = rasterizer::SamplingRules::hardware;
   /// A fixed tone-map scale (LINEAR_LIGHT_SCALE); unset: the scene's Exposure decides (docs/architecture.md).
   std::optional<float> exposure = std::nullopt;
   /// How auto exposure counts its histogram: target algorithm, counting method, query latency,

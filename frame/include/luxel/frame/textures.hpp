@@ -17,9 +17,11 @@ struct GpuTexture {
   bool translucent = false;  ///< a texel with alpha below 1 (scenes::has_translucent_texels)
 };
 
-/// `s` with `lod_bias` added to its mip LOD bias (FrameSettings::texture_lod_bias).
-inline rasterizer::Sampler with_lod_bias(rasterizer::Sampler s, float lod_bias) {
+/// `s` as a frame's draws read with it: `lod_bias` added to its mip LOD bias
+/// (FrameSettings::texture_lod_bias), filtering by `rules` (FrameSettings::sampling).
+inline rasterizer::Sampler as_drawn(rasterizer::Sampler s, float lod_bias, rasterizer::SamplingRules rules) {
   s.lod_bias += lod_bias;
+  s.rules = rules;
   return s;
 }
 

@@ -12,12 +12,16 @@
 //     shaders use);
 //   - sample_reference / lod_reference: one sample, plain scalar code written to be obviously
 //     right, which the tests hold the SIMD path to.
+// and follows one of two rule sets (Sampler::rules, "Sampling rules" below): the hardware rules,
+// what DX9-era texture units did (the default), or the ideal rules, float filtering at full
+// precision (the reference the hardware rules' error is measured against).
 //
-// The two agree by construction where the conventions below fix float32 arithmetic (coordinate
-// reduction, texel positions, filter weights, mip selection, cube face projection): both pick the
-// same texels with the same weights. They differ only in how they filter (float32 FMA lerps vs
-// double), by a few float32 ulps; point samples are exact in both. compute_lod is within ~1e-6 of
-// lod_reference (a polynomial log2).
+// The two flavours agree by construction where the conventions below fix float32 arithmetic
+// (coordinate reduction, texel positions, filter weights, mip selection, cube face projection):
+// both pick the same texels with the same weights. Under the hardware rules they agree to the bit
+// (the reference does the same fixed-point and float32 steps). Under the ideal rules they differ
+// only in how they filter (float32 FMA lerps vs double), by a few float32 ulps; point samples are
+// exact in both. compute_lod is within ~1e-6 of lod_reference (a polynomial log2).
 //
 // A Texture is a value (copyable, movable). Sampling only reads it, from any number of threads;
 // uploads and generate_mips() must not overlap sampling.
@@ -29,8 +33,8 @@
 //   maps to (u W, v H), so texel centers sit at ((i + 0.5) / W, (j + 0.5) / H). Row 0 is the top
 //   row (v = 0); in volumes slice 0 is at w = 0.
 // - Point filtering reads texel floor(u W). Linear filtering reads the 2x2 (2x2x2 in volumes)
-//   texels around u W - 0.5 and weighs them by the fractional part, kept at full float precision
-//   (D3D10 asks for at least 6 bits of sub-texel precision, D3D11 for 8; we keep all 23).
+//   texels around u W - 0.5 and weighs them by the fractional part (as the sampling rules keep
+//   it: 8 bits or all 23).
 // - Address modes act per axis on every texel of the footprint (a footprint straddling an edge
 //   wraps, mirrors or clamps texel by texel; under Border, texels outside the level read the
 //   border color). Before scaling to texels, a coordinate is reduced to one period in float32:
@@ -43,9 +47,9 @@
 //
 // Formats (decoding happens before filtering)
 // - UNORM channels (RGBA8, RGBA16) decode to c / (2^n - 1), correctly rounded.
-// - RGBA8_sRGB decodes R, G, B with the exact sRGB curve (IEC 61966-2-1) *before* filtering, as
-//   D3D10 requires (some D3D9 parts decoded after); alpha is linear. An RGBA8 texture read with
-//   Sampler::srgb_read (D3D9's sampler state) decodes the same way.
+// - RGBA8_sRGB decodes R, G, B with the exact sRGB curve (IEC 61966-2-1); alpha is linear. The
+//   ideal rules decode before filtering, as D3D10 requires, the hardware rules after. An RGBA8
+//   texture read with Sampler::srgb_read (D3D9's sampler state) decodes the same way.
 // - RGBA16F decodes exactly (denormals, infinities and NaNs included).
 // - R32F reads as (r, 1, 1, 1): D3D9's value for missing channels (Microsoft's "Recommended
 //   DirectX 9.0 driver support": unused channels of R16F, G16R16F, R32F, G32R32F read 1.0). D3D10
@@ -68,6 +72,26 @@
 //   MipFilter::None reads level 0. Levels clamp to [0, mip_levels - 1].
 // - A sampler with MipFilter::None and the same min and mag filter gives the same result at every
 //   LOD, so sample() does not compute one for it (the post-processing passes' samplers).
+//
+// Sampling rules (docs/fidelity.md#texture-sampling gives the sources)
+// - SamplingRules::hardware, what the DX9-era texture units luxel reproduces did:
+//   - one LOD per 2x2 quad: sample() gives every pixel of a quad its top-left pixel's LOD (from
+//     the quad's coarse derivatives; for a cube map that pixel's face), plus the pixel's own bias;
+//   - the LOD, after bias and before the clamps, truncated to 8 fractional bits: floor(256 lod) /
+//     256, so the trilinear blend weight has 8 bits;
+//   - bilinear weights truncated to 8 bits: w = floor(256 f) / 256 for the footprint's fraction f
+//     (D3D11's 8 bits of sub-texel precision);
+//   - 8-bit UNORM texels filtered in fixed point: every blend of two values a, b (texels, rows,
+//     levels) is a + floor(w (b - a)) for the 8-bit weight w, an integer again (llvmpipe's rule for
+//     8-bit formats); the filtered byte is then divided by 255. A texel past a cube corner is the
+//     floor of the other three's mean. An sRGB read filters the encoded bytes so and decodes the
+//     filtered byte (converted after filtering, as DX9-era parts did; D3D10 asks for before).
+//     A border color is rounded to the format's 8-bit steps (sRGB-encoded for an sRGB read).
+//   - other formats (16-bit UNORM, half and single floats) blend in float32 with those weights.
+// - SamplingRules::ideal: LOD per pixel (from the quad's coarse derivatives: the same within a
+//   2D quad, per pixel for cube maps), unquantized LOD and weights, filtering in float32 (8-bit
+//   texels as floats), sRGB decoded before filtering, the border color as given. What the rest of
+//   this comment describes where it does not name a rule set.
 //
 // Cube maps
 // - Face order +X, -X, +Y, -Y, +Z, -Z (D3DCUBEMAP_FACES). The face is the direction's major axis,
@@ -249,6 +273,11 @@ class Texture {
 };
 
 enum class Filter : uint8_t { Point, Linear };
+/// How texels are filtered: see "Sampling rules" above.
+enum class SamplingRules : uint8_t {
+  hardware,  ///< DX9-era texture units: LOD per quad, 8-bit weights, fixed-point 8-bit filtering
+  ideal,     ///< full float precision, LOD per pixel: the reference the hardware rules are measured against
+};
 enum class MipFilter : uint8_t { None, Point, Linear };
 enum class Address : uint8_t { Wrap, Mirror, Clamp, Border };
 
@@ -269,6 +298,7 @@ struct Sampler {
   /// and color correction). An RGBA8_sRGB texture, whose mips were made in linear, is decoded
   /// either way; other formats ignore it.
   bool srgb_read = false;
+  SamplingRules rules = SamplingRules::hardware;
 };
 
 /// Per-lane texture coordinates as the shader passes them: (u, v) for 2D textures (z unused),
