@@ -2,6 +2,7 @@
 
 #include "water_passes.hpp"
 
+#include "luxel/rasterizer/limits.hpp"
 #include "luxel/rasterizer/srgb.hpp"
 #include "luxel/rasterizer/texture.hpp"
 #include "luxel/shading/source/hdr_type.hpp"
@@ -14,12 +15,15 @@
 #include <glm/ext/vector_int2.hpp>
 #include <glm/geometric.hpp>
 #include <glm/matrix.hpp>
+#include <glm/vector_relational.hpp>
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <span>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 namespace luxel::frame {
 
@@ -154,6 +158,107 @@ rasterizer::Scissor in_view_pixels(const rasterizer::Scissor& frame_pixels, cons
           to_view(frame_pixels.x1, settings.width, true), to_view(frame_pixels.y1, settings.height, true)};
 }
 
+/// The factor from the frame's pixels to a view's texels, per axis: the screen is stretched
+/// onto the square.
+glm::dvec2 texels_per_pixel(const FrameSettings& settings) {
+  const double side = water_texture_side(settings);
+  return {side / settings.width, side / settings.height};
+}
+
+/// The convex hull of `points`, counter-clockwise on screen (Andrew's monotone chain), without
+/// collinear points.
+std::vector<glm::dvec2> convex_hull(std::vector<glm::dvec2> points) {
+  std::sort(points.begin(), points.end(), [](const glm::dvec2& a, const glm::dvec2& b) {
+    return a.x < b.x || (a.x == b.x && a.y < b.y);
+  });
+  if (points.size() < 3) return points;
+  auto turns_left = [](const glm::dvec2& o, const glm::dvec2& a, const glm::dvec2& b) {
+    return (a.x - o.x) * (b.y - o.y) - (a.y - o.y) * (b.x - o.x) > 0;
+  };
+  std::vector<glm::dvec2> hull(2 * points.size());
+  size_t k = 0;
+  for (size_t i = 0; i < points.size(); ++i) {  // the lower chain
+    while (k >= 2 && !turns_left(hull[k - 2], hull[k - 1], points[i])) --k;
+    hull[k++] = points[i];
+  }
+  for (size_t i = points.size() - 1, lower = k + 1; i-- > 0;) {  // the upper chain
+    while (k >= lower && !turns_left(hull[k - 2], hull[k - 1], points[i])) --k;
+    hull[k++] = points[i];
+  }
+  hull.resize(k - 1);  // the last point is the first
+  return hull;
+}
+
+/// The texels of a view that the water of `mesh` can read, as a convex polygon in view texels:
+/// the convex hull of its vertices on screen, widened by `margin` pixels of the frame as the
+/// rectangle is (screen_rectangle), then by what rounding the rectangle to whole pixels and
+/// in_view_pixels can add at most (a pixel, then two texels). Nothing when a vertex lies behind
+/// the eye, or so far off screen that the rasterizer would clip the polygon instead of only
+/// snapping it (the guard band).
+std::optional<std::vector<glm::dvec2>> footprint_polygon(const scenes::Mesh& mesh, const glm::mat4& vp,
+                                                         const FrameSettings& settings, const glm::ivec2& margin) {
+  const glm::dvec2 scale = texels_per_pixel(settings);
+  const glm::dvec2 reach = (glm::dvec2(margin) + 1.0) * scale + 2.0;
+  const double limit = 0.5 * rasterizer::kGuardBand;
+  std::vector<glm::dvec2> corners;
+  corners.reserve(4 * mesh.positions.size());
+  for (const glm::vec3& p : mesh.positions) {
+    const glm::vec4 c = vp * glm::vec4(p, 1.0f);
+    if (!(c.w > 0.0f)) return std::nullopt;
+    const glm::dvec2 texel = glm::dvec2((double(c.x) / c.w + 1) * 0.5 * settings.width,
+                                        (1 - double(c.y) / c.w) * 0.5 * settings.height) * scale;
+    if (!(glm::all(glm::lessThan(glm::abs(texel), glm::dvec2(limit - reach))))) return std::nullopt;
+    // The hull widened by a rectangle (their Minkowski sum) is the hull of its vertices moved
+    // to the rectangle's corners.
+    for (const glm::dvec2 corner : {glm::dvec2(-1, -1), glm::dvec2(1, -1), glm::dvec2(1, 1), glm::dvec2(-1, 1)})
+      corners.push_back(texel + corner * reach);
+  }
+  return convex_hull(std::move(corners));
+}
+
+/// The corners of a rectangle of texels, as a polygon.
+std::vector<glm::dvec2> corners_of(const rasterizer::Scissor& r) {
+  return {{r.x0, r.y0}, {r.x1, r.y0}, {r.x1, r.y1}, {r.x0, r.y1}};
+}
+
+/// Appends a convex polygon of view texels to `triangles` as a fan, in the view's clip space.
+void add_fan(std::vector<glm::vec4>& triangles, const std::vector<glm::dvec2>& polygon, int side) {
+  auto clip = [side](const glm::dvec2& texel) {
+    return glm::vec4(float(2 * texel.x / side - 1), float(1 - 2 * texel.y / side), 0.0f, 1.0f);
+  };
+  for (size_t i = 2; i < polygon.size(); ++i)
+    for (const glm::dvec2& corner : {polygon[0], polygon[i - 1], polygon[i]}) triangles.push_back(clip(corner));
+}
+
+/// A footprint's vertices, already in the view's clip space.
+struct ClipPositions {
+  static constexpr int kVaryings = 0;
+  const glm::vec4* positions;
+  void operator()(uint32_t i, rasterizer::VertexOutput<0>& out) const { out.position = positions[i]; }
+};
+
+/// Writes nothing: a footprint's draw marks the stencil alone.
+struct NoColor {
+  static constexpr bool kCanDiscard = false, kWritesDepth = false, kTrivial = true;
+  void operator()(const rasterizer::PixelInput<0>&, rasterizer::PixelOutput&) const {}
+};
+
+/// Writes kDrawnStencil into `depth`'s stencil over `footprint` (triangles in clip space), inside
+/// `scissor`: where a masked view draws (views.hpp, ViewSpec::masked).
+void mark_footprint(rasterizer::Context& ctx, rasterizer::DepthStencilTarget& depth, const rasterizer::Scissor& scissor,
+                    const std::vector<glm::vec4>& footprint) {
+  rasterizer::PipelineState state;
+  state.scissor = scissor;
+  state.rasterizer.cull = rasterizer::CullMode::None;
+  state.depth_stencil.depth_enable = false;
+  state.depth_stencil.stencil_enable = true;
+  state.depth_stencil.stencil_ref = kDrawnStencil;
+  state.depth_stencil.front.pass = rasterizer::StencilOp::Replace;
+  rasterizer::draw(ctx, rasterizer::Framebuffer{nullptr, &depth}, state,
+                   rasterizer::Geometry::non_indexed(static_cast<uint32_t>(footprint.size())),
+                   ClipPositions{footprint.data()}, NoColor{});
+}
+
 /// The smallest rectangle holding both.
 rasterizer::Scissor united(const rasterizer::Scissor& a, const rasterizer::Scissor& b) {
   if (!a.enable) return b;
@@ -193,6 +298,9 @@ struct WaterPasses::Plane {
   float height = 0.0f;
   bool reflect = false;
   rasterizer::Scissor pixels_read;  ///< what its water can read of its views
+  /// Triangles in the views' clip space over every texel its water can read (inside
+  /// pixels_read): the views draw only there (ViewSpec::masked).
+  std::vector<glm::vec4> footprint;
   PassList reflection, refraction;
   std::optional<GpuTexture> reflection_texture, refraction_texture;  // set when the view is drawn
   glm::vec4 reflection_clear{0.0f}, refraction_clear{0.0f};
@@ -225,9 +333,12 @@ WaterPasses::WaterPasses(const scenes::Scene& scene, const FrameSettings& settin
     const double offset = largest_offset(m, scene.textures[static_cast<size_t>(m.water_normal.texture)]);
     const glm::ivec2 margin(static_cast<int>(std::ceil(offset * settings.width)) + 1,
                             static_cast<int>(std::ceil(offset * settings.height)) + 1);
-    (*same)->pixels_read = united((*same)->pixels_read,
-                                  in_view_pixels(screen_rectangle(mesh, camera_view.view_projection, settings.width, settings.height, margin),
-                                                 settings));
+    const rasterizer::Scissor rectangle =
+        in_view_pixels(screen_rectangle(mesh, camera_view.view_projection, settings.width, settings.height, margin), settings);
+    (*same)->pixels_read = united((*same)->pixels_read, rectangle);
+    add_fan((*same)->footprint,
+            footprint_polygon(mesh, camera_view.view_projection, settings, margin).value_or(corners_of(rectangle)),
+            water_texture_side(settings));
   }
 
   const float scale = camera_view.exposure;
@@ -236,7 +347,10 @@ WaterPasses::WaterPasses(const scenes::Scene& scene, const FrameSettings& settin
     const double spread = std::min(double(kSpread), 0.5 * (double(eye.z) - h));
     ViewSpec base = camera_view;
     base.water = false;
-    if (settings.water_view_scissor) base.scissor = plane->pixels_read;
+    if (settings.water_view_scissor) {
+      base.scissor = plane->pixels_read;
+      base.masked = true;
+    }
     if (plane->reflect) {
       glm::dmat4 mirror(1.0);  // z -> 2h - z
       mirror[2][2] = -1.0;
@@ -280,13 +394,15 @@ void WaterPasses::render(rasterizer::Context& ctx, rasterizer::ColorTarget& colo
   const rasterizer::Framebuffer fb{&color, &depth};
   auto draw_view = [&](const char* name, const Plane& plane, PassList& passes, const glm::vec4& clear,
                        std::optional<GpuTexture>& into) {
-    // Scissored views: only the scissor's tiles are cleared and resolved, straight into the
-    // view's texture. The texels around the scissor are never read (it holds every texel the
-    // water reads, with a nonzero weight), so whatever they hold changes no pixel.
+    // Limited views: only the scissor's tiles are cleared and resolved, straight into the
+    // view's texture, and drawn only inside the footprint. The texels outside it are never read
+    // (it holds every texel the water reads, with a nonzero weight), so whatever they hold
+    // changes no pixel.
     const rasterizer::Scissor region = settings_.water_view_scissor ? plane.pixels_read : rasterizer::Scissor{};
     clock.run(name, draw_count(passes), [&] {
       rasterizer::clear_color(ctx, color, clear, region);
-      rasterizer::clear_depth(ctx, depth, 1.0f, region);
+      rasterizer::clear_depth_stencil(ctx, depth, 1.0f, 0, region);
+      if (settings_.water_view_scissor) mark_footprint(ctx, depth, plane.pixels_read, plane.footprint);
       run_passes(ctx, fb, passes);
       // Flushes: the views' draws are done.
       rasterizer::resolve_into(ctx, color, into->texture, rasterizer::ResolveAlpha::samples, region);
