@@ -98,27 +98,44 @@ bool may_be_visible(const scenes::Mesh& mesh, const glm::mat4& vp) {
 
 bool reflects(const scenes::Material& m) { return m.reflect_tint != glm::vec3(0.0f); }
 
-/// The largest offset, in screen units, that water material `m` can add to a lookup: the
-/// normal map's largest |2 texel - 1| in x and y, times its largest alpha, times the larger amount
-/// (water.hpp: offset = n.xy x n.a x amount x depth, depth <= 1). Filtering and MULTITEXTURE's
-/// 0.33 x (three reads) stay within the texels' range, but for 0.33 x 3 = 0.99 moving 2x - 1 by
-/// up to 0.02.
-double largest_offset(const scenes::Material& m, const scenes::Texture& normal_map) {
-  double xy = 0.0, alpha = 0.0;
+/// How far a normal map can bend a lookup (water.hpp: offset = n.xy x n.a x amount x depth):
+/// its largest |2 texel - 1| in red (the offset's x) and in green (its y), and its largest alpha.
+/// Filtering and MULTITEXTURE's 0.33 x (three reads) stay within the texels' range, but for
+/// 0.33 x 3 = 0.99 moving 2x - 1 by up to 0.02, which the offsets add.
+struct NormalReach {
+  glm::dvec2 xy{0.0};
+  double alpha = 0.0;
+};
+
+NormalReach normal_reach(const scenes::Texture& normal_map) {
+  NormalReach r;
   for (const scenes::PixelImage& image : normal_map.faces) {
     const size_t texels = static_cast<size_t>(image.width) * image.height;
     for (size_t i = 0; i < texels; ++i) {
       auto channel = [&](int c) {
         return image.is_hdr() ? double(image.rgba32f[4 * i + c]) : image.rgba8[4 * i + c] / 255.0;
       };
-      xy = std::max({xy, std::abs(2 * channel(0) - 1), std::abs(2 * channel(1) - 1)});
-      alpha = std::max(alpha, channel(3));
+      r.xy = glm::max(r.xy, glm::abs(2.0 * glm::dvec2(channel(0), channel(1)) - 1.0));
+      r.alpha = std::max(r.alpha, channel(3));
     }
   }
-  const double amount = std::max(std::abs(double(m.reflect_amount)), std::abs(double(m.refract_amount)));
-  // The blurred refraction reads 5 x 5 taps 0.005 apart around its lookup (water.hpp).
-  const double blur = m.water_blur_refract ? 2 * 0.005 : 0.0;
-  return (xy + 0.02) * alpha * amount + blur;
+  return r;
+}
+
+/// The largest offset, in screen units per axis, that a lookup with `amount` ($reflectamount for
+/// the reflection, $refractamount for the refraction) can get from a normal map (the depth is at
+/// most 1), plus `taps`: how far around its lookup a filter reads.
+glm::dvec2 largest_offset(const NormalReach& normal, float amount, double taps) {
+  return (normal.xy + 0.02) * normal.alpha * std::abs(double(amount)) + taps;
+}
+
+/// The blurred refraction reads 5 x 5 taps 0.005 apart around its lookup (water.hpp).
+double refraction_taps(const scenes::Material& m) { return m.water_blur_refract ? 2 * 0.005 : 0.0; }
+
+/// An offset in screen units as whole pixels of the frame, and one more for the pixel's center,
+/// which is not always inside the water's triangles.
+glm::ivec2 margin_pixels(const glm::dvec2& offset, const FrameSettings& settings) {
+  return glm::ivec2(glm::ceil(offset * glm::dvec2(settings.width, settings.height))) + 1;
 }
 
 /// The pixels of a width x height target that `mesh` covers through `vp`, widened by `margin`
@@ -294,13 +311,25 @@ glm::vec4 encoded_clear(const glm::vec3& linear, float alpha) {
 
 }  // namespace
 
+/// What the water of a plane can read of one of its views.
+struct WaterPasses::ViewReach {
+  rasterizer::Scissor rectangle;  ///< around all of it, in view texels: the view's scissor
+  /// Triangles in the view's clip space over all of it: where the view draws (ViewSpec::masked).
+  std::vector<glm::vec4> footprint;
+
+  /// Adds what the water of `mesh`, seen through `vp`, can read with lookups bent by up to
+  /// `margin` pixels of the frame.
+  void add(const scenes::Mesh& mesh, const glm::mat4& vp, const FrameSettings& settings, const glm::ivec2& margin) {
+    const rasterizer::Scissor r = in_view_pixels(screen_rectangle(mesh, vp, settings.width, settings.height, margin), settings);
+    rectangle = united(rectangle, r);
+    add_fan(footprint, footprint_polygon(mesh, vp, settings, margin).value_or(corners_of(r)), water_texture_side(settings));
+  }
+};
+
 struct WaterPasses::Plane {
   float height = 0.0f;
   bool reflect = false;
-  rasterizer::Scissor pixels_read;  ///< what its water can read of its views
-  /// Triangles in the views' clip space over every texel its water can read (inside
-  /// pixels_read): the views draw only there (ViewSpec::masked).
-  std::vector<glm::vec4> footprint;
+  ViewReach reflection_reach, refraction_reach;  ///< what its water can read of its views
   PassList reflection, refraction;
   std::optional<GpuTexture> reflection_texture, refraction_texture;  // set when the view is drawn
   glm::vec4 reflection_clear{0.0f}, refraction_clear{0.0f};
@@ -330,15 +359,13 @@ WaterPasses::WaterPasses(const scenes::Scene& scene, const FrameSettings& settin
     }
     (*same)->reflect = (*same)->reflect || reflects(m);
     plane_of_mesh_[i] = static_cast<int>(same - planes_.begin());
-    const double offset = largest_offset(m, scene.textures[static_cast<size_t>(m.water_normal.texture)]);
-    const glm::ivec2 margin(static_cast<int>(std::ceil(offset * settings.width)) + 1,
-                            static_cast<int>(std::ceil(offset * settings.height)) + 1);
-    const rasterizer::Scissor rectangle =
-        in_view_pixels(screen_rectangle(mesh, camera_view.view_projection, settings.width, settings.height, margin), settings);
-    (*same)->pixels_read = united((*same)->pixels_read, rectangle);
-    add_fan((*same)->footprint,
-            footprint_polygon(mesh, camera_view.view_projection, settings, margin).value_or(corners_of(rectangle)),
-            water_texture_side(settings));
+    // Each view is read with its own amount: the reflection bent by $reflectamount, the
+    // refraction by $refractamount (and blurred where asked).
+    const NormalReach normal = normal_reach(scene.textures[static_cast<size_t>(m.water_normal.texture)]);
+    const glm::mat4& vp = camera_view.view_projection;
+    (*same)->reflection_reach.add(mesh, vp, settings, margin_pixels(largest_offset(normal, m.reflect_amount, 0.0), settings));
+    (*same)->refraction_reach.add(mesh, vp, settings,
+                                  margin_pixels(largest_offset(normal, m.refract_amount, refraction_taps(m)), settings));
   }
 
   const float scale = camera_view.exposure;
@@ -347,15 +374,17 @@ WaterPasses::WaterPasses(const scenes::Scene& scene, const FrameSettings& settin
     const double spread = std::min(double(kSpread), 0.5 * (double(eye.z) - h));
     ViewSpec base = camera_view;
     base.water = false;
-    if (settings.water_view_scissor) {
-      base.scissor = plane->pixels_read;
-      base.masked = true;
-    }
+    base.masked = settings.limit_water_views;
+    auto limited_to = [&](ViewSpec v, const ViewReach& reach) {
+      if (v.masked) v.scissor = reach.rectangle;
+      return v;
+    };
     if (plane->reflect) {
       glm::dmat4 mirror(1.0);  // z -> 2h - z
       mirror[2][2] = -1.0;
       mirror[3][2] = 2.0 * h;
-      ViewSpec v = clipped_view(camera, camera.view * mirror, glm::dvec4(0, 0, 1, -(h - spread)), base);
+      ViewSpec v = clipped_view(camera, camera.view * mirror, glm::dvec4(0, 0, 1, -(h - spread)),
+                                limited_to(base, plane->reflection_reach));
       v.eye = glm::vec3(eye.x, eye.y, float(2.0 * h - eye.z));
       v.mirrored = true;
       WaterMaterial fixed;
@@ -376,7 +405,7 @@ WaterPasses::WaterPasses(const scenes::Scene& scene, const FrameSettings& settin
     fog.max_density = 1.0f;
     fog.color = material_gamma_to_linear(fog_material->water_fog_color);
     fog.water_z = float(h + spread);
-    ViewSpec v = clipped_view(camera, camera.view, glm::dvec4(0, 0, -1, h + spread), base);
+    ViewSpec v = clipped_view(camera, camera.view, glm::dvec4(0, 0, -1, h + spread), limited_to(base, plane->refraction_reach));
     v.water_fog = fog;
     v.sky = false;
     build(v, plane->refraction);
@@ -392,25 +421,26 @@ WaterPasses& WaterPasses::operator=(WaterPasses&&) noexcept = default;
 void WaterPasses::render(rasterizer::Context& ctx, rasterizer::ColorTarget& color, rasterizer::DepthStencilTarget& depth,
                          PassClock& clock) {
   const rasterizer::Framebuffer fb{&color, &depth};
-  auto draw_view = [&](const char* name, const Plane& plane, PassList& passes, const glm::vec4& clear,
+  auto draw_view = [&](const char* name, const ViewReach& reach, PassList& passes, const glm::vec4& clear,
                        std::optional<GpuTexture>& into) {
     // Limited views: only the scissor's tiles are cleared and resolved, straight into the
     // view's texture, and drawn only inside the footprint. The texels outside it are never read
     // (it holds every texel the water reads, with a nonzero weight), so whatever they hold
     // changes no pixel.
-    const rasterizer::Scissor region = settings_.water_view_scissor ? plane.pixels_read : rasterizer::Scissor{};
+    const rasterizer::Scissor region = settings_.limit_water_views ? reach.rectangle : rasterizer::Scissor{};
     clock.run(name, draw_count(passes), [&] {
       rasterizer::clear_color(ctx, color, clear, region);
       rasterizer::clear_depth_stencil(ctx, depth, 1.0f, 0, region);
-      if (settings_.water_view_scissor) mark_footprint(ctx, depth, plane.pixels_read, plane.footprint);
+      if (settings_.limit_water_views) mark_footprint(ctx, depth, reach.rectangle, reach.footprint);
       run_passes(ctx, fb, passes);
       // Flushes: the views' draws are done.
       rasterizer::resolve_into(ctx, color, into->texture, rasterizer::ResolveAlpha::samples, region);
     });
   };
   for (auto& plane : planes_) {
-    if (plane->reflect) draw_view("water reflection", *plane, plane->reflection, plane->reflection_clear, plane->reflection_texture);
-    draw_view("water refraction", *plane, plane->refraction, plane->refraction_clear, plane->refraction_texture);
+    if (plane->reflect)
+      draw_view("water reflection", plane->reflection_reach, plane->reflection, plane->reflection_clear, plane->reflection_texture);
+    draw_view("water refraction", plane->refraction_reach, plane->refraction, plane->refraction_clear, plane->refraction_texture);
   }
 }
 

@@ -323,15 +323,15 @@ TEST(Water, TheViewsLimitChangesNoPixel) {
   add_ceiling(s, {0.9f, 0.7f, 0.5f});
   add_post(s, {0.8f, 0.3f, 0.1f});
   FrameSettings whole = settings();
-  whole.water_view_scissor = false;
+  whole.limit_water_views = false;
   EXPECT_EQ(render_frame(s, settings(), 2).rgba, render_frame(s, whole, 2).rgba);
   scenes::Scene courtyard = scenes::make_builtin_scene("courtyard", {160, 90});
   attach_test_bake(courtyard);
   for (int camera : {0, 2}) {  // the overview, the fountain
-    FrameSettings scissored{160, 90, 4, camera};
-    FrameSettings unscissored = scissored;
-    unscissored.water_view_scissor = false;
-    Renderer a(courtyard, scissored), b(courtyard, unscissored);
+    FrameSettings limited{160, 90, 4, camera};
+    FrameSettings whole_views = limited;
+    whole_views.limit_water_views = false;
+    Renderer a(courtyard, limited), b(courtyard, whole_views);
     rasterizer::Context ctx(2);
     a.render(ctx);
     b.render(ctx);
@@ -340,12 +340,12 @@ TEST(Water, TheViewsLimitChangesNoPixel) {
 }
 
 /// A strip of water from one corner of the screen to the other, over the floors and under the
-/// ceiling, its normal map bumpy and its fog thick (offsets of the full 0.05 of the screen, a
-/// dozen pixels, where the depth reaches 1): its rectangle on screen holds nearly the whole
-/// screen, its footprint is a diagonal band.
+/// ceiling, its normal map bumpy and its fog thick (offsets of the full amounts where the depth
+/// reaches 1: 0.05 of the screen in the reflection, a dozen pixels, 0.03 in the refraction): its
+/// rectangle on screen holds nearly the whole screen, its footprint is a diagonal band.
 scenes::Scene diagonal_water() {
   WaterLook look;
-  look.refract_amount = 0.05f;
+  look.refract_amount = 0.03f;
   look.fog_end = 4.0f;
   scenes::Scene s = water_scene(look, {0.1f, 0.6f, 0.1f}, {0.1f, 0.1f, 0.6f});
   add_ceiling(s, {0.9f, 0.7f, 0.5f});
@@ -386,7 +386,7 @@ TEST(Water, TheViewsDrawOnlyTheWatersFootprint) {
   limited.exposure = 1.0f;
   limited.count_shading = true;
   FrameSettings whole = limited;
-  whole.water_view_scissor = false;
+  whole.limit_water_views = false;
   EXPECT_EQ(render_frame(s, limited).rgba, render_frame(s, whole).rgba);
 
   scenes::Scene dry = s;
@@ -400,8 +400,8 @@ TEST(Water, TheViewsDrawOnlyTheWatersFootprint) {
 
 TEST(Water, BlurredRefractionWhereTheModelHasIt) {
   // $blurrefract: ps_2_b and ps_3_0 draw the BLURRY combo (25 taps of the refraction, with the
-  // SDK's overbright), ps_2_0 has none and draws the sharp one; the views' scissor reaches as far
-  // as the taps.
+  // SDK's overbright), ps_2_0 has none and draws the sharp one; the refraction view's limit
+  // reaches as far as the taps.
   WaterLook look;
   scenes::Scene sharp = water_scene(look, {0.1f, 0.6f, 0.1f}, {0.1f, 0.1f, 0.6f});
   add_ceiling(sharp, {0.9f, 0.7f, 0.5f});
@@ -421,7 +421,7 @@ TEST(Water, BlurredRefractionWhereTheModelHasIt) {
   EXPECT_NE(render_frame(sharp, as(shading::ShaderModel::ps_2_b)).rgba, b2b.rgba);
   EXPECT_EQ(b2b.rgba, render_frame(blurred, as(shading::ShaderModel::ps_3_0)).rgba);
   FrameSettings whole = as(shading::ShaderModel::ps_3_0);
-  whole.water_view_scissor = false;
+  whole.limit_water_views = false;
   EXPECT_EQ(b2b.rgba, render_frame(blurred, whole).rgba);
   std::vector<ShaderUse> uses;
   Renderer r(blurred, [&] { FrameSettings f = as(shading::ShaderModel::ps_3_0); f.count_shading = true; return f; }());
@@ -447,7 +447,7 @@ TEST(Water, ViewsAreDrawnOnlyForVisibleWater) {
   add_post(s, {0.8f, 0.3f, 0.1f});
   FrameSettings f = settings();
   f.count_shading = true;
-  f.water_view_scissor = false;  // the views' footprints' own triangles left out
+  f.limit_water_views = false;  // the views' footprints' own triangles left out
   std::vector<ShaderUse> uses;
   // Two triangles a mesh. The camera's view: water, two floors, ceiling, post. The reflection:
   // what lies above z = -2 but the water (ceiling, post). The refraction: what lies below z = 2
