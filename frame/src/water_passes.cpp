@@ -102,13 +102,13 @@ bool reflects(const scenes::Material& m) { return m.reflect_tint != glm::vec3(0.
 /// its largest |2 texel - 1| in red (the offset's x) and in green (its y), and its largest alpha.
 /// Filtering and MULTITEXTURE's 0.33 x (three reads) stay within the texels' range, but for
 /// 0.33 x 3 = 0.99 moving 2x - 1 by up to 0.02, which the offsets add.
-struct NormalReach {
+struct NormalExtent {
   glm::dvec2 xy{0.0};
   double alpha = 0.0;
 };
 
-NormalReach normal_reach(const scenes::Texture& normal_map) {
-  NormalReach r;
+NormalExtent normal_extent(const scenes::Texture& normal_map) {
+  NormalExtent r;
   for (const scenes::PixelImage& image : normal_map.faces) {
     const size_t texels = static_cast<size_t>(image.width) * image.height;
     for (size_t i = 0; i < texels; ++i) {
@@ -125,15 +125,15 @@ NormalReach normal_reach(const scenes::Texture& normal_map) {
 /// The largest offset, in screen units per axis, that a lookup with `amount` ($reflectamount for
 /// the reflection, $refractamount for the refraction) can get from a normal map (the depth is at
 /// most 1), plus `taps`: how far around its lookup a filter reads.
-glm::dvec2 largest_offset(const NormalReach& normal, float amount, double taps) {
+glm::dvec2 largest_offset(const NormalExtent& normal, float amount, double taps) {
   return (normal.xy + 0.02) * normal.alpha * std::abs(double(amount)) + taps;
 }
 
 /// The blurred refraction reads 5 x 5 taps 0.005 apart around its lookup (water.hpp).
 double refraction_taps(const scenes::Material& m) { return m.water_blur_refract ? 2 * 0.005 : 0.0; }
 
-/// An offset in screen units as whole pixels of the frame, and one more for the pixel's center,
-/// which is not always inside the water's triangles.
+/// An offset in screen units as whole pixels of the frame, and one more: a pixel is shaded at its
+/// center when any of its samples is inside the water's triangles.
 glm::ivec2 margin_pixels(const glm::dvec2& offset, const FrameSettings& settings) {
   return glm::ivec2(glm::ceil(offset * glm::dvec2(settings.width, settings.height))) + 1;
 }
@@ -361,7 +361,7 @@ WaterPasses::WaterPasses(const scenes::Scene& scene, const FrameSettings& settin
     plane_of_mesh_[i] = static_cast<int>(same - planes_.begin());
     // Each view is read with its own amount: the reflection bent by $reflectamount, the
     // refraction by $refractamount (and blurred where asked).
-    const NormalReach normal = normal_reach(scene.textures[static_cast<size_t>(m.water_normal.texture)]);
+    const NormalExtent normal = normal_extent(scene.textures[static_cast<size_t>(m.water_normal.texture)]);
     const glm::mat4& vp = camera_view.view_projection;
     (*same)->reflection_reach.add(mesh, vp, settings, margin_pixels(largest_offset(normal, m.reflect_amount, 0.0), settings));
     (*same)->refraction_reach.add(mesh, vp, settings,
@@ -374,9 +374,12 @@ WaterPasses::WaterPasses(const scenes::Scene& scene, const FrameSettings& settin
     const double spread = std::min(double(kSpread), 0.5 * (double(eye.z) - h));
     ViewSpec base = camera_view;
     base.water = false;
-    base.masked = settings.limit_water_views;
-    auto limited_to = [&](ViewSpec v, const ViewReach& reach) {
-      if (v.masked) v.scissor = reach.rectangle;
+    auto limited_to = [&](const ViewReach& reach) {
+      ViewSpec v = base;
+      if (settings.limit_water_views) {
+        v.scissor = reach.rectangle;
+        v.masked = true;
+      }
       return v;
     };
     if (plane->reflect) {
@@ -384,7 +387,7 @@ WaterPasses::WaterPasses(const scenes::Scene& scene, const FrameSettings& settin
       mirror[2][2] = -1.0;
       mirror[3][2] = 2.0 * h;
       ViewSpec v = clipped_view(camera, camera.view * mirror, glm::dvec4(0, 0, 1, -(h - spread)),
-                                limited_to(base, plane->reflection_reach));
+                                limited_to(plane->reflection_reach));
       v.eye = glm::vec3(eye.x, eye.y, float(2.0 * h - eye.z));
       v.mirrored = true;
       WaterMaterial fixed;
@@ -405,7 +408,7 @@ WaterPasses::WaterPasses(const scenes::Scene& scene, const FrameSettings& settin
     fog.max_density = 1.0f;
     fog.color = material_gamma_to_linear(fog_material->water_fog_color);
     fog.water_z = float(h + spread);
-    ViewSpec v = clipped_view(camera, camera.view, glm::dvec4(0, 0, -1, h + spread), limited_to(base, plane->refraction_reach));
+    ViewSpec v = clipped_view(camera, camera.view, glm::dvec4(0, 0, -1, h + spread), limited_to(plane->refraction_reach));
     v.water_fog = fog;
     v.sky = false;
     build(v, plane->refraction);
