@@ -416,7 +416,7 @@ class FrameBuilder {
       }
     for (int f = 0; f < 6; ++f) {
       Pass pass;
-      pass.state.scissor = view_.scissor;
+      limit_to_view(pass.state);
       pass.state.rasterizer.cull = CullMode::None;
       pass.state.depth_stencil.depth_func = CompareFunc::LessEqual;
       pass.state.depth_stencil.depth_write = false;
@@ -441,9 +441,20 @@ class FrameBuilder {
     }
   }
 
+  /// Keeps a draw to the pixels the view draws (ViewSpec::scissor, ViewSpec::masked). The mask's
+  /// test writes nothing, so the rasterizer tests it before shading wherever it tests depth
+  /// early (draw.hpp).
+  void limit_to_view(PipelineState& s) const {
+    s.scissor = view_.scissor;
+    if (!view_.masked) return;
+    s.depth_stencil.stencil_enable = true;
+    s.depth_stencil.stencil_ref = kDrawnStencil;
+    s.depth_stencil.front.func = CompareFunc::Equal;
+  }
+
   PipelineState state_of(const scenes::Material& m) const {
     PipelineState s;
-    s.scissor = view_.scissor;
+    limit_to_view(s);
     s.depth_stencil.depth_func = CompareFunc::Less;
     // Back faces turn clockwise on screen; in a mirrored view, counter-clockwise.
     s.rasterizer.front_counter_clockwise = !view_.mirrored;

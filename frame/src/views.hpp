@@ -20,6 +20,7 @@
 #include <glm/vec4.hpp>
 
 #include <chrono>
+#include <cstdint>
 #include <functional>
 #include <optional>
 #include <vector>
@@ -62,11 +63,17 @@ struct ViewSpec {
   /// Set: the water's height fog instead of the scene's fog, and opaque materials write its
   /// factor to destination alpha (the refraction view, water_passes.hpp).
   std::optional<shading::source::FogSettings> water_fog;
-  /// The pixels drawn (the water's views: only what the water can read).
+  /// The pixels drawn (the water's views: only what the water can read): inside `scissor`, and
+  /// with `masked`, only where the view's stencil holds kDrawnStencil (the water's footprint,
+  /// which water_passes.cpp writes there before the view's draws).
   rasterizer::Scissor scissor;
+  bool masked = false;
   bool sky = true;              ///< the sky cube
   bool water = true;            ///< water meshes (the water's own views never draw water)
 };
+
+/// The stencil value of the pixels a masked view draws (ViewSpec::masked).
+inline constexpr uint8_t kDrawnStencil = 1;
 
 /// Builds a view's draws.
 using BuildView = std::function<void(const ViewSpec&, PassList&)>;

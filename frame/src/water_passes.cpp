@@ -2,6 +2,7 @@
 
 #include "water_passes.hpp"
 
+#include "luxel/rasterizer/limits.hpp"
 #include "luxel/rasterizer/srgb.hpp"
 #include "luxel/rasterizer/texture.hpp"
 #include "luxel/shading/source/hdr_type.hpp"
@@ -14,12 +15,15 @@
 #include <glm/ext/vector_int2.hpp>
 #include <glm/geometric.hpp>
 #include <glm/matrix.hpp>
+#include <glm/vector_relational.hpp>
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <span>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 namespace luxel::frame {
 
@@ -94,27 +98,44 @@ bool may_be_visible(const scenes::Mesh& mesh, const glm::mat4& vp) {
 
 bool reflects(const scenes::Material& m) { return m.reflect_tint != glm::vec3(0.0f); }
 
-/// The largest offset, in screen units, that water material `m` can add to a lookup: the
-/// normal map's largest |2 texel - 1| in x and y, times its largest alpha, times the larger amount
-/// (water.hpp: offset = n.xy x n.a x amount x depth, depth <= 1). Filtering and MULTITEXTURE's
-/// 0.33 x (three reads) stay within the texels' range, but for 0.33 x 3 = 0.99 moving 2x - 1 by
-/// up to 0.02.
-double largest_offset(const scenes::Material& m, const scenes::Texture& normal_map) {
-  double xy = 0.0, alpha = 0.0;
+/// How far a normal map can bend a lookup (water.hpp: offset = n.xy x n.a x amount x depth):
+/// its largest |2 texel - 1| in red (the offset's x) and in green (its y), and its largest alpha.
+/// Filtering and MULTITEXTURE's 0.33 x (three reads) stay within the texels' range, but for
+/// 0.33 x 3 = 0.99 moving 2x - 1 by up to 0.02, which the offsets add.
+struct NormalExtent {
+  glm::dvec2 xy{0.0};
+  double alpha = 0.0;
+};
+
+NormalExtent normal_extent(const scenes::Texture& normal_map) {
+  NormalExtent r;
   for (const scenes::PixelImage& image : normal_map.faces) {
     const size_t texels = static_cast<size_t>(image.width) * image.height;
     for (size_t i = 0; i < texels; ++i) {
       auto channel = [&](int c) {
         return image.is_hdr() ? double(image.rgba32f[4 * i + c]) : image.rgba8[4 * i + c] / 255.0;
       };
-      xy = std::max({xy, std::abs(2 * channel(0) - 1), std::abs(2 * channel(1) - 1)});
-      alpha = std::max(alpha, channel(3));
+      r.xy = glm::max(r.xy, glm::abs(2.0 * glm::dvec2(channel(0), channel(1)) - 1.0));
+      r.alpha = std::max(r.alpha, channel(3));
     }
   }
-  const double amount = std::max(std::abs(double(m.reflect_amount)), std::abs(double(m.refract_amount)));
-  // The blurred refraction reads 5 x 5 taps 0.005 apart around its lookup (water.hpp).
-  const double blur = m.water_blur_refract ? 2 * 0.005 : 0.0;
-  return (xy + 0.02) * alpha * amount + blur;
+  return r;
+}
+
+/// The largest offset, in screen units per axis, that a lookup with `amount` ($reflectamount for
+/// the reflection, $refractamount for the refraction) can get from a normal map (the depth is at
+/// most 1), plus `taps`: how far around its lookup a filter reads.
+glm::dvec2 largest_offset(const NormalExtent& normal, float amount, double taps) {
+  return (normal.xy + 0.02) * normal.alpha * std::abs(double(amount)) + taps;
+}
+
+/// The blurred refraction reads 5 x 5 taps 0.005 apart around its lookup (water.hpp).
+double refraction_taps(const scenes::Material& m) { return m.water_blur_refract ? 2 * 0.005 : 0.0; }
+
+/// An offset in screen units as whole pixels of the frame, and one more: a pixel is shaded at its
+/// center when any of its samples is inside the water's triangles.
+glm::ivec2 margin_pixels(const glm::dvec2& offset, const FrameSettings& settings) {
+  return glm::ivec2(glm::ceil(offset * glm::dvec2(settings.width, settings.height))) + 1;
 }
 
 /// The pixels of a width x height target that `mesh` covers through `vp`, widened by `margin`
@@ -154,6 +175,107 @@ rasterizer::Scissor in_view_pixels(const rasterizer::Scissor& frame_pixels, cons
           to_view(frame_pixels.x1, settings.width, true), to_view(frame_pixels.y1, settings.height, true)};
 }
 
+/// The factor from the frame's pixels to a view's texels, per axis: the screen is stretched
+/// onto the square.
+glm::dvec2 texels_per_pixel(const FrameSettings& settings) {
+  const double side = water_texture_side(settings);
+  return {side / settings.width, side / settings.height};
+}
+
+/// The convex hull of `points`, counter-clockwise on screen (Andrew's monotone chain), without
+/// collinear points.
+std::vector<glm::dvec2> convex_hull(std::vector<glm::dvec2> points) {
+  std::sort(points.begin(), points.end(), [](const glm::dvec2& a, const glm::dvec2& b) {
+    return a.x < b.x || (a.x == b.x && a.y < b.y);
+  });
+  if (points.size() < 3) return points;
+  auto turns_left = [](const glm::dvec2& o, const glm::dvec2& a, const glm::dvec2& b) {
+    return (a.x - o.x) * (b.y - o.y) - (a.y - o.y) * (b.x - o.x) > 0;
+  };
+  std::vector<glm::dvec2> hull(2 * points.size());
+  size_t k = 0;
+  for (size_t i = 0; i < points.size(); ++i) {  // the lower chain
+    while (k >= 2 && !turns_left(hull[k - 2], hull[k - 1], points[i])) --k;
+    hull[k++] = points[i];
+  }
+  for (size_t i = points.size() - 1, lower = k + 1; i-- > 0;) {  // the upper chain
+    while (k >= lower && !turns_left(hull[k - 2], hull[k - 1], points[i])) --k;
+    hull[k++] = points[i];
+  }
+  hull.resize(k - 1);  // the last point is the first
+  return hull;
+}
+
+/// The texels of a view that the water of `mesh` can read, as a convex polygon in view texels:
+/// the convex hull of its vertices on screen, widened by `margin` pixels of the frame as the
+/// rectangle is (screen_rectangle), then by what rounding the rectangle to whole pixels and
+/// in_view_pixels can add at most (a pixel, then two texels). Nothing when a vertex lies behind
+/// the eye, or so far off screen that the rasterizer would clip the polygon instead of only
+/// snapping it (the guard band).
+std::optional<std::vector<glm::dvec2>> footprint_polygon(const scenes::Mesh& mesh, const glm::mat4& vp,
+                                                         const FrameSettings& settings, const glm::ivec2& margin) {
+  const glm::dvec2 scale = texels_per_pixel(settings);
+  const glm::dvec2 reach = (glm::dvec2(margin) + 1.0) * scale + 2.0;
+  const double limit = 0.5 * rasterizer::kGuardBand;
+  std::vector<glm::dvec2> corners;
+  corners.reserve(4 * mesh.positions.size());
+  for (const glm::vec3& p : mesh.positions) {
+    const glm::vec4 c = vp * glm::vec4(p, 1.0f);
+    if (!(c.w > 0.0f)) return std::nullopt;
+    const glm::dvec2 texel = glm::dvec2((double(c.x) / c.w + 1) * 0.5 * settings.width,
+                                        (1 - double(c.y) / c.w) * 0.5 * settings.height) * scale;
+    if (!(glm::all(glm::lessThan(glm::abs(texel), glm::dvec2(limit - reach))))) return std::nullopt;
+    // The hull widened by a rectangle (their Minkowski sum) is the hull of its vertices moved
+    // to the rectangle's corners.
+    for (const glm::dvec2 corner : {glm::dvec2(-1, -1), glm::dvec2(1, -1), glm::dvec2(1, 1), glm::dvec2(-1, 1)})
+      corners.push_back(texel + corner * reach);
+  }
+  return convex_hull(std::move(corners));
+}
+
+/// The corners of a rectangle of texels, as a polygon.
+std::vector<glm::dvec2> corners_of(const rasterizer::Scissor& r) {
+  return {{r.x0, r.y0}, {r.x1, r.y0}, {r.x1, r.y1}, {r.x0, r.y1}};
+}
+
+/// Appends a convex polygon of view texels to `triangles` as a fan, in the view's clip space.
+void add_fan(std::vector<glm::vec4>& triangles, const std::vector<glm::dvec2>& polygon, int side) {
+  auto clip = [side](const glm::dvec2& texel) {
+    return glm::vec4(float(2 * texel.x / side - 1), float(1 - 2 * texel.y / side), 0.0f, 1.0f);
+  };
+  for (size_t i = 2; i < polygon.size(); ++i)
+    for (const glm::dvec2& corner : {polygon[0], polygon[i - 1], polygon[i]}) triangles.push_back(clip(corner));
+}
+
+/// A footprint's vertices, already in the view's clip space.
+struct ClipPositions {
+  static constexpr int kVaryings = 0;
+  const glm::vec4* positions;
+  void operator()(uint32_t i, rasterizer::VertexOutput<0>& out) const { out.position = positions[i]; }
+};
+
+/// Writes nothing: a footprint's draw marks the stencil alone.
+struct NoColor {
+  static constexpr bool kCanDiscard = false, kWritesDepth = false, kTrivial = true;
+  void operator()(const rasterizer::PixelInput<0>&, rasterizer::PixelOutput&) const {}
+};
+
+/// Writes kDrawnStencil into `depth`'s stencil over `footprint` (triangles in clip space), inside
+/// `scissor`: where a masked view draws (views.hpp, ViewSpec::masked).
+void mark_footprint(rasterizer::Context& ctx, rasterizer::DepthStencilTarget& depth, const rasterizer::Scissor& scissor,
+                    const std::vector<glm::vec4>& footprint) {
+  rasterizer::PipelineState state;
+  state.scissor = scissor;
+  state.rasterizer.cull = rasterizer::CullMode::None;
+  state.depth_stencil.depth_enable = false;
+  state.depth_stencil.stencil_enable = true;
+  state.depth_stencil.stencil_ref = kDrawnStencil;
+  state.depth_stencil.front.pass = rasterizer::StencilOp::Replace;
+  rasterizer::draw(ctx, rasterizer::Framebuffer{nullptr, &depth}, state,
+                   rasterizer::Geometry::non_indexed(static_cast<uint32_t>(footprint.size())),
+                   ClipPositions{footprint.data()}, NoColor{});
+}
+
 /// The smallest rectangle holding both.
 rasterizer::Scissor united(const rasterizer::Scissor& a, const rasterizer::Scissor& b) {
   if (!a.enable) return b;
@@ -189,10 +311,25 @@ glm::vec4 encoded_clear(const glm::vec3& linear, float alpha) {
 
 }  // namespace
 
+/// What the water of a plane can read of one of its views.
+struct WaterPasses::ViewReach {
+  rasterizer::Scissor rectangle;  ///< around all of it, in view texels: the view's scissor
+  /// Triangles in the view's clip space over all of it: where the view draws (ViewSpec::masked).
+  std::vector<glm::vec4> footprint;
+
+  /// Adds what the water of `mesh`, seen through `vp`, can read with lookups bent by up to
+  /// `margin` pixels of the frame.
+  void add(const scenes::Mesh& mesh, const glm::mat4& vp, const FrameSettings& settings, const glm::ivec2& margin) {
+    const rasterizer::Scissor r = in_view_pixels(screen_rectangle(mesh, vp, settings.width, settings.height, margin), settings);
+    rectangle = united(rectangle, r);
+    add_fan(footprint, footprint_polygon(mesh, vp, settings, margin).value_or(corners_of(r)), water_texture_side(settings));
+  }
+};
+
 struct WaterPasses::Plane {
   float height = 0.0f;
   bool reflect = false;
-  rasterizer::Scissor pixels_read;  ///< what its water can read of its views
+  ViewReach reflection_reach, refraction_reach;  ///< what its water can read of its views
   PassList reflection, refraction;
   std::optional<GpuTexture> reflection_texture, refraction_texture;  // set when the view is drawn
   glm::vec4 reflection_clear{0.0f}, refraction_clear{0.0f};
@@ -222,12 +359,13 @@ WaterPasses::WaterPasses(const scenes::Scene& scene, const FrameSettings& settin
     }
     (*same)->reflect = (*same)->reflect || reflects(m);
     plane_of_mesh_[i] = static_cast<int>(same - planes_.begin());
-    const double offset = largest_offset(m, scene.textures[static_cast<size_t>(m.water_normal.texture)]);
-    const glm::ivec2 margin(static_cast<int>(std::ceil(offset * settings.width)) + 1,
-                            static_cast<int>(std::ceil(offset * settings.height)) + 1);
-    (*same)->pixels_read = united((*same)->pixels_read,
-                                  in_view_pixels(screen_rectangle(mesh, camera_view.view_projection, settings.width, settings.height, margin),
-                                                 settings));
+    // Each view is read with its own amount: the reflection bent by $reflectamount, the
+    // refraction by $refractamount (and blurred where asked).
+    const NormalExtent normal = normal_extent(scene.textures[static_cast<size_t>(m.water_normal.texture)]);
+    const glm::mat4& vp = camera_view.view_projection;
+    (*same)->reflection_reach.add(mesh, vp, settings, margin_pixels(largest_offset(normal, m.reflect_amount, 0.0), settings));
+    (*same)->refraction_reach.add(mesh, vp, settings,
+                                  margin_pixels(largest_offset(normal, m.refract_amount, refraction_taps(m)), settings));
   }
 
   const float scale = camera_view.exposure;
@@ -236,12 +374,20 @@ WaterPasses::WaterPasses(const scenes::Scene& scene, const FrameSettings& settin
     const double spread = std::min(double(kSpread), 0.5 * (double(eye.z) - h));
     ViewSpec base = camera_view;
     base.water = false;
-    if (settings.water_view_scissor) base.scissor = plane->pixels_read;
+    auto limited_to = [&](const ViewReach& reach) {
+      ViewSpec v = base;
+      if (settings.limit_water_views) {
+        v.scissor = reach.rectangle;
+        v.masked = true;
+      }
+      return v;
+    };
     if (plane->reflect) {
       glm::dmat4 mirror(1.0);  // z -> 2h - z
       mirror[2][2] = -1.0;
       mirror[3][2] = 2.0 * h;
-      ViewSpec v = clipped_view(camera, camera.view * mirror, glm::dvec4(0, 0, 1, -(h - spread)), base);
+      ViewSpec v = clipped_view(camera, camera.view * mirror, glm::dvec4(0, 0, 1, -(h - spread)),
+                                limited_to(plane->reflection_reach));
       v.eye = glm::vec3(eye.x, eye.y, float(2.0 * h - eye.z));
       v.mirrored = true;
       WaterMaterial fixed;
@@ -262,7 +408,7 @@ WaterPasses::WaterPasses(const scenes::Scene& scene, const FrameSettings& settin
     fog.max_density = 1.0f;
     fog.color = material_gamma_to_linear(fog_material->water_fog_color);
     fog.water_z = float(h + spread);
-    ViewSpec v = clipped_view(camera, camera.view, glm::dvec4(0, 0, -1, h + spread), base);
+    ViewSpec v = clipped_view(camera, camera.view, glm::dvec4(0, 0, -1, h + spread), limited_to(plane->refraction_reach));
     v.water_fog = fog;
     v.sky = false;
     build(v, plane->refraction);
@@ -278,23 +424,26 @@ WaterPasses& WaterPasses::operator=(WaterPasses&&) noexcept = default;
 void WaterPasses::render(rasterizer::Context& ctx, rasterizer::ColorTarget& color, rasterizer::DepthStencilTarget& depth,
                          PassClock& clock) {
   const rasterizer::Framebuffer fb{&color, &depth};
-  auto draw_view = [&](const char* name, const Plane& plane, PassList& passes, const glm::vec4& clear,
+  auto draw_view = [&](const char* name, const ViewReach& reach, PassList& passes, const glm::vec4& clear,
                        std::optional<GpuTexture>& into) {
-    // Scissored views: only the scissor's tiles are cleared and resolved, straight into the
-    // view's texture. The texels around the scissor are never read (it holds every texel the
-    // water reads, with a nonzero weight), so whatever they hold changes no pixel.
-    const rasterizer::Scissor region = settings_.water_view_scissor ? plane.pixels_read : rasterizer::Scissor{};
+    // Limited views: only the scissor's tiles are cleared and resolved, straight into the
+    // view's texture, and drawn only inside the footprint. The texels outside it are never read
+    // (it holds every texel the water reads, with a nonzero weight), so whatever they hold
+    // changes no pixel.
+    const rasterizer::Scissor region = settings_.limit_water_views ? reach.rectangle : rasterizer::Scissor{};
     clock.run(name, draw_count(passes), [&] {
       rasterizer::clear_color(ctx, color, clear, region);
-      rasterizer::clear_depth(ctx, depth, 1.0f, region);
+      rasterizer::clear_depth_stencil(ctx, depth, 1.0f, 0, region);
+      if (settings_.limit_water_views) mark_footprint(ctx, depth, reach.rectangle, reach.footprint);
       run_passes(ctx, fb, passes);
       // Flushes: the views' draws are done.
       rasterizer::resolve_into(ctx, color, into->texture, rasterizer::ResolveAlpha::samples, region);
     });
   };
   for (auto& plane : planes_) {
-    if (plane->reflect) draw_view("water reflection", *plane, plane->reflection, plane->reflection_clear, plane->reflection_texture);
-    draw_view("water refraction", *plane, plane->refraction, plane->refraction_clear, plane->refraction_texture);
+    if (plane->reflect)
+      draw_view("water reflection", plane->reflection_reach, plane->reflection, plane->reflection_clear, plane->reflection_texture);
+    draw_view("water refraction", plane->refraction_reach, plane->refraction, plane->refraction_clear, plane->refraction_texture);
   }
 }
 

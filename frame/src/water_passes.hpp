@@ -20,13 +20,20 @@
 //    eye-to-point segment under the water times its projected depth over the fog range, is the
 //    "depth" water.hpp reads: 0 at the waterline, 1 where the water's fog is full; a pixel where
 //    nothing is drawn keeps the clear's alpha, 1. No sky.
-// Neither view draws water, nor any pixel the water cannot read: each view is scissored to the
-// screen rectangle of its plane's meshes, widened by the largest offset their normal maps can
-// add to a lookup (|2 texel - 1| x alpha x the larger of $reflectamount and $refractamount, the
-// depth being at most 1), plus the reach of $blurrefract's 5 x 5 taps (2 x 0.005 of the view) where
-// the material asks for it, plus a texel for the bilinear read. The clip plane sits 2 inches past the water plane into the kept side
-// (CBaseWorldView::PushView's "spread", which hides seams at the waterline; less when the eye is
-// closer than that), and is the projection's near plane (Lengyel's oblique near plane): the
+// Neither view draws water, nor any pixel the water cannot read: what each mesh of the plane can
+// read is its footprint on screen (the convex hull of its vertices) widened by the largest offset
+// its normal map can add to a lookup of that view (|2 texel - 1| x alpha x the view's amount:
+// $reflectamount for the reflection, $refractamount for the refraction, the depth being at most 1),
+// plus the reach of $blurrefract's 5 x 5 taps (2 x 0.005 of the view) in the refraction where the
+// material asks for it, plus a texel for the bilinear read. Each view is scissored to the rectangle
+// around that (the meshes' bounding boxes on screen, widened alike), which keeps the rasterizer
+// from binning anything outside it, and stencil-masked to the widened hulls inside it: before the
+// view's draws, a draw of the hulls writes the stencil, and every draw of the view tests it (before
+// its pixel shader, but for alpha-tested materials), so that the floor around a basin below the
+// plane and the walls above it are not shaded. A mesh with a vertex behind the eye, or far beyond
+// the screen, reads its whole rectangle. The clip plane sits 2 inches past the water plane into the
+// kept side (CBaseWorldView::PushView's "spread", which hides seams at the waterline; less when the
+// eye is closer than that), and is the projection's near plane (Lengyel's oblique near plane): the
 // rasterizer clips at z = 0, so nothing of the rasterizer changes. Fog reads the view's ordinary
 // projected depth (views.hpp, ViewSpec::proj_z_row). Meshes wholly on the clipped side are not
 // drawn.
@@ -85,6 +92,7 @@ class WaterPasses {
   void add_shader_uses(std::vector<ShaderUse>& uses) const;
 
  private:
+  struct ViewReach;
   struct Plane;
   FrameSettings settings_;
   std::vector<std::unique_ptr<Plane>> planes_;

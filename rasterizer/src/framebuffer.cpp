@@ -248,8 +248,8 @@ void record_depth_clear(Context& ctx, DepthStencilTarget& target, float depth, s
 }
 }  // namespace
 
-void clear_depth_stencil(Context& ctx, DepthStencilTarget& target, float depth, uint8_t stencil) {
-  record_depth_clear(ctx, target, depth, stencil, {});
+void clear_depth_stencil(Context& ctx, DepthStencilTarget& target, float depth, uint8_t stencil, const Scissor& region) {
+  record_depth_clear(ctx, target, depth, stencil, region);
 }
 
 void clear_depth(Context& ctx, DepthStencilTarget& target, float depth, const Scissor& region) {

@@ -26,6 +26,8 @@
 #include <cstdint>
 #include <stdexcept>
 #include <string>
+#include <utility>
+#include <vector>
 
 namespace luxel::frame {
 namespace {
@@ -312,24 +314,24 @@ TEST(Water, SameBytesOnOneAndTwoThreads) {
   EXPECT_EQ(one.rgba, two.rgba);
 }
 
-TEST(Water, TheViewsScissorChangesNoPixel) {
-  // The scissor keeps of each view only what the water can read (its rectangle on screen widened
-  // by the largest normal-map offset): drawing the whole views must give the same bytes, on the
-  // test scene (a flat normal map) and on the courtyard (a bumpy one).
+TEST(Water, TheViewsLimitChangesNoPixel) {
+  // The views draw only what the water can read (its footprint on screen widened by the largest
+  // normal-map offset, inside its rectangle): drawing the whole views must give the same bytes,
+  // on the test scene (a flat normal map) and on the courtyard (a bumpy one).
   WaterLook look;
   scenes::Scene s = water_scene(look, {0.1f, 0.6f, 0.1f}, {0.1f, 0.1f, 0.6f});
   add_ceiling(s, {0.9f, 0.7f, 0.5f});
   add_post(s, {0.8f, 0.3f, 0.1f});
   FrameSettings whole = settings();
-  whole.water_view_scissor = false;
+  whole.limit_water_views = false;
   EXPECT_EQ(render_frame(s, settings(), 2).rgba, render_frame(s, whole, 2).rgba);
   scenes::Scene courtyard = scenes::make_builtin_scene("courtyard", {160, 90});
   attach_test_bake(courtyard);
   for (int camera : {0, 2}) {  // the overview, the fountain
-    FrameSettings scissored{160, 90, 4, camera};
-    FrameSettings unscissored = scissored;
-    unscissored.water_view_scissor = false;
-    Renderer a(courtyard, scissored), b(courtyard, unscissored);
+    FrameSettings limited{160, 90, 4, camera};
+    FrameSettings whole_views = limited;
+    whole_views.limit_water_views = false;
+    Renderer a(courtyard, limited), b(courtyard, whole_views);
     rasterizer::Context ctx(2);
     a.render(ctx);
     b.render(ctx);
@@ -337,10 +339,69 @@ TEST(Water, TheViewsScissorChangesNoPixel) {
   }
 }
 
+/// A strip of water from one corner of the screen to the other, over the floors and under the
+/// ceiling, its normal map bumpy and its fog thick (offsets of the full amounts where the depth
+/// reaches 1: 0.05 of the screen in the reflection, a dozen pixels, 0.03 in the refraction): its
+/// rectangle on screen holds nearly the whole screen, its footprint is a diagonal band.
+scenes::Scene diagonal_water() {
+  WaterLook look;
+  look.refract_amount = 0.03f;
+  look.fog_end = 4.0f;
+  scenes::Scene s = water_scene(look, {0.1f, 0.6f, 0.1f}, {0.1f, 0.1f, 0.6f});
+  add_ceiling(s, {0.9f, 0.7f, 0.5f});
+  add_post(s, {0.8f, 0.3f, 0.1f});
+  scenes::Material& water = s.materials[0];
+  water.reflect_amount = 0.05f;
+  scenes::PixelImage& normal = s.textures[static_cast<size_t>(water.water_normal.texture)].faces.at(0);
+  normal.width = normal.height = 4;
+  normal.rgba8.clear();
+  for (int i = 0; i < 16; ++i) {
+    const uint8_t x = (i * 5) % 3 == 0 ? 0 : 255, y = (i * 7) % 4 < 2 ? 0 : 255;
+    normal.rgba8.insert(normal.rgba8.end(), {x, y, 128, 255});
+  }
+  // The water drawn last, so that the frame's own draws shade the same pixels without it.
+  scenes::Mesh strip = quad({-200, -90, 0}, {400, 390, 0}, {-12, 12, 0}, 0, "water");
+  s.meshes.erase(s.meshes.begin());
+  s.meshes.push_back(std::move(strip));
+  return s;
+}
+
+/// The pixels the frame's Source shaders shaded, the water's own left out.
+uint64_t pixels_shaded_around_water(const scenes::Scene& s, const FrameSettings& f) {
+  Renderer r(s, f);
+  rasterizer::Context ctx(2);
+  r.render(ctx);
+  uint64_t pixels = 0;
+  for (const ShaderUse& u : r.shader_uses())
+    if (u.family != "Water") pixels += u.pixels;
+  return pixels;
+}
+
+TEST(Water, TheViewsDrawOnlyTheWatersFootprint) {
+  // The views draw only where the water's footprint on screen, widened by its normal map's
+  // reach, can read them: the same bytes as drawing the whole views, for a fraction of their
+  // pixels, where the water's rectangle on screen would have kept nearly all of them.
+  const scenes::Scene s = diagonal_water();
+  FrameSettings limited{240, 160, 4};
+  limited.exposure = 1.0f;
+  limited.count_shading = true;
+  FrameSettings whole = limited;
+  whole.limit_water_views = false;
+  EXPECT_EQ(render_frame(s, limited).rgba, render_frame(s, whole).rgba);
+
+  scenes::Scene dry = s;
+  dry.meshes.pop_back();
+  const uint64_t frame_pixels = pixels_shaded_around_water(dry, limited);
+  const uint64_t views_limited = pixels_shaded_around_water(s, limited) - frame_pixels;
+  const uint64_t views_whole = pixels_shaded_around_water(s, whole) - frame_pixels;
+  EXPECT_GT(views_limited, 0u);
+  EXPECT_LT(views_limited * 3, views_whole) << views_limited << " of " << views_whole << " pixels";
+}
+
 TEST(Water, BlurredRefractionWhereTheModelHasIt) {
   // $blurrefract: ps_2_b and ps_3_0 draw the BLURRY combo (25 taps of the refraction, with the
-  // SDK's overbright), ps_2_0 has none and draws the sharp one; the views' scissor reaches as far
-  // as the taps.
+  // SDK's overbright), ps_2_0 has none and draws the sharp one; the refraction view's limit
+  // reaches as far as the taps.
   WaterLook look;
   scenes::Scene sharp = water_scene(look, {0.1f, 0.6f, 0.1f}, {0.1f, 0.1f, 0.6f});
   add_ceiling(sharp, {0.9f, 0.7f, 0.5f});
@@ -360,7 +421,7 @@ TEST(Water, BlurredRefractionWhereTheModelHasIt) {
   EXPECT_NE(render_frame(sharp, as(shading::ShaderModel::ps_2_b)).rgba, b2b.rgba);
   EXPECT_EQ(b2b.rgba, render_frame(blurred, as(shading::ShaderModel::ps_3_0)).rgba);
   FrameSettings whole = as(shading::ShaderModel::ps_3_0);
-  whole.water_view_scissor = false;
+  whole.limit_water_views = false;
   EXPECT_EQ(b2b.rgba, render_frame(blurred, whole).rgba);
   std::vector<ShaderUse> uses;
   Renderer r(blurred, [&] { FrameSettings f = as(shading::ShaderModel::ps_3_0); f.count_shading = true; return f; }());
@@ -386,6 +447,7 @@ TEST(Water, ViewsAreDrawnOnlyForVisibleWater) {
   add_post(s, {0.8f, 0.3f, 0.1f});
   FrameSettings f = settings();
   f.count_shading = true;
+  f.limit_water_views = false;  // the views' footprints' own triangles left out
   std::vector<ShaderUse> uses;
   // Two triangles a mesh. The camera's view: water, two floors, ceiling, post. The reflection:
   // what lies above z = -2 but the water (ceiling, post). The refraction: what lies below z = 2

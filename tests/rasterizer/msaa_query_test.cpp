@@ -239,9 +239,11 @@ TEST(Clear, ARegionTouchesOnlyTheTilesHoldingIt) {
   ColorTarget target(W, H, 4);
   DepthStencilTarget ds(W, H, 4);
   clear_color(ctx, target, {1, 0, 0, 1});
-  clear_depth(ctx, ds, 0.75f);
+  clear_depth_stencil(ctx, ds, 0.5f, 9);
   const Scissor region{true, kTileSize + 3, kTileSize - 1, 2 * kTileSize + 1, kTileSize + 5};  // tiles x 1-2, y 0-1
   clear_color(ctx, target, {0, 0, 1, 1}, region);
+  clear_depth_stencil(ctx, ds, 0.25f, 3, region);
+  clear_depth(ctx, ds, 0.75f);
   clear_depth(ctx, ds, 0.25f, region);
   Image image(W, H);
   std::fill(image.rgba.begin(), image.rgba.end(), uint8_t(7));
@@ -252,6 +254,7 @@ TEST(Clear, ARegionTouchesOnlyTheTilesHoldingIt) {
       const bool held = tx >= 1 && tx <= 2 && ty <= 1;
       ASSERT_EQ(target.sample(x, y, 3), held ? rgba8(0, 0, 255, 255) : rgba8(255, 0, 0, 255)) << x << ", " << y;
       ASSERT_EQ(ds.depth(x, y, 2), held ? 0.25f : 0.75f) << x << ", " << y;
+      ASSERT_EQ(ds.stencil(x, y, 1), held ? 3 : 9) << x << ", " << y;
       ASSERT_EQ(image.pixel(x, y)[2], held ? 255 : 7) << x << ", " << y;
     }
   }

@@ -126,9 +126,10 @@ struct FrameSettings {
   /// (render targets, unlike the back buffer, have none), as viewrender.cpp's AdjustView draws
   /// them. 1 to kMaxTargetSize, or 0: water_texture_side's choice.
   int water_texture_size = 0;
-  /// Scissor the water's views to what the water can read of them (water_passes.hpp); off, they
-  /// draw the whole target: slower, and the same bytes (tested), like the rasterizer's fast paths.
-  bool water_view_scissor = true;
+  /// Draw of the water's views only what the water can read of them (water_passes.hpp: its
+  /// footprint on screen, inside the rectangle around it); off, they draw the whole target:
+  /// slower, and the same bytes (tested), like the rasterizer's fast paths.
+  bool limit_water_views = true;
   /// The most bytes a renderer may ask for (Renderer's constructor, scenes/memory_limit.hpp).
   uint64_t memory_limit = scenes::kDefaultMemoryLimit;
 };

@@ -241,7 +241,7 @@ inline glm::vec4 unpack_rgba8(uint32_t rgba) {
 /// `region` (pixels [x0, x1) x [y0, y1)), only the tiles that hold some of it are cleared: what a
 /// view scissored to the region needs, the rest of the target left as it was.
 void clear_color(Context& ctx, ColorTarget& target, glm::vec4 color, const Scissor& region = {});
-void clear_depth_stencil(Context& ctx, DepthStencilTarget& target, float depth, uint8_t stencil);
+void clear_depth_stencil(Context& ctx, DepthStencilTarget& target, float depth, uint8_t stencil, const Scissor& region = {});
 /// Depth alone (D3DCLEAR_ZBUFFER without D3DCLEAR_STENCIL): stencil keeps its values.
 void clear_depth(Context& ctx, DepthStencilTarget& target, float depth, const Scissor& region = {});
 
