@@ -135,8 +135,8 @@ enum class ColorFormat : uint8_t {
   /// A 32-bit float per channel, exactly as the pixel functor or the clear gave it: no clamp
   /// and no rounding, so values beyond [0, 1], negative ones and NaN come back bit for bit
   /// (Direct3D 9's D3DFMT_A32B32G32R32F). For linear HDR frames read back as floats, as a cube-map
-  /// capture's. One sample, no blending and no sRGB writes (DX9 parts blended no 32-bit float
-  /// target either): a target with more samples, or a draw into it with either, throws
+  /// capture's. One sample, no blending and no sRGB writes (DX9-generation GPUs blended no
+  /// 32-bit float target either): a target with more samples, or a draw into it with either, throws
   /// std::invalid_argument. Read it with the float resolve_into below; it has no sample().
   rgba32f,
 };
