@@ -197,6 +197,7 @@ struct FrameState {
     DepthStencilTarget depth;
   };
   std::optional<WaterTargets> water_targets;  ///< the water's views', made at the first frame with water
+  std::optional<ColorTarget> float_color;     ///< render_float's (rgba32f), made at its first frame
   PassList passes;                                   // the camera's view
   Image image;
   DrawStats stats;
@@ -342,7 +343,7 @@ class FrameBuilder {
     if (view_.keep && !touches(*mesh, offset, *view_.keep)) return;
     Pass pass;
     pass.state = state_of(m);
-    // (A capture is rendered to floats too, which only Source draws can: render_float.)
+    // (A capture is rendered to floats too, through its Source draws' own state: render_float.)
     if (is_trivial_unlit(m, fog_, exposure_) && !st_.settings.cubemap_capture && offset == glm::vec3(0.0f)) {
       pass.geometry = geometry_of(*mesh);
       pass.trivial = UnlitVertex{mesh->positions.data(), data_or_null(mesh->colors), m.color, vp_};
@@ -997,26 +998,26 @@ std::vector<glm::vec4> Renderer::render_float(Context& ctx) {
   if (!st.settings.cubemap_capture || st.settings.samples != 1 || !st.passes.translucent.empty())
     throw std::invalid_argument("a float frame is rendered only for a cube-map capture without MSAA");
   if (!st.views_current) build_views(st);
-  const glm::vec3 background = st.scene->background;
-  std::vector<uint32_t> bits(static_cast<size_t>(st.settings.width) * st.settings.height * 3, 0);
-  const Framebuffer fb{&st.color, &st.depth};
-  for (int byte = 0; byte < 4; ++byte) {
-    auto byte_of = [byte](float v) { return float((std::bit_cast<uint32_t>(v) >> (8 * byte)) & 255u) / 255.0f; };
-    ctx.reset_stats();
-    clear_color(ctx, st.color, glm::vec4(byte_of(background.r), byte_of(background.g), byte_of(background.b), 1.0f));
-    clear_depth_stencil(ctx, st.depth, 1.0f, 0);
-    for (auto* passes : {&st.passes.opaque, &st.passes.sky}) {
-      for (Pass& p : *passes) p.source->run_float_byte(ctx, fb, byte);
+  if (!st.float_color) st.float_color.emplace(st.settings.width, st.settings.height, 1, ColorFormat::rgba32f);
+  ColorTarget& color = *st.float_color;
+  const Framebuffer fb{&color, &st.depth};
+  ctx.reset_stats();
+  clear_color(ctx, color, glm::vec4(st.scene->background, 1.0f));
+  clear_depth_stencil(ctx, st.depth, 1.0f, 0);
+  for (auto* passes : {&st.passes.opaque, &st.passes.sky}) {
+    for (Pass& p : *passes) {
+      PipelineState linear = p.source->state;  // what a float target takes
+      linear.blend.enable = false;
+      linear.blend.srgb_write = false;
+      p.source->draw(ctx, fb, linear);
     }
-    discard(ctx, st.color);
-    discard(ctx, st.depth);
-    resolve_into(ctx, st.color, st.image);
-    for (size_t i = 0; i < bits.size(); ++i) bits[i] |= uint32_t(st.image.rgba[i / 3 * 4 + i % 3]) << (8 * byte);
   }
+  discard(ctx, color);
+  discard(ctx, st.depth);
+  std::vector<glm::vec4> out;
+  resolve_into(ctx, color, out);
   st.stats = ctx.stats();
-  std::vector<glm::vec4> out(bits.size() / 3);
-  for (size_t i = 0; i < out.size(); ++i)
-    out[i] = {std::bit_cast<float>(bits[3 * i]), std::bit_cast<float>(bits[3 * i + 1]), std::bit_cast<float>(bits[3 * i + 2]), 1.0f};
+  for (glm::vec4& pixel : out) pixel.a = 1.0f;
   return out;
 }
 

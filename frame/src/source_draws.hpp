@@ -34,10 +34,12 @@ struct SourceDraw {
   shading::ShaderModel binary = shading::ShaderModel::ps_2_0;  ///< the SDK binary the frame's card runs (binaries.hpp)
   int slots = 0;       ///< that binary's counted DX9 slots per pixel
   std::unique_ptr<std::atomic<uint64_t>> pixels = std::make_unique<std::atomic<uint64_t>>(0);
-  std::function<void(rasterizer::Context&, const rasterizer::Framebuffer&)> run;
-  /// The same draw writing byte `byte` (0 lowest) of each rgb channel's float bits as that
-  /// channel's 8-bit value, linear, unblended (Renderer::render_float).
-  std::function<void(rasterizer::Context&, const rasterizer::Framebuffer&, int byte)> run_float_byte;
+  rasterizer::PipelineState state;  ///< the draw's own (DrawTarget::state)
+  /// Draws with `state`, or with another: Renderer::render_float's, unblended and linear, into a
+  /// float target.
+  std::function<void(rasterizer::Context&, const rasterizer::Framebuffer&, const rasterizer::PipelineState&)> draw;
+
+  void run(rasterizer::Context& ctx, const rasterizer::Framebuffer& fb) const { draw(ctx, fb, state); }
 };
 
 /// Where a draw goes: its state, its triangles, its vertex stage (whose attribute list the
@@ -74,32 +76,6 @@ SourceDraw water_draw(const shading::source::WaterCombo& combo, shading::ShaderM
 
 namespace detail {
 
-/// Pixel functor `PS`, its rgb replaced by one byte of their float bits when `byte` >= 0 (alpha
-/// kept: the alpha test still sees the shader's). One functor type for both uses, so that a
-/// combo's draw is compiled once.
-template <class PS>
-struct FloatBytes {
-  static constexpr bool kCanDiscard = PS::kCanDiscard;
-  static constexpr bool kWritesDepth = PS::kWritesDepth;
-  PS ps;
-  int byte = -1;
-
-  template <class In>
-  void operator()(const In& in, rasterizer::PixelOutput& out) const {
-    ps(in, out);
-    if (byte < 0) return;
-    const int shift = 8 * byte;
-    auto to_byte = [shift](const rasterizer::simd::Float& c) {
-      const auto bits = xsimd::bitwise_cast<rasterizer::simd::UInt>(c);
-      return xsimd::to_float(xsimd::bitwise_cast<rasterizer::simd::Int>((bits >> shift) & rasterizer::simd::UInt(255))) *
-             rasterizer::simd::Float(1.0f / 255.0f);
-    };
-    out.color.x = to_byte(out.color.x);
-    out.color.y = to_byte(out.color.y);
-    out.color.z = to_byte(out.color.z);
-  }
-};
-
 /// The model of the binary a card of model `card` runs for `combo` (binaries.hpp). The frame
 /// chooses only combos the card has a binary for: none is a frame bug.
 template <class Combo>
@@ -123,19 +99,10 @@ SourceDraw make_source_draw(PS ps, const DrawTarget& target, std::string family,
   if constexpr (requires { ps.water_fog_to_alpha; }) ps.water_fog_to_alpha = target.water_fog_to_alpha;
   target.vertex->attributes = PS::kAttributes;
   const SourceVertex<PS::kVaryings> vs{target.vertex};
-  const FloatBytes<PS> shader{ps};
-  d.run = [shader, vs, state = target.state, geometry = target.geometry](rasterizer::Context& ctx,
-                                                                        const rasterizer::Framebuffer& fb) {
-    rasterizer::draw(ctx, fb, state, geometry, vs, shader);
-  };
-  d.run_float_byte = [shader, vs, state = target.state, geometry = target.geometry](
-                         rasterizer::Context& ctx, const rasterizer::Framebuffer& fb, int byte) {
-    rasterizer::PipelineState linear = state;
-    linear.blend.srgb_write = false;
-    linear.blend.enable = false;
-    FloatBytes<PS> bytes = shader;
-    bytes.byte = byte;
-    rasterizer::draw(ctx, fb, linear, geometry, vs, bytes);
+  d.state = target.state;
+  d.draw = [ps, vs, geometry = target.geometry](rasterizer::Context& ctx, const rasterizer::Framebuffer& fb,
+                                                const rasterizer::PipelineState& state) {
+    rasterizer::draw(ctx, fb, state, geometry, vs, ps);
   };
   return d;
 }

@@ -44,6 +44,11 @@ DrawPlan plan_draw(const Framebuffer& fb, const PipelineState& state, int varyin
     plan.layout = fb.depth_stencil->layout();
   }
   if (!fb.color && !fb.depth_stencil) throw std::invalid_argument("draw: the framebuffer has no target");
+  plan.float_color = fb.color && fb.color->format() == ColorFormat::rgba32f;
+  if (plan.float_color && state.blend.enable)
+    throw std::invalid_argument("draw: blending into an rgba32f color target is not supported");
+  if (plan.float_color && state.blend.srgb_write)
+    throw std::invalid_argument("draw: an rgba32f color target holds linear values: no sRGB write");
 
   DrawConstants& dc = plan.constants;
   const Viewport& vp = state.viewport;

@@ -46,12 +46,24 @@ SurfaceLayout::SurfaceLayout(int w, int h, int s) : width(w), height(h), samples
   tiles_y = (h + kTileSize - 1) / kTileSize;
 }
 
-ColorTarget::ColorTarget(int width, int height, int samples) : layout_(width, height, samples) {}
+ColorTarget::ColorTarget(int width, int height, int samples, ColorFormat format)
+    : layout_(width, height, samples), format_(format) {
+  if (format == ColorFormat::rgba32f && samples != 1)
+    throw std::invalid_argument("an rgba32f color target has one sample, not " + std::to_string(samples) +
+                                ": multisampled float targets are not supported");
+}
 
 void ColorTarget::allocate_memory() const {
   if (texels_.size() != 0) return;
-  texels_ = SurfaceBuffer<uint32_t>(layout_.element_count());
-  std::fill_n(texels_.data(), texels_.size(), 0u);
+  texels_ = SurfaceBuffer<uint32_t>(layout_.element_count() * words_per_sample());
+  std::fill_n(texels_.data(), texels_.size(), 0u);  // 0.0f in an rgba32f target
+}
+
+void ColorTarget::check_rgba8(const char* what) const {
+  use_.check_kept(what);
+  if (format_ != ColorFormat::rgba8)
+    throw std::logic_error(std::string("an rgba32f color target was ") + what +
+                           " as 8-bit samples: its floats are read with resolve_into");
 }
 
 DepthStencilTarget::DepthStencilTarget(int width, int height, int samples) : layout_(width, height, samples) {}
@@ -91,17 +103,30 @@ detail::CommandQueue& queue_for(Context& ctx, const SurfaceLayout& layout) {
 
 class ClearColorCommand final : public detail::Command {
  public:
-  ClearColorCommand(ColorTarget& target, uint32_t value, const Scissor& region)
-      : target_(target), value_(value), region_(region) {}
+  ClearColorCommand(ColorTarget& target, glm::vec4 color, const Scissor& region)
+      : target_(target), region_(region) {
+    if (target.format() == ColorFormat::rgba8) {
+      plane_words_ = target.layout().elements_per_tile();  // one plane of every sample
+      planes_ = 1;
+      words_[0] = pack_rgba8(color);
+    } else {
+      plane_words_ = kTilePixels;  // a plane per channel, the float's bits as they are
+      planes_ = 4;
+      for (int c = 0; c < 4; ++c) words_[c] = std::bit_cast<uint32_t>(color[c]);
+    }
+  }
   void execute(int tile, detail::ThreadCounters&) override {
     if (!tile_holds(target_.layout(), tile, region_)) return;
-    simd::fill_u32(target_.tile(tile), value_, target_.layout().elements_per_tile());
+    uint32_t* texels = target_.tile(tile);
+    for (int p = 0; p < planes_; ++p) simd::fill_u32(texels + p * plane_words_, words_[p], plane_words_);
   }
 
  private:
   ColorTarget& target_;
-  uint32_t value_;
   Scissor region_;
+  size_t plane_words_ = 0;
+  int planes_ = 0;
+  uint32_t words_[4] = {};
 };
 
 /// Clears depth, and stencil unless it is left out.
@@ -229,13 +254,36 @@ class ResolveCommand final : public detail::Command {
   std::atomic<bool>* below_max_;
 };
 
+/// Copies one tile of an rgba32f target's planes into row-major pixels.
+class FloatResolveCommand final : public detail::Command {
+ public:
+  FloatResolveCommand(const ColorTarget& target, glm::vec4* pixels) : target_(target), pixels_(pixels) {}
+  void execute(int tile, detail::ThreadCounters&) override {
+    const SurfaceLayout& L = target_.layout();
+    const int x0 = (tile % L.tiles_x) * kTileSize, y0 = (tile / L.tiles_x) * kTileSize;
+    const int width = std::min(kTileSize, L.width - x0), height = std::min(kTileSize, L.height - y0);
+    const uint32_t* planes = target_.tile(tile);
+    for (int y = 0; y < height; ++y) {
+      glm::vec4* row = pixels_ + size_t(y0 + y) * size_t(L.width) + x0;
+      for (int x = 0; x < width; ++x) {
+        const int offset = pixel_offset_in_tile(x, y);
+        for (int c = 0; c < 4; ++c) row[x][c] = std::bit_cast<float>(planes[c * kTilePixels + offset]);
+      }
+    }
+  }
+
+ private:
+  const ColorTarget& target_;
+  glm::vec4* pixels_;
+};
+
 }  // namespace
 
 void clear_color(Context& ctx, ColorTarget& target, glm::vec4 color, const Scissor& region) {
   detail::CommandQueue& queue = queue_for(ctx, target.layout());
   // After queue_for, whose flush would forget it.
   ctx.refer(target, region.enable ? Context::Access::use : Context::Access::whole_clear);
-  queue.push(std::make_unique<ClearColorCommand>(target, pack_rgba8(color), region));
+  queue.push(std::make_unique<ClearColorCommand>(target, color, region));
 }
 
 namespace {
@@ -269,6 +317,7 @@ void invalidate(Context& ctx, ColorTarget& target) { record_invalidate(ctx, targ
 void invalidate(Context& ctx, DepthStencilTarget& target) { record_invalidate(ctx, target); }
 
 void load_image(Context& ctx, const Image& image, ColorTarget& target) {
+  if (target.format() != ColorFormat::rgba8) throw std::invalid_argument("load_image: the target is rgba32f, not rgba8");
   if (image.width != target.width() || image.height != target.height()) {
     throw std::invalid_argument("load_image: a " + std::to_string(image.width) + "x" + std::to_string(image.height) +
                                 " image into a " + std::to_string(target.width()) + "x" +
@@ -280,8 +329,17 @@ void load_image(Context& ctx, const Image& image, ColorTarget& target) {
 }
 
 namespace {
+/// Throws std::invalid_argument unless `target` has format `format`; `resolve` names the resolve.
+void check_format(const ColorTarget& target, ColorFormat format, const char* resolve) {
+  if (target.format() == format) return;
+  throw std::invalid_argument(std::string("resolve_into: ") + resolve + " resolves an " +
+                              (format == ColorFormat::rgba8 ? "rgba8" : "rgba32f") + " color target, not an " +
+                              (target.format() == ColorFormat::rgba8 ? "rgba8" : "rgba32f") + " one");
+}
+
 void record_resolve(Context& ctx, const ColorTarget& target, ResolvedPixels pixels, ResolveAlpha alpha, const Scissor& region,
                     std::atomic<bool>* below_max = nullptr) {
+  check_format(target, ColorFormat::rgba8, "an image or texture");
   detail::CommandQueue& queue = queue_for(ctx, target.layout());
   ctx.refer(target, Context::Access::resolve);  // runs another context's pending frame on it first
   queue.push(std::make_unique<ResolveCommand>(target, pixels, alpha, region, below_max));
@@ -317,6 +375,15 @@ void resolve_into(Context& ctx, const ColorTarget& target, Texture& texture, Res
     y1 = std::clamp((std::max(region.y1, region.y0) + kTileSize - 1) / kTileSize * kTileSize, y0, y1);
   }
   TextureAccess::rows_written(texture, y0, y1, alpha == ResolveAlpha::opaque);
+}
+
+void resolve_into(Context& ctx, const ColorTarget& target, std::vector<glm::vec4>& pixels) {
+  check_format(target, ColorFormat::rgba32f, "a float vector");
+  pixels.resize(size_t(target.width()) * size_t(target.height()));
+  detail::CommandQueue& queue = queue_for(ctx, target.layout());
+  ctx.refer(target, Context::Access::resolve);  // runs another context's pending frame on it first
+  queue.push(std::make_unique<FloatResolveCommand>(target, pixels.data()));
+  ctx.flush();
 }
 
 void discard(Context& ctx, ColorTarget& target) { ctx.discard(target); }

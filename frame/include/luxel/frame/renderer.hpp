@@ -220,10 +220,10 @@ class Renderer {
   const rasterizer::Image& image() const;
   /// Renders the frame as HDR_TYPE_FLOAT's float target holds it: per pixel, the linear color the
   /// pixel shader wrote (after the tone-map scale, before any clamp or sRGB encode), alpha 1;
-  /// where nothing was drawn, Scene::background. Row-major, top row first. The 8-bit target
-  /// carries it exactly: four frames, each writing one byte of every channel's float bits
-  /// (linear write, no blending). Only a cube-map capture without MSAA can be rendered so (no
-  /// blended draws, no samples averaged); otherwise throws std::invalid_argument.
+  /// where nothing was drawn, Scene::background. Row-major, top row first. One frame into an
+  /// rgba32f target (rasterizer/framebuffer.hpp), each draw linear and unblended, read back bit
+  /// for bit. Only a cube-map capture without MSAA can be rendered so (no blended draws, no
+  /// samples averaged); otherwise throws std::invalid_argument.
   std::vector<glm::vec4> render_float(rasterizer::Context& ctx);
   /// What the draws of the last frame did, summed (the water's views included).
   const rasterizer::DrawStats& stats() const;

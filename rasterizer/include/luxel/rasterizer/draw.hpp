@@ -33,7 +33,8 @@
 // setup -> bin into tiles -> per tile, in submission order: coverage per sample, early depth /
 // stencil when the pixel functor can neither discard nor write depth (and alpha test is off),
 // pixel functor, late depth/stencil otherwise, blend, write. Output bytes do not depend on the
-// number of threads.
+// number of threads. The same draw writes an rgba8 or an rgba32f color target (framebuffer.hpp),
+// chosen per draw by the target's format: the pixel functor does not know which.
 
 #include "luxel/rasterizer/context.hpp"
 #include "luxel/rasterizer/framebuffer.hpp"
@@ -64,7 +65,7 @@ struct PixelInput {
 };
 
 struct PixelOutput {
-  simd::Float4 color;         ///< linear; clamped to [0, 1] on write (NaN writes 0)
+  simd::Float4 color;         ///< linear; an rgba8 target clamps it to [0, 1] (NaN writes 0), an rgba32f one keeps it
   simd::Float depth;          ///< used only when the functor declares kWritesDepth
   simd::LaneBits discard = 0; ///< lanes to kill (only honoured when kCanDiscard)
 };
@@ -145,8 +146,8 @@ struct DrawStats {
 
 /// Draws into `fb` with `state`: runs the vertex functor and bins the triangles now, and records
 /// the rest for the context's next flush (see Context). Throws std::invalid_argument when the
-/// framebuffer's targets disagree in size or sample count, or the viewport is invalid (see
-/// Viewport). The samples that pass count into the context's active occlusion query, if any; the
+/// framebuffer's targets disagree in size or sample count, the viewport is invalid (see
+/// Viewport), or the state blends or writes sRGB into an rgba32f color target. The samples that pass count into the context's active occlusion query, if any; the
 /// counters go to Context::stats().
 template <VertexFunctor VS, PixelFunctor<VS::kVaryings> PS>
 void draw(Context& ctx, const Framebuffer& fb, const PipelineState& state, const Geometry& geometry,

@@ -1,5 +1,6 @@
 #pragma once
-// Render targets: RGBA8 color and 32-bit float depth + 8-bit stencil, 1/2/4/8 samples, tiled.
+// Render targets: RGBA8 color with 1/2/4/8 samples, RGBA32F color with one, and 32-bit float
+// depth + 8-bit stencil with 1/2/4/8, tiled.
 //
 // Storage is tiled so that everything one thread touches while shading a tile is contiguous:
 // the surface is cut into kTileSize² tiles (row-major); a tile holds its samples plane after
@@ -7,7 +8,8 @@
 // stamp (row-major stamps of simd::kStampWidth x 2 pixels), inside a stamp in lane order
 // (see simd.hpp). Surfaces are padded to whole tiles; padding is never written by draws.
 //
-// Color is packed as one uint32 per sample: r | g << 8 | b << 16 | a << 24.
+// RGBA8 color is packed as one uint32 per sample: r | g << 8 | b << 16 | a << 24. An RGBA32F
+// tile holds four planes of floats, r, g, b and a, each ordered as a sample plane.
 //
 // Tile memory (FastPath::TileMemory), as on tile-based GPUs: a frame (the commands between two
 // flushes, see Context) that clears a target whole before anything else uses it, and discards it
@@ -31,6 +33,7 @@
 #include <cstdint>
 #include <memory>
 #include <utility>
+#include <vector>
 
 namespace luxel::rasterizer {
 
@@ -124,11 +127,27 @@ class SurfaceBuffer {
   size_t count_ = 0;
 };
 
-/// An RGBA8 color target. Movable; destroying or moving one that a context's pending frame
-/// refers to flushes that context first (see Context, "The deferred frame").
+/// What a color target's samples hold.
+enum class ColorFormat : uint8_t {
+  /// 8 bits per channel, each clamped to [0, 1] and rounded (NaN writes 0): the frame and
+  /// post-processing targets. Any sample count, blending, sRGB writes.
+  rgba8,
+  /// A 32-bit float per channel, exactly as the pixel functor or the clear gave it: no clamp
+  /// and no rounding, so values beyond [0, 1], negative ones and NaN come back bit for bit
+  /// (Direct3D 9's D3DFMT_A32B32G32R32F). For linear HDR frames read back as floats, as a cube-map
+  /// capture's. One sample, no blending and no sRGB writes (DX9-generation GPUs blended no
+  /// 32-bit float target either): a target with more samples, or a draw into it with either, throws
+  /// std::invalid_argument. Read it with the float resolve_into below; it has no sample().
+  rgba32f,
+};
+
+/// A color target. Movable; destroying or moving one that a context's pending frame refers to
+/// flushes that context first (see Context, "The deferred frame").
 class ColorTarget {
  public:
-  ColorTarget(int width, int height, int samples = 1);
+  /// Throws std::invalid_argument for a bad size or sample count (SurfaceLayout), or an rgba32f
+  /// target of more than one sample.
+  ColorTarget(int width, int height, int samples = 1, ColorFormat format = ColorFormat::rgba8);
   ColorTarget(ColorTarget&&) = default;
   ColorTarget& operator=(ColorTarget&&) = default;
   ~ColorTarget() { pending_.release(); }
@@ -137,24 +156,26 @@ class ColorTarget {
   int width() const { return layout_.width; }
   int height() const { return layout_.height; }
   int samples() const { return layout_.samples; }
-  /// Tile t's samples, for the commands a flush runs (in tile memory, or in the target's own).
+  ColorFormat format() const { return format_; }
+  /// Tile t's samples as 32-bit words (an rgba32f tile's floats, see the top of this file), for
+  /// the commands a flush runs (in tile memory, or in the target's own).
   uint32_t* tile(int t) { return const_cast<uint32_t*>(std::as_const(*this).tile(t)); }
   const uint32_t* tile(int t) const {
     if (use_.in_tile_memory()) return reinterpret_cast<const uint32_t*>(detail::tile_memory_base + use_.tile_memory_offset);
-    return texels_.data() + t * layout_.elements_per_tile();  // allocated by the flush (allocate_memory)
+    return texels_.data() + t * tile_words();  // allocated by the flush (allocate_memory)
   }
   /// Bytes of one tile's samples.
-  size_t tile_bytes() const { return layout_.elements_per_tile() * sizeof(uint32_t); }
-  /// Read and written after a flush; std::logic_error after discard() until the next whole clear.
-  /// The first access may allocate the target's memory (allocate_memory): not from two threads
-  /// at once then.
+  size_t tile_bytes() const { return tile_words() * sizeof(uint32_t); }
+  /// An rgba8 target's samples, read and written after a flush; std::logic_error after discard()
+  /// until the next whole clear, or for an rgba32f target. The first access may allocate the
+  /// target's memory (allocate_memory): not from two threads at once then.
   uint32_t sample(int x, int y, int s) const {
-    use_.check_kept("read");
+    check_rgba8("read");
     allocate_memory();
     return texels_[layout_.index(x, y, s)];
   }
   void set_sample(int x, int y, int s, uint32_t rgba) {
-    use_.check_kept("written");
+    check_rgba8("written");
     allocate_memory();
     texels_[layout_.index(x, y, s)] = rgba;
   }
@@ -165,8 +186,15 @@ class ColorTarget {
  private:
   friend class Context;
   friend struct detail::FrameUseAccess;
+  /// Words of one sample: an rgba32f pixel holds four.
+  int words_per_sample() const { return format_ == ColorFormat::rgba32f ? 4 : 1; }
+  size_t tile_words() const { return layout_.elements_per_tile() * words_per_sample(); }
+  /// Throws std::logic_error unless sample() may access the samples: `what` names the access.
+  void check_rgba8(const char* what) const;
+
   detail::PendingUse pending_;  // first: see PendingUse
   SurfaceLayout layout_;
+  ColorFormat format_ = ColorFormat::rgba8;
   mutable SurfaceBuffer<uint32_t> texels_;
   mutable detail::FrameUse use_;  // kept by the context whose frame uses the target
 };
@@ -230,16 +258,18 @@ struct Framebuffer {
   DepthStencilTarget* depth_stencil = nullptr;
 };
 
-/// Packs a color with round-to-nearest after clamping to [0, 1] (NaN becomes 0).
+/// Packs a color with round-to-nearest after clamping to [0, 1] (NaN becomes 0), as an rgba8
+/// target holds it.
 uint32_t pack_rgba8(glm::vec4 color);
 /// Inline: vertex functors unpack per-vertex colors with it.
 inline glm::vec4 unpack_rgba8(uint32_t rgba) {
   return glm::vec4(rgba & 255, (rgba >> 8) & 255, (rgba >> 16) & 255, rgba >> 24) / 255.0f;
 }
 
-/// Records a clear of every sample (runs at the next flush, like draws). With an enabled
-/// `region` (pixels [x0, x1) x [y0, y1)), only the tiles that hold some of it are cleared: what a
-/// view scissored to the region needs, the rest of the target left as it was.
+/// Records a clear of every sample (runs at the next flush, like draws) to `color`, packed as
+/// pack_rgba8 does, or as it is into an rgba32f target. With an enabled `region` (pixels
+/// [x0, x1) x [y0, y1)), only the tiles that hold some of it are cleared: what a view scissored
+/// to the region needs, the rest of the target left as it was.
 void clear_color(Context& ctx, ColorTarget& target, glm::vec4 color, const Scissor& region = {});
 void clear_depth_stencil(Context& ctx, DepthStencilTarget& target, float depth, uint8_t stencil, const Scissor& region = {});
 /// Depth alone (D3DCLEAR_ZBUFFER without D3DCLEAR_STENCIL): stencil keeps its values.
@@ -268,7 +298,7 @@ void discard(Context& ctx, DepthStencilTarget& target);
 /// Loads an image into every sample of a target of the same size (the reverse of a one-sample
 /// resolve): how a finished frame held as an Image comes back as a target that post-processing
 /// passes draw onto. Recorded like a clear; the image must stay alive until the next flush.
-/// Throws std::invalid_argument when the sizes differ.
+/// Throws std::invalid_argument when the sizes differ or the target is rgba32f.
 void load_image(Context& ctx, const Image& image, ColorTarget& target);
 
 /// What a resolve writes to the image's alpha.
@@ -277,8 +307,10 @@ enum class ResolveAlpha {
   opaque,   ///< 255: an image to be shown, whose target's alpha held the shaders' own values
 };
 
-/// Box-filter resolve: each channel of each pixel is the rounded mean of its samples' 8-bit
-/// values (a plain copy out of the tiled layout for one sample). Flushes the context.
+/// Box-filter resolve of an rgba8 target: each channel of each pixel is the rounded mean of its
+/// samples' 8-bit values (a plain copy out of the tiled layout for one sample). Flushes the
+/// context. The resolves into an image or a texture throw std::invalid_argument for an rgba32f
+/// target, which has its own below.
 Image resolve(Context& ctx, const ColorTarget& target, ResolveAlpha alpha = ResolveAlpha::samples);
 /// The same into an existing image (reallocated only when its size differs). With an enabled
 /// `region`, only the tiles that hold some of it are resolved; the image keeps its other pixels.
@@ -290,5 +322,9 @@ void resolve_into(Context& ctx, const ColorTarget& target, Image& image, Resolve
 /// opaque() follows. Throws std::invalid_argument for any other texture.
 void resolve_into(Context& ctx, const ColorTarget& target, Texture& texture, ResolveAlpha alpha = ResolveAlpha::samples,
                   const Scissor& region = {});
+/// An rgba32f target's pixels as floats, bit for bit, into `pixels` (resized to width x height,
+/// row-major, top row first). A resolve like the others: it may follow discard() in the frame,
+/// and flushes the context. Throws std::invalid_argument for an rgba8 target.
+void resolve_into(Context& ctx, const ColorTarget& target, std::vector<glm::vec4>& pixels);
 
 }  // namespace luxel::rasterizer

@@ -23,7 +23,8 @@ struct DrawPlan {
   SurfaceLayout layout;
   SampleOffset sample_offsets[kMaxSamples];
   bool depth_test = false, depth_write = false, stencil = false, alpha_test = false;
-  uint32_t color_write_mask = 0;  ///< RGBA8 bits to write
+  bool float_color = false;       ///< the color target is rgba32f (one sample, no blending)
+  uint32_t color_write_mask = 0;  ///< RGBA8 bits to write (of an rgba32f target: its channels')
 };
 
 DrawPlan plan_draw(const Framebuffer& fb, const PipelineState& state, int varyings, FastPaths fast_paths);
@@ -101,6 +102,8 @@ class TileRasterizer {
     simple_depth_ = depth_ && !plan.stencil;
     if (!color_ || !plan.color_write_mask) {
       color_write_ = ColorWrite::None;
+    } else if (plan.float_color) {
+      color_write_ = ColorWrite::Float;
     } else if (state_.blend.enable || plan.color_write_mask != 0xffffffffu) {
       color_write_ = ColorWrite::Merged;
     } else {
@@ -202,6 +205,9 @@ class TileRasterizer {
                          const Float* shader_depth);
   /// Blending and write masks (plain writes are shade_stamp's).
   void write_color(int stamp, int s, const Int& coverage, const simd::Float4& color, const Int& packed);
+  /// An rgba32f target's write: the color as the functor left it, into each written channel's
+  /// plane (one sample: plan_draw refuses blending, the target more samples).
+  void write_float(int stamp, const Int& coverage, const simd::Float4& color);
   template <CompareFunc kFunc>
   LUXEL_INLINE Int early_depth(StampDepth stamp_z, int stamp, Int* coverage);
 
@@ -219,11 +225,14 @@ class TileRasterizer {
   bool depth_test_, depth_write_;
   CompareFunc depth_func_;
   float min_depth_, max_depth_;
+  /// The 8-bit writes first: shade_stamp tells them from the other two with the one test that
+  /// None needs, so that float targets add nothing to an 8-bit draw's stamps.
   enum class ColorWrite {
-    None,       ///< no color target or nothing written
     Plain,      ///< no blending, all channels
     PlainSrgb,  ///< the same, sRGB-encoded
-    Merged      ///< blending or a partial write mask (write_color)
+    Merged,     ///< blending or a partial write mask (write_color)
+    None,       ///< no color target or nothing written
+    Float,      ///< an rgba32f target (write_float)
   };
   ColorWrite color_write_;
   int tile_x_, tile_y_;
@@ -547,6 +556,15 @@ void TileRasterizer<PS, N, kPath, S>::write_color(int stamp, int s, const Int& c
 }
 
 template <class PS, int N, DepthPath kPath, int S>
+void TileRasterizer<PS, N, kPath, S>::write_float(int stamp, const Int& coverage, const simd::Float4& color) {
+  float* dst = reinterpret_cast<float*>(color_) + stamp * simd::kLanes;
+  const Float* channels[4] = {&color.x, &color.y, &color.z, &color.w};
+  for (int c = 0; c < 4; ++c, dst += kTilePixels)
+    if ((plan_.color_write_mask >> (8 * c)) & 0xffu)
+      simd::select(coverage, *channels[c], Float::load_aligned(dst)).store_aligned(dst);
+}
+
+template <class PS, int N, DepthPath kPath, int S>
 void TileRasterizer<PS, N, kPath, S>::interpolate(const TriangleSetup& t, const Float& cx, const Float& cy,
                                                    PixelInput<N>& in) {
   if (t.flat()) {
@@ -645,7 +663,10 @@ void TileRasterizer<PS, N, kPath, S>::shade_stamp(const TriangleSetup& t, int px
 
   if (count_samples_)
     for (int s = 0; s < S; ++s) samples_passed += std::popcount(simd::sign_bits(coverage[s]));
-  if (color_write_ == ColorWrite::None) return;
+  if (color_write_ >= ColorWrite::None) {  // see ColorWrite
+    if (color_write_ == ColorWrite::Float) write_float(stamp, coverage[0], out.color);
+    return;
+  }
   if (color_write_ != ColorWrite::Merged) {
     // No blending, all channels: packing clamps by itself.
     const Int packed = color_write_ == ColorWrite::PlainSrgb ? pack_srgb8(out.color) : pack_unorm8(out.color);
