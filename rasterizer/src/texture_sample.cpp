@@ -31,9 +31,20 @@ bool reads_one_level(const Sampler& sampler) { return sampler.mip == MipFilter::
 
 bool hardware(const Sampler& sampler) { return sampler.rules == SamplingRules::hardware; }
 
+/// Whether a one-level read gives the same bits by either rule set: a point read weighs nothing
+/// and blends nothing, and only a border color is treated differently. The ideal rules' path then
+/// serves it: it decodes an sRGB texel from the gathered word, where the hardware rules' decodes
+/// the byte it would have filtered.
+bool point_without_border(const Texture& texture, const Sampler& sampler) {
+  const bool border = texture.kind() != TextureKind::Cube &&
+                      (sampler.u == Address::Border || sampler.v == Address::Border ||
+                       (texture.kind() == TextureKind::Volume && sampler.w == Address::Border));
+  return sampler.mag == Filter::Point && !border;
+}
+
 Float4 sample_one_level(const Texture& texture, const Sampler& sampler, const TexCoord& coord) {
-  return hardware(sampler) ? Sampling<HardwareRules>::one_level(texture, sampler, coord)
-                           : Sampling<IdealRules>::one_level(texture, sampler, coord);
+  return hardware(sampler) && !point_without_border(texture, sampler) ? Sampling<HardwareRules>::one_level(texture, sampler, coord)
+                                                                      : Sampling<IdealRules>::one_level(texture, sampler, coord);
 }
 
 /// sample() of a sampler with a LOD to compute: out of line, so that the one-level reads of
@@ -110,8 +121,8 @@ void sample_taps(const Texture& texture, const Sampler& sampler, std::span<const
     throw std::invalid_argument("sample_taps: " + std::to_string(coords.size()) + " coordinates for " +
                                 std::to_string(out.size()) + " results");
   if (texture.kind() == TextureKind::Texture2D && reads_one_level(sampler)) {
-    return hardware(sampler) ? Sampling<HardwareRules>::taps(texture, sampler, coords, out)
-                             : Sampling<IdealRules>::taps(texture, sampler, coords, out);
+    return hardware(sampler) && !point_without_border(texture, sampler) ? Sampling<HardwareRules>::taps(texture, sampler, coords, out)
+                                                                        : Sampling<IdealRules>::taps(texture, sampler, coords, out);
   }
   for (size_t k = 0; k < coords.size(); ++k) out[k] = sample(texture, sampler, coords[k]);
 }
