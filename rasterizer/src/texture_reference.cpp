@@ -15,6 +15,7 @@
 #include <glm/geometric.hpp>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdint>
 #include <cstring>
@@ -80,6 +81,28 @@ std::optional<int> address(int i, int n, Address mode) {
       return i;
   }
   return std::nullopt;
+}
+
+/// The 2x2 footprint of a cube read whose first texel is (i, j) on a face n texels wide: t[b][a] is
+/// texel (i + a, j + b) as `texel(i, j)` reads it (possibly one texel past an edge); at a cube
+/// corner one texel lies on no face: it is `mean` of the other three.
+template <class Texel, class Mean>
+std::array<std::array<dvec4, 2>, 2> cube_footprint(int n, int i, int j, const Texel& texel, const Mean& mean) {
+  std::array<std::array<dvec4, 2>, 2> t;
+  bool corner[2][2];
+  for (int b = 0; b < 2; ++b) {
+    for (int a = 0; a < 2; ++a) {
+      const bool off_i = i + a < 0 || i + a >= n, off_j = j + b < 0 || j + b >= n;
+      corner[b][a] = off_i && off_j;
+      if (!corner[b][a]) t[b][a] = texel(i + a, j + b);
+    }
+  }
+  for (int b = 0; b < 2; ++b) {
+    for (int a = 0; a < 2; ++a) {
+      if (corner[b][a]) t[b][a] = mean(t[b][1 - a], t[1 - b][a], t[1 - b][1 - a]);
+    }
+  }
+  return t;
 }
 
 struct Reference {
@@ -179,22 +202,9 @@ struct Reference {
     const float x = fc.u * size - 0.5f, y = fc.v * size - 0.5f;
     const float fx = std::floor(x), fy = std::floor(y);
     const int i = static_cast<int>(fx), j = static_cast<int>(fy);
-    // The footprint: t[b][a] is texel (i + a, j + b).
-    dvec4 t[2][2];
-    bool corner[2][2];
-    for (int b = 0; b < 2; ++b) {
-      for (int a = 0; a < 2; ++a) {
-        const bool off_i = i + a < 0 || i + a >= n, off_j = j + b < 0 || j + b >= n;
-        corner[b][a] = off_i && off_j;
-        if (!corner[b][a]) t[b][a] = cube_texel(level, face, i + a, j + b);
-      }
-    }
-    // At a cube corner one texel lies on no face: it is the mean of the other three.
-    for (int b = 0; b < 2; ++b) {
-      for (int a = 0; a < 2; ++a) {
-        if (corner[b][a]) t[b][a] = (t[b][1 - a] + t[1 - b][a] + t[1 - b][1 - a]) / 3.0;
-      }
-    }
+    const auto t = cube_footprint(
+        n, i, j, [&](int ti, int tj) { return cube_texel(level, face, ti, tj); },
+        [](const dvec4& a, const dvec4& b, const dvec4& d) { return (a + b + d) / 3.0; });
     return lerp(lerp(t[0][0], t[0][1], x - fx), lerp(t[1][0], t[1][1], x - fx), y - fy);
   }
 
@@ -309,20 +319,9 @@ struct HardwareReference {
     int i, j, wx, wy;
     footprint(fc.u, size, i, wx);
     footprint(fc.v, size, j, wy);
-    dvec4 t[2][2];
-    bool corner[2][2];
-    for (int b = 0; b < 2; ++b) {
-      for (int a = 0; a < 2; ++a) {
-        const bool off_i = i + a < 0 || i + a >= n, off_j = j + b < 0 || j + b >= n;
-        corner[b][a] = off_i && off_j;
-        if (!corner[b][a]) t[b][a] = cube_texel(level, face, i + a, j + b);
-      }
-    }
-    for (int b = 0; b < 2; ++b) {
-      for (int a = 0; a < 2; ++a) {
-        if (corner[b][a]) t[b][a] = corner_mean(t[b][1 - a], t[1 - b][a], t[1 - b][1 - a]);
-      }
-    }
+    const auto t = cube_footprint(
+        n, i, j, [&](int ti, int tj) { return cube_texel(level, face, ti, tj); },
+        [&](const dvec4& a, const dvec4& b, const dvec4& d) { return corner_mean(a, b, d); });
     return blend(blend(t[0][0], t[0][1], wx), blend(t[1][0], t[1][1], wx), wy);
   }
 
