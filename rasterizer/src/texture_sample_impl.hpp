@@ -2,17 +2,16 @@
 // Private to the texture module: the SIMD sampling path, as templates over the sampling rules
 // (texture.hpp). Each rule set is compiled in its own translation unit (texture_sample.cpp: the
 // hardware rules and the public entry points; texture_sample_ideal.cpp: the ideal rules), so the
-// two compile in parallel.
-//
-// One stamp of simd::kLanes pixels per call.
+// two compile in parallel. One stamp of simd::kLanes pixels per call.
 //
 // Per call: project cube directions / reduce coordinates (once), turn the LOD into one or two
 // levels per lane, then per level: texel positions and addressing in integer lanes, one gather per
 // footprint texel (both words of an 8-byte one: simd::gather_pairs; or, in the one-level reads of
-// the post passes, windows along the stamp's rows: simd::gather_stamp_rows), decode, lerp. Filtering
-// happens in each format's "raw" domain (UNORM channels as 0..2^n-1 integers in float, sRGB
-// already decoded to linear) and the UNORM scale is applied once at the end, rounded like a
-// division so that a point sample of c is exactly c / (2^n - 1).
+// the post passes, windows along the stamp's rows: simd::gather_stamp_rows), decode, blend.
+// Filtering happens in each format's "raw" domain (UNORM channels as 0..2^n-1 integers in float;
+// sRGB decoded to linear under the ideal rules, the encoded bytes under the hardware rules) and
+// the UNORM scale (or the hardware rules' sRGB decode) is applied once at the end, the scale
+// rounded like a division so that a point sample of c is exactly c / (2^n - 1).
 //
 // A texture whose alpha is at its maximum everywhere (Texture::opaque) is read as Opaque<Format>:
 // the color channels alone are filtered, and alpha is 1 (the same result, a quarter less work).
@@ -35,12 +34,10 @@
 #include <span>
 #include <stdexcept>
 #include <string>
-
 #include <tuple>
 #include <type_traits>
 
 namespace luxel::rasterizer::texture_sampling {
-
 
 using simd::Float;
 using simd::Float4;
