@@ -45,7 +45,7 @@
 // - The border color is returned as given: linear, not quantized to the texture's format, not
 //   sRGB-decoded, all four channels even for R32F.
 //
-// Formats (decoding happens before filtering)
+// Formats (decoding happens before filtering, but for an sRGB read by the hardware rules)
 // - UNORM channels (RGBA8, RGBA16) decode to c / (2^n - 1), correctly rounded.
 // - RGBA8_sRGB decodes R, G, B with the exact sRGB curve (IEC 61966-2-1); alpha is linear. The
 //   ideal rules decode before filtering, as D3D10 requires, the hardware rules after. An RGBA8
@@ -76,17 +76,20 @@
 // Sampling rules (docs/fidelity.md#texture-sampling gives the sources)
 // - SamplingRules::hardware, what the DX9-era texture units luxel reproduces did:
 //   - one LOD per 2x2 quad: sample() gives every pixel of a quad its top-left pixel's LOD (from
-//     the quad's coarse derivatives; for a cube map that pixel's face), plus the pixel's own bias;
-//   - the LOD, after bias and before the clamps, truncated to 8 fractional bits: floor(256 lod) /
-//     256, so the trilinear blend weight has 8 bits;
-//   - bilinear weights truncated to 8 bits: w = floor(256 f) / 256 for the footprint's fraction f
-//     (D3D11's 8 bits of sub-texel precision);
-//   - 8-bit UNORM texels filtered in fixed point: every blend of two values a, b (texels, rows,
-//     levels) is a + floor(w (b - a)) for the 8-bit weight w, an integer again (llvmpipe's rule for
-//     8-bit formats); the filtered byte is then divided by 255. A texel past a cube corner is the
-//     floor of the other three's mean. An sRGB read filters the encoded bytes so and decodes the
-//     filtered byte (converted after filtering, as DX9-era parts did; D3D10 asks for before).
-//     A border color is rounded to the format's 8-bit steps (sRGB-encoded for an sRGB read).
+//     the quad's coarse derivatives; for a cube map that pixel's face), plus the pixel's own bias
+//     (sample_level and sample_grad take the LOD or derivatives they are given, per pixel);
+//   - the LOD, after the biases and before the clamps, rounded to 8 fractional bits (to nearest,
+//     ties to even), so the trilinear blend weight has 8 bits;
+//   - texel positions in 16.8 fixed point: u W - 0.5 rounded to a multiple of 1/256 (to nearest,
+//     ties to even); its integer part names the footprint's first texel, its 8 fractional bits
+//     the second texel's weight w / 256 (D3D11's 8 bits of sub-texel precision);
+//   - 8-bit UNORM texels filtered in fixed point: every blend of two values a, b (two texels of a
+//     row, two rows, two slices, two levels) is a + floor(w (b - a) / 256 + 1/2), an integer again
+//     (llvmpipe's rounding form for 8-bit formats); the filtered byte is then divided by 255. A
+//     texel past a cube corner is the mean of the other three rounded the same way. An sRGB read
+//     filters the encoded bytes so and decodes the filtered byte (after filtering, which D3D9
+//     allowed; D3D10 asks for before). A border color is rounded to the format's 8-bit steps
+//     (sRGB-encoded for an sRGB read).
 //   - other formats (16-bit UNORM, half and single floats) blend in float32 with those weights.
 // - SamplingRules::ideal: LOD per pixel (from the quad's coarse derivatives: the same within a
 //   2D quad, per pixel for cube maps), unquantized LOD and weights, filtering in float32 (8-bit
