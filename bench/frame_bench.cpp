@@ -32,6 +32,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <functional>
+#include <map>
 #include <iostream>
 #include <memory>
 #include <optional>
@@ -68,6 +69,11 @@ int main(int argc, char** argv) {
   app.add_flag("--print-frames", print_frames, "Print every frame time to stderr");
   app.add_option("--model", model, "Shader model of the Source frame (demo, courtyard): ps_2_0, ps_2_b or ps_3_0")
       ->check(CLI::IsMember({"ps_2_0", "ps_2_b", "ps_3_0"}));
+  const std::map<std::string, luxel::rasterizer::SamplingRules> sampling{{"hardware", luxel::rasterizer::SamplingRules::hardware},
+                                                                        {"ideal", luxel::rasterizer::SamplingRules::ideal}};
+  app.add_option("--sampling", settings.sampling,
+                 "How the Source frames' 3D passes filter textures: hardware (the default) or ideal (rasterizer/texture.hpp)")
+      ->transform(CLI::CheckedTransformer(sampling, CLI::ignore_case));
   app.add_flag("--passes", passes,
                "Then time each pass of the built-in scenes' frames (stderr: median ms per pass, each pass run to its end "
                "before the next and without tile memory, so their sum exceeds the frame's time)");
