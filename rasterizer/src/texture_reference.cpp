@@ -83,6 +83,9 @@ std::optional<int> address(int i, int n, Address mode) {
   return std::nullopt;
 }
 
+/// The texel a point read at face coordinate c in [0, 1] finds along a face n texels wide.
+int cube_point_index(float c, int n) { return std::min(static_cast<int>(std::floor(c * static_cast<float>(n))), n - 1); }
+
 /// The 2x2 footprint of a cube read whose first texel is (i, j) on a face n texels wide: t[b][a] is
 /// texel (i + a, j + b) as `texel(i, j)` reads it (possibly one texel past an edge); at a cube
 /// corner one texel lies on no face: it is `mean` of the other three.
@@ -195,9 +198,7 @@ struct Reference {
     const int n = texture.width(level);
     const float size = static_cast<float>(n);
     if (filter == Filter::Point) {
-      const int i = std::min(static_cast<int>(std::floor(fc.u * size)), n - 1);
-      const int j = std::min(static_cast<int>(std::floor(fc.v * size)), n - 1);
-      return texel(level, face, i, j, 0);
+      return texel(level, face, cube_point_index(fc.u, n), cube_point_index(fc.v, n), 0);
     }
     const float x = fc.u * size - 0.5f, y = fc.v * size - 0.5f;
     const float fx = std::floor(x), fy = std::floor(y);
@@ -312,9 +313,7 @@ struct HardwareReference {
     const int n = texture.width(level);
     const float size = static_cast<float>(n);
     if (filter == Filter::Point) {
-      const int i = std::min(static_cast<int>(std::floor(fc.u * size)), n - 1);
-      const int j = std::min(static_cast<int>(std::floor(fc.v * size)), n - 1);
-      return raw_texel(level, face, i, j, 0);
+      return raw_texel(level, face, cube_point_index(fc.u, n), cube_point_index(fc.v, n), 0);
     }
     int i, j, wx, wy;
     footprint(fc.u, size, i, wx);

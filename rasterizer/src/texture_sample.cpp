@@ -36,10 +36,7 @@ bool hardware(const Sampler& sampler) { return sampler.rules == SamplingRules::h
 /// serves it: it decodes an sRGB texel from the gathered word, where the hardware rules' decodes
 /// the byte it would have filtered.
 bool point_without_border(const Texture& texture, const Sampler& sampler) {
-  const bool border = texture.kind() != TextureKind::Cube &&
-                      (sampler.u == Address::Border || sampler.v == Address::Border ||
-                       (texture.kind() == TextureKind::Volume && sampler.w == Address::Border));
-  return sampler.mag == Filter::Point && !border;
+  return sampler.mag == Filter::Point && !texture_sampling::reads_border(texture, sampler);
 }
 
 Float4 sample_one_level(const Texture& texture, const Sampler& sampler, const TexCoord& coord) {

@@ -909,13 +909,17 @@ using SampleFn = Float4 (*)(const Texture&, const Sampler&, const TexCoord&, con
 using OneLevelFn = Float4 (*)(const Texture&, const Sampler&, const TexCoord&);
 using TapsFn = void (*)(const Texture&, const Sampler&, std::span<const TexCoord>, std::span<Float4>);
 
+/// Whether a footprint of `sampler` on `texture` can read the border color: Address::Border on an
+/// axis the texture has (cube maps ignore address modes).
+inline bool reads_border(const Texture& texture, const Sampler& sampler) {
+  if (texture.kind() == TextureKind::Cube) return false;
+  return sampler.u == Address::Border || sampler.v == Address::Border ||
+         (texture.kind() == TextureKind::Volume && sampler.w == Address::Border);
+}
+
 /// Whether `sampler` reads `texture` as Opaque: no border color can enter a footprint.
 inline bool reads_opaque(const Texture& texture, const Sampler& sampler) {
-  if (!texture.opaque()) return false;
-  if (texture.kind() == TextureKind::Cube) return true;  // cube maps ignore address modes
-  const bool border = sampler.u == Address::Border || sampler.v == Address::Border ||
-                      (texture.kind() == TextureKind::Volume && sampler.w == Address::Border);
-  return !border;
+  return texture.opaque() && !reads_border(texture, sampler);
 }
 
 /// The sampling functions of one rule set, dispatched on the texture and sampler.
