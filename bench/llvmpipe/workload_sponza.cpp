@@ -242,8 +242,9 @@ class Sponza final : public Workload {
 }  // namespace
 
 std::unique_ptr<Workload> make_sponza(const std::string& path, const bench::SponzaView& view, int width, int height) {
-  if (path.empty()) throw Skipped("no glTF file (--sponza PATH)");
-  if (!std::filesystem::is_regular_file(path)) throw Skipped("no file " + path);
+  // The same reasons as luxel_frame_bench's, so that the two sides' skip lines read alike.
+  if (path.empty()) throw Skipped("no glTF file given (--sponza PATH)");
+  if (!std::filesystem::is_regular_file(path)) throw Skipped("glTF file not found: " + path);
   const scenes::Scene scene = bench::load_sponza_scene(path);
   return std::make_unique<Sponza>(scene, view, width, height);
 }
