@@ -6,6 +6,7 @@
 
 #include "workload_sponza.hpp"
 
+#include "clip_space.hpp"
 #include "gl_context.hpp"
 
 #include "luxel/frame/renderer.hpp"
@@ -137,7 +138,7 @@ class Sponza final : public Workload {
   Sponza(const scenes::Scene& scene, const bench::SponzaView& view, int width, int height) {
     program_ = build_program(kVertexShader, kFragmentShader);
     glUseProgram(program_);
-    const glm::mat4 view_projection = frame::view_projection(bench::sponza_camera(view), width, height);
+    const glm::mat4 view_projection = opengl_clip(frame::view_projection(bench::sponza_camera(view), width, height));
     glUniformMatrix4fv(glGetUniformLocation(program_, "viewProjection"), 1, GL_FALSE, glm::value_ptr(view_projection));
     const bench::SponzaLighting lighting = bench::sponza_lighting();
     glUniform3fv(glGetUniformLocation(program_, "ambientCube"), 6, glm::value_ptr(lighting.cube[0]));
