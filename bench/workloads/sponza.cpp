@@ -48,7 +48,6 @@ constexpr std::array<glm::vec3, 6> kAmbientCube = {
     glm::vec3(0.10f, 0.09f, 0.08f), glm::vec3(0.25f, 0.25f, 0.25f), glm::vec3(0.22f, 0.22f, 0.24f)};
 constexpr std::array<glm::vec3, 2> kLightPosition = {glm::vec3(0.0f, 8.0f, 0.0f), glm::vec3(8.0f, 3.0f, 1.0f)};
 constexpr std::array<glm::vec3, 2> kLightColor = {glm::vec3(6.0f, 5.5f, 5.0f), glm::vec3(2.0f, 2.5f, 4.0f)};
-constexpr glm::vec4 kClear(0.45f, 0.55f, 0.70f, 1.0f);
 // ----------------------------------------------------------------------------------------------
 
 constexpr double kInches = double(scenes::kInchesPerMeter);
@@ -56,15 +55,10 @@ constexpr double kInches = double(scenes::kInchesPerMeter);
 /// A glTF point (meters, +Y up) in the scene's space (inches, +Z up), as the importer maps it.
 glm::vec3 to_source(glm::vec3 g) { return glm::vec3(glm::dvec3(g.x, -g.z, g.y) * kInches); }
 
-/// The lighting in the scene's axes and units (sponza.hpp says why this is the peer's).
-struct Lighting {
-  /// Source's faces +X, -X, +Y, -Y, +Z, -Z.
-  std::array<glm::vec3, 6> cube;
-  std::array<glm::vec3, 2> position, color;
-};
+}  // namespace
 
-Lighting source_lighting() {
-  Lighting l;
+SponzaLighting sponza_lighting() {
+  SponzaLighting l;
   l.cube = {kAmbientCube[0], kAmbientCube[1], kAmbientCube[5], kAmbientCube[4], kAmbientCube[2], kAmbientCube[3]};
   for (int i = 0; i < 2; ++i) {
     l.position[i] = to_source(kLightPosition[i]);
@@ -72,6 +66,33 @@ Lighting source_lighting() {
   }
   return l;
 }
+
+scenes::Camera sponza_camera(const SponzaView& view) {
+  scenes::Camera camera;
+  camera.position = to_source(view.eye);
+  camera.target = to_source(view.target);
+  camera.up = {0.0f, 0.0f, 1.0f};  // glTF's +Y
+  camera.vertical_fov = kFovYDegrees * std::numbers::pi_v<float> / 180.0f;
+  camera.near_plane = float(kNear * kInches);
+  camera.far_plane = float(kFar * kInches);
+  return camera;
+}
+
+/// The peer decodes with OpenImageIO's defaults, under which its PNG reader premultiplies color
+/// by alpha, truncating (c a / 255; the same bytes as OpenImageIO's on every courtyard texture),
+/// where luxel's importer keeps unassociated alpha: W3 premultiplies the same way.
+scenes::Texture sponza_texture(const scenes::Texture& texture) {
+  scenes::Texture w3 = texture;
+  for (scenes::PixelImage& face : w3.faces)
+    for (size_t i = 0; i + 3 < face.rgba8.size(); i += 4)
+      for (size_t c = 0; c < 3; ++c) face.rgba8[i + c] = uint8_t(unsigned(face.rgba8[i + c]) * face.rgba8[i + 3] / 255u);
+  w3.color_space = scenes::ColorSpace::linear;
+  w3.mipmaps = true;
+  w3.min = w3.mag = scenes::Filter::linear;
+  return w3;
+}
+
+namespace {
 
 /// World position and u, then the normal and v: (px, py, pz, u), (nx, ny, nz, v).
 struct W3Vertex {
@@ -97,7 +118,7 @@ struct W3Pixel {
   const rasterizer::Texture* texture;
   const rasterizer::Sampler* sampler;
   glm::vec4 factor;  ///< baseColorFactor
-  Lighting light;
+  SponzaLighting light;
 
   void operator()(const rasterizer::PixelInput<2>& in, rasterizer::PixelOutput& out) const {
     const rasterizer::simd::Float4& a = in.varyings[0];
@@ -150,20 +171,8 @@ rasterizer::Geometry geometry_of(const scenes::Mesh& m) {
 }
 
 /// The texture as the peer uploads it: RGBA8 without sRGB decoding, a full mip chain, always
-/// trilinear; only the wrap modes come from the glTF sampler. The peer decodes with OpenImageIO's
-/// defaults, under which its PNG reader premultiplies color by alpha, truncating (c a / 255; the
-/// same bytes as OpenImageIO's on every courtyard texture), where luxel's importer keeps
-/// unassociated alpha: W3 premultiplies the same way.
-frame::GpuTexture upload_as_w3(const scenes::Texture& t) {
-  scenes::Texture w3 = t;
-  for (scenes::PixelImage& face : w3.faces)
-    for (size_t i = 0; i + 3 < face.rgba8.size(); i += 4)
-      for (size_t c = 0; c < 3; ++c) face.rgba8[i + c] = uint8_t(unsigned(face.rgba8[i + c]) * face.rgba8[i + 3] / 255u);
-  w3.color_space = scenes::ColorSpace::linear;
-  w3.mipmaps = true;
-  w3.min = w3.mag = scenes::Filter::linear;
-  return frame::upload(w3);
-}
+/// trilinear; only the wrap modes come from the glTF sampler.
+frame::GpuTexture upload_as_w3(const scenes::Texture& t) { return frame::upload(sponza_texture(t)); }
 
 }  // namespace
 
@@ -196,18 +205,11 @@ SponzaFrame::SponzaFrame(const scenes::Scene& scene, const SponzaView& view, int
     : state_(std::make_unique<State>(width, height, checked_samples(width, height, samples))) {
   scenes::validate(scene);
   State& st = *state_;
-  scenes::Camera camera;
-  camera.position = to_source(view.eye);
-  camera.target = to_source(view.target);
-  camera.up = {0.0f, 0.0f, 1.0f};  // glTF's +Y
-  camera.vertical_fov = kFovYDegrees * std::numbers::pi_v<float> / 180.0f;
-  camera.near_plane = float(kNear * kInches);
-  camera.far_plane = float(kFar * kInches);
-  const glm::mat4 view_projection = frame::view_projection(camera, width, height);
+  const glm::mat4 view_projection = frame::view_projection(sponza_camera(view), width, height);
 
   st.textures.reserve(scene.textures.size());
   for (const scenes::Texture& t : scene.textures) st.textures.push_back(upload_as_w3(t));
-  const Lighting lighting = source_lighting();
+  const SponzaLighting lighting = sponza_lighting();
   const scenes::Material untextured;  // white, factor 1, single-sided: the peer's default material
   for (const scenes::Mesh& mesh : scene.meshes) {
     const scenes::Material& m = mesh.material >= 0 ? scene.materials[mesh.material] : untextured;
@@ -234,7 +236,7 @@ void SponzaFrame::render(rasterizer::Context& ctx) {
   State& st = *state_;
   // Cleared whole and discarded once resolved, as the peer's frame may (its depth is never read):
   // the samples live in tile memory (rasterizer/framebuffer.hpp).
-  clear_color(ctx, st.color, kClear);
+  clear_color(ctx, st.color, kSponzaClear);
   clear_depth_stencil(ctx, st.depth, 1.0f, 0);
   const rasterizer::Framebuffer fb{&st.color, &st.depth};
   for (const Draw& d : st.draws) rasterizer::draw(ctx, fb, d.state, d.geometry, d.vertex, d.pixel);

@@ -35,7 +35,9 @@
 #include "luxel/scenes/scene.hpp"
 
 #include <glm/vec3.hpp>
+#include <glm/vec4.hpp>
 
+#include <array>
 #include <cstdint>
 #include <memory>
 #include <optional>
@@ -48,6 +50,23 @@ struct SponzaView {
   glm::vec3 eye{-10.40f, 1.25f, -0.30f};
   glm::vec3 target{9.45f, 2.50f, -0.30f};
 };
+
+/// The W3 camera in the scene's space (Source's: inches, +Z up), with W3's FOV, near and far.
+scenes::Camera sponza_camera(const SponzaView& view);
+
+/// W3's lighting in the scene's axes and units (the header comment says why it is the peer's).
+struct SponzaLighting {
+  std::array<glm::vec3, 6> cube;  ///< Source's faces +X, -X, +Y, -Y, +Z, -Z
+  std::array<glm::vec3, 2> position, color;
+};
+SponzaLighting sponza_lighting();
+
+/// W3's clear color (visible through the open roof).
+inline constexpr glm::vec4 kSponzaClear(0.45f, 0.55f, 0.70f, 1.0f);
+
+/// A scene texture as W3 reads it: RGBA8 with color premultiplied by alpha (the peer's decode),
+/// no sRGB decode, trilinear with a full mip chain; the wrap modes kept.
+scenes::Texture sponza_texture(const scenes::Texture& texture);
 
 /// "X,Y,Z": three numbers separated by commas and nothing after them (the peer's --eye and
 /// --target syntax). nullopt when the text is anything else.

@@ -81,13 +81,13 @@ glm::vec4 texel(const scenes::PixelImage& image, int x, int y) {
 
 }  // namespace
 
-GpuTexture lightmap_page(const scenes::Scene& scene, shading::source::LightmapPage& page) {
+LightmapPageTexels lightmap_page_texels(const scenes::Scene& scene, shading::source::LightmapPage& page) {
   const scenes::Lightmaps& maps = scene.lightmaps.value();
   const int ids[4] = {maps.flat, maps.textures[0], maps.textures[1], maps.textures[2]};
   const int w = maps.width, h = maps.height;
   constexpr int kGap = 2;
   const int page_width = 4 * w + 3 * kGap;
-  std::vector<glm::vec4> texels(static_cast<size_t>(page_width) * h, glm::vec4(0.0f));
+  LightmapPageTexels out{page_width, h, std::vector<glm::vec4>(static_cast<size_t>(page_width) * h, glm::vec4(0.0f))};
   for (int k = 0; k < 4; ++k) {
     if (ids[k] < 0 || ids[k] >= static_cast<int>(scene.textures.size()))
       throw std::invalid_argument(scene.name + ": lightmap " + std::to_string(k) + " is missing");
@@ -98,7 +98,7 @@ GpuTexture lightmap_page(const scenes::Scene& scene, shading::source::LightmapPa
                                   std::to_string(h));
     const int x0 = k * (w + kGap);
     for (int y = 0; y < h; ++y) {
-      glm::vec4* row = texels.data() + static_cast<size_t>(y) * page_width;
+      glm::vec4* row = out.texels.data() + static_cast<size_t>(y) * page_width;
       for (int x = 0; x < w; ++x) row[x0 + x] = texel(image, x, y);
       if (k > 0) row[x0 - 1] = row[x0];
       if (k < 3) row[x0 + w] = row[x0 + w - 1];
@@ -106,8 +106,13 @@ GpuTexture lightmap_page(const scenes::Scene& scene, shading::source::LightmapPa
     page.offset[static_cast<size_t>(k)] = static_cast<float>(x0) / page_width;
   }
   page.scale = static_cast<float>(w) / page_width;
-  GpuTexture g{rasterizer::Texture::create_2d(page_width, h, rasterizer::TextureFormat::RGBA16F, 1), {}};
-  g.texture.upload(0, std::span<const glm::vec4>(texels));
+  return out;
+}
+
+GpuTexture lightmap_page(const scenes::Scene& scene, shading::source::LightmapPage& page) {
+  const LightmapPageTexels page_texels = lightmap_page_texels(scene, page);
+  GpuTexture g{rasterizer::Texture::create_2d(page_texels.width, page_texels.height, rasterizer::TextureFormat::RGBA16F, 1), {}};
+  g.texture.upload(0, std::span<const glm::vec4>(page_texels.texels));
   g.sampler.u = g.sampler.v = rasterizer::Address::Clamp;
   g.sampler.mag = g.sampler.min = rasterizer::Filter::Linear;
   g.sampler.mip = rasterizer::MipFilter::None;

@@ -44,6 +44,14 @@ GpuTexture flat_normal_texture();
 /// when the scene's Lightmaps are incomplete or of different sizes.
 GpuTexture lightmap_page(const scenes::Scene& scene, shading::source::LightmapPage& page);
 
+/// The texels lightmap_page uploads (rows top first, linear RGBA), for a renderer that uploads them
+/// itself: the llvmpipe benchmark's W4 reads the page luxel reads. Throws as lightmap_page does.
+struct LightmapPageTexels {
+  int width = 0, height = 0;
+  std::vector<glm::vec4> texels;
+};
+LightmapPageTexels lightmap_page_texels(const scenes::Scene& scene, shading::source::LightmapPage& page);
+
 /// A scene's textures as every frame of it samples them: each scenes::Texture uploaded (upload,
 /// in scene order) and, when the scene has lightmaps, its lightmap page. Preparing them is most
 /// of what constructing a Renderer costs: renderers of one scene with different settings (the
