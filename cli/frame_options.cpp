@@ -169,6 +169,7 @@ std::optional<scenes::Scene> FrameOptions::prepare_scene(const std::string& comm
   }
   scenes::GltfImportOptions gltf;
   gltf.memory_limit = *memory_limit;
+  gltf.framing_aspect = float(frame_settings.width) / float(frame_settings.height);
   if (scene.rfind("builtin:", 0) != 0) gltf.camera = std::exchange(frame_settings.camera, 0);
   std::optional<scenes::Scene> loaded =
       load_scene_or_report(command, scene, gltf, {frame_settings.width, frame_settings.height}, code);

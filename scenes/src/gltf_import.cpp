@@ -7,6 +7,7 @@
 #include "gltf_scene_extras.hpp"
 #include "gltf_values.hpp"
 #include "one_line.hpp"
+#include "luxel/scenes/framing.hpp"
 #include "luxel/scenes/gltf.hpp"
 #include "luxel/scenes/image_io.hpp"
 #include "luxel/scenes/memory_limit.hpp"
@@ -783,22 +784,8 @@ class Importer {
   }
 
   void add_defaults() {
-    const Bounds b = bounds_of(scene_);
-    const glm::vec3 center = b.empty ? glm::vec3(0.0f) : b.center();
-    const float radius = b.empty ? 64.0f : std::max(0.5f * glm::length(b.size()), 1.0f);
-    // From the front-left and above (Source's -Y is "front" of a glTF asset's +Z).
-    const glm::vec3 from = glm::normalize(glm::vec3(-0.5f, -1.0f, 0.6f));
-    if (scene_.cameras.empty() && options_.default_camera) {
-      Camera c;
-      c.name = "luxel:framing";
-      c.vertical_fov = 0.8726646f;  // 50 degrees
-      const float distance = radius / std::sin(0.5f * c.vertical_fov) * 1.05f;
-      c.position = center + from * distance;
-      c.target = center;
-      c.near_plane = std::max(distance - 2.0f * radius, distance * 1e-3f);
-      c.far_plane = distance + 2.0f * radius;
-      scene_.cameras.push_back(c);
-    }
+    if (scene_.cameras.empty() && options_.default_camera)
+      scene_.cameras.push_back(framing_camera(scene_, options_.framing_aspect));
     if (scene_.lights.empty() && options_.default_lights) {
       // A key light over the camera's shoulder and a dimmer fill from the other side.
       Light key;

@@ -57,7 +57,7 @@ TEST(GradeCommand, ExactWritesTheFloatBlendAsExr) {
   const test::Process run =
       run_luxel("grade " + dir.file("in.png") + " " + dir.file("out.exr") + " --exact --lut " + kCrosstalk + " 2>&1");
   ASSERT_EQ(run.exit_code, 0) << run.out;
-  EXPECT_NE(run.out.find("crosstalk.3dl (3D LUT 17^3, trilinear) x 1, exact"), std::string::npos) << run.out;
+  EXPECT_NE(run.out.find("crosstalk.3dl (3D LUT 17^3, tetrahedral) x 1, exact"), std::string::npos) << run.out;
   const postfx::ColorTransform t = postfx::read_lut_file(kCrosstalk);
   const postfx::WeightedTransform weighted[] = {{&t, 1.0f}};
   const std::vector<float> want = postfx::color_correct_exact(frame, weighted);

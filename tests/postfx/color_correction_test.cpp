@@ -1,6 +1,6 @@
 // The color-correction pass: identity on every 8-bit color, the rasterizer's bytes equal to the
 // shader's scalar lane run per pixel, the same bytes for 1, 2 and 3 threads, weights blending as
-// luxel's rule says (checked in double), the exact path as the trilinear interpolation of a file's
+// luxel's rule says (checked in double), the exact path as the tetrahedral interpolation of a file's
 // own lattice, the engine's 32^3 8-bit way against the exact path within a measured bound, a LUT
 // composed with a transform, and the argument checks.
 
@@ -260,7 +260,7 @@ TEST(ColorCorrection, ExactPathAppliesEachLutAtItsOwnResolutionAndBlends) {
   double worst_alone = 0.0, worst_blend = 0.0;
   for (size_t p = 0; p < size_t(frame.width) * frame.height; ++p) {
     const glm::dvec3 in = glm::dvec3(frame.rgba[4 * p], frame.rgba[4 * p + 1], frame.rgba[4 * p + 2]) / 255.0;
-    const glm::dvec3 lut = test::trilinear(lattice, in);
+    const glm::dvec3 lut = test::tetrahedral(lattice, in);
     const glm::dvec3 mixed = 0.25 * in + 0.25 * lut + 0.5 * glm::dvec3(apply_grade(night_grade, glm::vec3(in)));
     for (int c = 0; c < 3; ++c) {
       worst_alone = std::max(worst_alone, std::abs(a[4 * p + c] - lut[c]));
@@ -268,7 +268,7 @@ TEST(ColorCorrection, ExactPathAppliesEachLutAtItsOwnResolutionAndBlends) {
     }
     EXPECT_EQ(a[4 * p + 3], frame.rgba[4 * p + 3] / 255.0f);
   }
-  EXPECT_LE(worst_alone, 1e-5) << "the 17^3 lattice, trilinear, in float";
+  EXPECT_LE(worst_alone, 1e-5) << "the 17^3 lattice, tetrahedral, in float";
   EXPECT_LE(worst_blend, 1e-5);
 }
 

@@ -1,5 +1,5 @@
 // LUT files through OpenColorIO: a .cube the test writes (a known function on a 17^3 lattice) is
-// applied as the trilinear interpolation of its lattice, a CLF file asking for tetrahedral
+// applied as the tetrahedral interpolation of its lattice (OpenColorIO's tools' INTERP_BEST), a CLF file asking for tetrahedral
 // interpolation gets it, DOMAIN_MIN/MAX and 1D LUTs do what the format says, every file kept in
 // tests/data/luts loads, an exported .cube reads back to the same LUT, and every kind of bad file
 // gives one line naming it.
@@ -50,19 +50,19 @@ double max_error(const ColorTransform& t, Reference&& reference) {
 
 void write(const std::string& path, const std::string& text) { std::ofstream(path) << text; }
 
-TEST(LutFile, CubeIsAppliedAsTheTrilinearInterpolationOfItsLattice) {
+TEST(LutFile, CubeIsAppliedAsTheTetrahedralInterpolationOfItsLattice) {
   const TempDir dir;
   const test::Lattice lattice = test::analytic_lattice(17);
   test::write_cube_file(lattice, dir.file("analytic.cube"));
   const ColorTransform t = read_lut_file(dir.file("analytic.cube"));
-  EXPECT_EQ(t.description, "3D LUT 17^3, trilinear");
-  const double err = max_error(t, [&](glm::dvec3 c) { return test::trilinear(lattice, c); });
+  EXPECT_EQ(t.description, "3D LUT 17^3, tetrahedral");
+  const double err = max_error(t, [&](glm::dvec3 c) { return test::tetrahedral(lattice, c); });
   EXPECT_LE(err, 1e-5);
   // The lattice is coarse enough that interpolating it is not the function itself, and not
-  // tetrahedral either: the comparison above decides between them.
+  // trilinear either: the comparison above decides between them.
   EXPECT_GT(max_error(t, [](glm::dvec3 c) { return test::analytic_grade(c); }), 1e-3);
-  EXPECT_GT(max_error(t, [&](glm::dvec3 c) { return test::tetrahedral(lattice, c); }), 1e-4);
-  std::printf("17^3 .cube: OpenColorIO vs trilinear in double: max %.3g\n", err);
+  EXPECT_GT(max_error(t, [&](glm::dvec3 c) { return test::trilinear(lattice, c); }), 1e-4);
+  std::printf("17^3 .cube: OpenColorIO vs tetrahedral in double: max %.3g\n", err);
 }
 
 TEST(LutFile, ClfFileGetsTheInterpolationItAsksFor) {
@@ -89,7 +89,7 @@ TEST(LutFile, DomainMinMaxMapsTheInputOntoTheLattice) {
   write(dir.file("domain.cube"), text);
   const glm::dvec3 lo(0.1, 0.2, 0.0), hi(0.9, 1.0, 0.5);
   const double err = max_error(read_lut_file(dir.file("domain.cube")), [&](glm::dvec3 c) {
-    return test::trilinear(lattice, glm::clamp((c - lo) / (hi - lo), 0.0, 1.0));
+    return test::tetrahedral(lattice, glm::clamp((c - lo) / (hi - lo), 0.0, 1.0));
   });
   EXPECT_LE(err, 1e-5);
 }
@@ -148,7 +148,7 @@ TEST(LutFile, ExportedCubeReadsBackAsTheSameLut) {
   const Lut warm = resolve_lut("builtin:warm");
   write_cube(warm, dir.file("warm.cube"), "builtin:warm \"quoted\"");
   const ColorTransform back = read_lut_file(dir.file("warm.cube"));
-  EXPECT_EQ(back.description, "3D LUT 32^3, trilinear");
+  EXPECT_EQ(back.description, "3D LUT 32^3, tetrahedral");
   EXPECT_EQ(sample_lut(back), warm) << "the lattice points coincide: every entry reads back as written";
   EXPECT_NE(warm, Lut::identity());
   EXPECT_THROW(write_cube(warm, dir.file("no/such/folder/x.cube"), "x"), std::runtime_error);

@@ -385,7 +385,8 @@ TEST(GltfImport, CamerasFirstByDefaultOrAsAsked) {
   expect_gltf_error(path, "camera 2 asked for; the file has 2", [&] { load_gltf(path, o); });
 }
 
-// Without cameras or lights: a camera whose view cone holds the whole bounding box, and lights.
+// Without cameras or lights: a camera whose frame (at the default 16:9) holds the whole bounding
+// box, and lights. tests/scenes/framing_test.cpp checks the framing rule itself.
 TEST(GltfImport, DefaultCameraFramesTheBoundsAndDefaultLightsShowThem) {
   TempDir dir;
   GltfBuilder b;
@@ -396,13 +397,15 @@ TEST(GltfImport, DefaultCameraFramesTheBoundsAndDefaultLightsShowThem) {
   const Camera& c = s.cameras[0];
   const Bounds bounds = bounds_of(s);
   const glm::vec3 forward = glm::normalize(c.target - c.position);
+  const glm::vec3 right = glm::normalize(glm::cross(forward, c.up)), up = glm::cross(right, forward);
+  const float tan_y = std::tan(0.5f * c.vertical_fov), tan_x = GltfImportOptions{}.framing_aspect * tan_y;
   for (int corner = 0; corner < 8; ++corner) {
     const glm::vec3 p((corner & 1) ? bounds.max.x : bounds.min.x, (corner & 2) ? bounds.max.y : bounds.min.y,
                       (corner & 4) ? bounds.max.z : bounds.min.z);
     const glm::vec3 to = p - c.position;
-    const float angle = std::acos(glm::dot(glm::normalize(to), forward));
-    EXPECT_LT(angle, 0.5f * c.vertical_fov) << "corner " << corner;
     const float depth = glm::dot(to, forward);
+    EXPECT_LT(std::abs(glm::dot(to, right)) / depth, tan_x) << "corner " << corner;
+    EXPECT_LT(std::abs(glm::dot(to, up)) / depth, tan_y) << "corner " << corner;
     EXPECT_GT(depth, c.near_plane);
     EXPECT_LT(depth, c.far_plane);
   }

@@ -13,8 +13,8 @@
 // clamps and rounds the entries to 8 bits, and interpolates again. Measured over every 8-bit color
 // (tests/postfx/color_correction_test.cpp checks every third level): a smooth 17^3 LUT within 4
 // steps, the built-in presets within 2; real looks with steep or out-of-range regions much further
-// in those regions (a 16^3 teal-and-orange look with negative entries up to 22 steps, more than 2
-// in 1.4% of the channels; the 33^3 Lustre .3dl up to 13), which `luxel grade --exact` shows.
+// in those regions (a 16^3 teal-and-orange look with negative entries up to 19 steps, more than 2
+// in 1.2% of the channels), which `luxel grade --exact` shows.
 //
 // Weights. The engine blends out = frame * defaultWeight + sum_k LUT_k(frame) * w_k with up to
 // four lookups; how it derives defaultWeight from the entities' weights is closed (NOT IN SDK).

@@ -17,7 +17,7 @@ namespace luxel::postfx {
 
 struct ColorTransform {
   std::string name;         ///< "builtin:warm", or the LUT file's path
-  std::string description;  ///< one line on what it is: "3D LUT 33^3, trilinear", "grade: levels, saturation"
+  std::string description;  ///< one line on what it is: "3D LUT 33^3, tetrahedral", "grade: levels, saturation"
   /// Transforms the colors in place. Pure and safe to call from several threads at once.
   std::function<void(std::span<glm::vec3> colors)> apply;
 };

@@ -1,9 +1,12 @@
 #pragma once
 // LUT files in and out. Reading goes through OpenColorIO (a FileTransform): every format it reads
 // (.cube Iridas and Resolve, 1D, 3D, shaper + 3D, DOMAIN_MIN/MAX; .3dl; .csp; .spi1d, .spi3d;
-// .clf, .ctf...) with its own interpolation (a CLF file may ask for tetrahedral; everything else
-// is linear / trilinear), evaluated in float at the file's own resolution. The engine samples it
-// on its 32^3 lattice (lut.hpp); `luxel grade --exact` applies it as read.
+// .clf, .ctf...), evaluated by OpenColorIO's CPU processor in float at the file's own resolution
+// with the interpolation OpenColorIO's own tools ask for (ociochecklut, ocioconvert --lut,
+// ociobakelut --lut: INTERP_BEST): tetrahedral for 3D LUTs, linear for 1D LUTs, and a CLF/CTF
+// file's own where it names one. (The FileTransform's INTERP_DEFAULT would be trilinear for every
+// 3D LUT in OpenColorIO 2.1.) The engine samples it on its 32^3 lattice (lut.hpp);
+// `luxel grade --exact` applies it as read.
 //
 // Bad files throw std::runtime_error with one line "PATH: problem": a missing file, a file no
 // reader takes (the first reader's complaint, condensed from OpenColorIO's several lines), a
@@ -28,7 +31,7 @@ namespace luxel::postfx {
 inline constexpr int kMaxFileLut3dSize = 129;
 inline constexpr int kMaxFileLut1dSize = 1024 * 1024;
 
-/// The file's transform; its description names the LUTs in it ("3D LUT 33^3, trilinear").
+/// The file's transform; its description names the LUTs in it ("3D LUT 33^3, tetrahedral").
 ColorTransform read_lut_file(const std::string& path);
 
 /// Writes the LUT as a 32^3 .cube (Iridas/Resolve 3D, red fastest, entries over 255).

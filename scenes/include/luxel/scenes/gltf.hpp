@@ -99,8 +99,9 @@
 //
 // ## Cameras
 // All cameras placed by nodes are imported; the one asked for (the first by default) is
-// Scene::cameras[0]. Without any, a camera framing bounds_of(scene) is added, and without any
-// light, a key and a fill directional light, so every asset renders to something visible.
+// Scene::cameras[0]. Without any, a camera looking at the asset's front with the whole scene in
+// the frame (framing.hpp) is added, and without any light, a key and a fill directional light, so
+// every asset renders to something visible.
 //
 // ## Errors
 // Every problem throws GltfError whose what() is one line "FILE: problem". Before any data is
@@ -146,7 +147,8 @@ inline constexpr int kMaxGltfNodeDepth = 256;
 
 struct GltfImportOptions {
   int camera = 0;                   ///< the glTF camera (index into its `cameras`) made Scene::cameras[0]
-  bool default_camera = true;       ///< add a framing camera when the file has none
+  bool default_camera = true;       ///< add a framing camera when the file has none (framing.hpp)
+  float framing_aspect = 16.0f / 9.0f;  ///< the width / height of the images it frames the scene for
   bool default_lights = true;       ///< add a key and a fill light when the file has none
   bool generate_tangents = true;    ///< MikkTSpace tangents where TANGENT is missing
   /// Set: a primitive without NORMAL gets this object-space normal at every vertex, transformed by
