@@ -22,7 +22,6 @@
 // only texels past a corner are computed here.
 
 #include "luxel/rasterizer/texture.hpp"
-#include "texel_window.hpp"
 #include "texture_internal.hpp"
 
 #include <algorithm>
@@ -32,7 +31,6 @@
 #include <cstdlib>
 #include <cstring>
 #include <limits>
-#include <optional>
 #include <span>
 #include <stdexcept>
 #include <string>
@@ -208,9 +206,6 @@ struct Rgba16f : IdealFormat {
   LUXEL_INLINE static Float4 fetch(const int32_t* words, const Int& index) {
     Int rg, ba;
     gather_pairs(words, index, rg, ba);
-    return decode_pair(rg, ba);
-  }
-  LUXEL_INLINE static Float4 decode_pair(const Int& rg, const Int& ba) {
     Float4 t;
     simd::unpack_halves(rg, t.x, t.y);
     simd::unpack_halves(ba, t.z, t.w);
@@ -226,9 +221,6 @@ struct Rgba16 : IdealFormat {
   LUXEL_INLINE static Float4 fetch(const int32_t* words, const Int& index) {
     Int rg, ba;
     gather_pairs(words, index, rg, ba);
-    return decode_pair(rg, ba);
-  }
-  LUXEL_INLINE static Float4 decode_pair(const Int& rg, const Int& ba) {
     const Int low(0xffff);
     return {to_float(rg & low), to_float((rg >> 16) & low), to_float(ba & low), to_float((ba >> 16) & low)};
   }
@@ -302,12 +294,6 @@ struct Opaque {
     requires(kWords == 1)
   {
     const Float4 t = Format::decode(w);
-    return {t.x, t.y, t.z};
-  }
-  LUXEL_INLINE static Float3 decode_pair(const Int& low, const Int& high)
-    requires(kWords == 2)
-  {
-    const Float4 t = Format::decode_pair(low, high);
     return {t.x, t.y, t.z};
   }
   static Float3 raw_border(const glm::vec4& b) {
@@ -406,8 +392,6 @@ struct Level {
   Int width, height, depth;
   Float fwidth, fheight, fdepth;
   Int offset;  ///< first word of the level within a face
-  /// The same level in every lane: its width, height and offset as plain numbers (else 0).
-  int uniform_width = 0, uniform_height = 0, uniform_offset = 0;
 };
 
 /// Geometry of level `level`, the same for every lane.
@@ -420,9 +404,6 @@ LUXEL_INLINE Level level_geometry(const Texture& t, const std::array<int32_t, kM
   g.fwidth = to_float(g.width);
   g.fheight = to_float(g.height);
   g.fdepth = to_float(g.depth);
-  g.uniform_width = t.width(level);
-  g.uniform_height = t.height(level);
-  g.uniform_offset = offsets[level];
   return g;
 }
 
@@ -573,31 +554,6 @@ LUXEL_INLINE void apply_border(const Context<Format>& ctx, const IntMask& outsid
 
 // --- 2D and volume ----------------------------------------------------------------------------
 
-/// A bilinear footprint of 8-byte texels whose stamp lies within four rows of four texels (a
-/// magnified read: the lightmaps' taps): the same texels and lerps as filter_2d's gathers, picked
-/// from the window loaded once (simd::PairWindow). Nothing when the stamp spans more.
-template <class Format>
-LUXEL_INLINE std::optional<TexelOf<Format>> filter_2d_in_window(const Context<Format>& ctx, const Level& g, const LinearAxis& x,
-                                                              const LinearAxis& y) {
-  // The window starts at the stamp's first texel, moved back where the level ends within four.
-  const int column0 = std::min(simd::lowest(xsimd::min(x.i0, x.i1)), g.uniform_width - 4);
-  const int row0 = std::min(simd::lowest(xsimd::min(y.i0, y.i1)), g.uniform_height - 4);
-  const Int c0 = x.i0 - Int(column0), c1 = x.i1 - Int(column0), r0 = y.i0 - Int(row0), r1 = y.i1 - Int(row0);
-  // Unsigned: a texel before the window fails too.
-  const auto inside = [](const Int& i) { return xsimd::bitwise_cast<simd::UInt>(i) < simd::UInt(4); };
-  if (!xsimd::all(inside(c0) & inside(c1) & inside(r0) & inside(r1))) return std::nullopt;
-  const int32_t* rows[4];
-  for (int r = 0; r < 4; ++r) rows[r] = ctx.storage.words + g.uniform_offset + 2 * ((row0 + r) * g.uniform_width + column0);
-  const simd::PairWindow window(rows);
-  const auto texel = [&](const Int& row, const Int& column) LUXEL_INLINE_LAMBDA {
-    Int low, high;
-    window.pairs((row << 2) + column, low, high);
-    return Format::decode_pair(low, high);
-  };
-  return blend<Format>(blend<Format>(texel(r0, c0), texel(r0, c1), x.weight), blend<Format>(texel(r1, c0), texel(r1, c1), x.weight),
-                       y.weight);
-}
-
 template <class Format>
 LUXEL_INLINE TexelOf<Format> filter_2d(const Context<Format>& ctx, const Level& g, Filter filter, const Float& u, const Float& v) {
   const Sampler& s = ctx.sampler;
@@ -617,11 +573,6 @@ LUXEL_INLINE TexelOf<Format> filter_2d(const Context<Format>& ctx, const Level& 
   if (ctx.prefetch_words_below != 0) {
     prefetch_windows_below(ctx.storage.words, word_index<Format>(g.offset, row0 + x.i0), word_index<Format>(g.offset, row1 + x.i0),
                            ctx.prefetch_words_below);
-  }
-  if constexpr (Format::kWords == 2 && simd::kPairWindowsPay) {
-    if (!ctx.any_border && g.uniform_width >= 4 && g.uniform_height >= 4) {
-      if (auto t = filter_2d_in_window<Format>(ctx, g, x, y)) return *t;
-    }
   }
   const auto texel = [&](const Int& row, const Int& column) LUXEL_INLINE_LAMBDA {
     return fetch(ctx, word_index<Format>(g.offset, row + column));
