@@ -5,6 +5,7 @@
 #include "gltf_axes.hpp"
 #include "gltf_materials.hpp"
 #include "gltf_scene_extras.hpp"
+#include "gltf_schema.hpp"
 #include "gltf_values.hpp"
 #include "one_line.hpp"
 #include "luxel/scenes/gltf.hpp"
@@ -22,6 +23,7 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <iostream>
 #include <limits>
 #include <map>
 #include <optional>
@@ -39,8 +41,13 @@ using gltf::AttributeRule;
 /// Files larger than this are refused before they are read.
 constexpr uint64_t kMaxFileBytes = uint64_t{1} << 31;
 
-const std::vector<std::string> kSupportedExtensions = {"KHR_texture_transform", "KHR_lights_punctual",
-                                                       "KHR_materials_emissive_strength", "KHR_materials_unlit"};
+/// The extensions luxel reads (docs/gltf.md lists them with those it ignores and refuses).
+const std::vector<std::string> kReadExtensions = {"KHR_texture_transform", "KHR_lights_punctual",
+                                                  "KHR_materials_emissive_strength", "KHR_materials_unlit"};
+
+bool reads_extension(const std::string& name) {
+  return std::find(kReadExtensions.begin(), kReadExtensions.end(), name) != kReadExtensions.end();
+}
 
 std::string first_line(const std::string& s) {
   size_t begin = 0;
@@ -101,9 +108,6 @@ class Importer {
     parse();
     Accessors accessors(model_, path_);
     accessors_ = &accessors;
-    for (const std::string& e : model_.extensionsRequired)
-      if (std::find(kSupportedExtensions.begin(), kSupportedExtensions.end(), e) == kSupportedExtensions.end())
-        fail("requires extension " + e + ", which luxel does not read");
     scene_.name = path_;
     images_.resize(model_.images.size());
     for (size_t i = 0; i < model_.materials.size(); ++i)
@@ -123,6 +127,12 @@ class Importer {
 
  private:
   [[noreturn]] void fail(const std::string& what) const { throw GltfError(path_ + ": " + what); }
+
+  void warn(const std::string& what) const {
+    const std::string line = one_line(path_ + ": " + what);
+    if (options_.warn) options_.warn(line);
+    else std::cerr << "luxel: warning: " << line << "\n";
+  }
 
   /// The memory limit's check (memory_limit.hpp), its refusal a GltfError like every problem here.
   void check_memory(uint64_t needed, const std::string& what) const {
@@ -176,6 +186,7 @@ class Importer {
     const bool glb = bytes.size() >= 4 && std::memcmp(bytes.data(), "glTF", 4) == 0;
     if (glb) check_glb(bytes);
     if (bytes.empty()) fail("the file is empty");
+    check_json(glb ? glb_json(bytes) : std::string_view(reinterpret_cast<const char*>(bytes.data()), bytes.size()));
     tinygltf::TinyGLTF loader;
     loader.SetImageLoader(&Importer::collect_image, this);
     tinygltf::FsCallbacks callbacks{&Importer::file_exists, &Importer::expand_path, &Importer::read_file,
@@ -202,6 +213,35 @@ class Importer {
       }
       fail(why);
     }
+  }
+
+  /// The JSON chunk of a .glb that check_glb accepted.
+  static std::string_view glb_json(const std::vector<uint8_t>& b) {
+    uint32_t length;
+    std::memcpy(&length, b.data() + 12, 4);
+    return std::string_view(reinterpret_cast<const char*>(b.data()) + 20, length);
+  }
+
+  /// The schema's structure (gltf_schema.hpp) and the extensions, on JSON that parses; what does
+  /// not parse, tinygltf reports.
+  void check_json(std::string_view text) {
+    const nlohmann::json doc = nlohmann::json::parse(text.begin(), text.end(), nullptr, false);
+    if (doc.is_discarded() || !doc.is_object()) return;
+    gltf::check_schema(doc, [this](const std::string& what) { fail(what); }, [this](const std::string& what) { warn(what); });
+    check_extensions(doc);
+  }
+
+  /// A required extension luxel does not read refuses the file: drawn without it, it would be
+  /// drawn wrong. One that is only used is drawn without, with a warning.
+  void check_extensions(const nlohmann::json& doc) {
+    if (const auto it = doc.find("extensionsRequired"); it != doc.end())
+      for (const auto& e : *it)
+        if (!reads_extension(e.get<std::string>()))
+          fail("requires extension " + e.get<std::string>() + ", which luxel does not read");
+    if (const auto it = doc.find("extensionsUsed"); it != doc.end())
+      for (const auto& e : *it)
+        if (!reads_extension(e.get<std::string>()))
+          warn("uses extension " + e.get<std::string>() + ", which luxel does not read; drawn without it");
   }
 
   // tinygltf's file system, confined: it joins the folder and a (decoded) buffer URI, then asks.
