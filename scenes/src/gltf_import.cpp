@@ -3,6 +3,7 @@
 
 #include "gltf_accessors.hpp"
 #include "gltf_axes.hpp"
+#include "gltf_compression.hpp"
 #include "gltf_materials.hpp"
 #include "gltf_scene_extras.hpp"
 #include "gltf_schema.hpp"
@@ -42,8 +43,10 @@ using gltf::AttributeRule;
 constexpr uint64_t kMaxFileBytes = uint64_t{1} << 31;
 
 /// The extensions luxel reads (docs/gltf.md lists them with those it ignores and refuses).
-const std::vector<std::string> kReadExtensions = {"KHR_texture_transform", "KHR_lights_punctual",
-                                                  "KHR_materials_emissive_strength", "KHR_materials_unlit"};
+const std::vector<std::string> kReadExtensions = {"KHR_texture_transform",   "KHR_lights_punctual",
+                                                  "KHR_materials_emissive_strength", "KHR_materials_unlit",
+                                                  "KHR_mesh_quantization",   "EXT_meshopt_compression",
+                                                  "KHR_draco_mesh_compression"};
 
 bool reads_extension(const std::string& name) {
   return std::find(kReadExtensions.begin(), kReadExtensions.end(), name) != kReadExtensions.end();
@@ -106,6 +109,7 @@ class Importer {
 
   Scene run() {
     parse();
+    decode_compressed();
     Accessors accessors(model_, path_);
     accessors_ = &accessors;
     scene_.name = path_;
@@ -182,11 +186,13 @@ class Importer {
   }
 
   void parse() {
-    const std::vector<uint8_t> bytes = read_whole(path_, "cannot open it");
+    std::vector<uint8_t> bytes = read_whole(path_, "cannot open it");
     const bool glb = bytes.size() >= 4 && std::memcmp(bytes.data(), "glTF", 4) == 0;
     if (glb) check_glb(bytes);
     if (bytes.empty()) fail("the file is empty");
-    check_json(glb ? glb_json(bytes) : std::string_view(reinterpret_cast<const char*>(bytes.data()), bytes.size()));
+    if (const std::optional<std::string> json =
+            check_json(glb ? glb_json(bytes) : std::string_view(reinterpret_cast<const char*>(bytes.data()), bytes.size())))
+      bytes = glb ? with_glb_json(bytes, *json) : std::vector<uint8_t>(json->begin(), json->end());
     tinygltf::TinyGLTF loader;
     loader.SetImageLoader(&Importer::collect_image, this);
     tinygltf::FsCallbacks callbacks{&Importer::file_exists, &Importer::expand_path, &Importer::read_file,
@@ -224,11 +230,13 @@ class Importer {
 
   /// The schema's structure (gltf_schema.hpp) and the extensions, on JSON that parses; what does
   /// not parse, tinygltf reports.
-  void check_json(std::string_view text) {
+  /// Returns the JSON tinygltf is to read instead of the file's, if any (without_draco_indices).
+  std::optional<std::string> check_json(std::string_view text) {
     const nlohmann::json doc = nlohmann::json::parse(text.begin(), text.end(), nullptr, false);
-    if (doc.is_discarded() || !doc.is_object()) return;
+    if (doc.is_discarded() || !doc.is_object()) return std::nullopt;
     gltf::check_schema(doc, [this](const std::string& what) { fail(what); }, [this](const std::string& what) { warn(what); });
     check_extensions(doc);
+    return without_draco_indices(doc);
   }
 
   /// A required extension luxel does not read refuses the file: drawn without it, it would be
@@ -242,6 +250,64 @@ class Importer {
       for (const auto& e : *it)
         if (!reads_extension(e.get<std::string>()))
           warn("uses extension " + e.get<std::string>() + ", which luxel does not read; drawn without it");
+  }
+
+  /// Compressed geometry decoded into plain buffers (gltf_compression.hpp), counted by the memory
+  /// limit with the buffers and images before each decoder allocates.
+  void decode_compressed() {
+    for (const auto& [mesh, primitive, accessor] : draco_indices_)
+      if (mesh < model_.meshes.size() && primitive < model_.meshes[mesh].primitives.size())
+        model_.meshes[mesh].primitives[primitive].indices = accessor;
+    gltf::DecodeReporting report;
+    report.fail = [this](const std::string& what) { fail(what); };
+    report.reserve = [this](uint64_t bytes, const std::string& what) {
+      check_memory(buffer_bytes() + image_bytes_ + bytes, "decoding " + what);
+    };
+    gltf::decode_meshopt_views(model_, report);
+    gltf::decode_draco_primitives(model_, report);
+  }
+
+  /// tinygltf 2.7 refuses an index accessor without a buffer view, which is how a Draco primitive's
+  /// indices are written (they are in the Draco stream): those primitives' `indices` are taken out
+  /// of the JSON tinygltf reads, kept in draco_indices_, and put back after it.
+  /// Returns the JSON to give tinygltf, or nullopt when it is the file's own.
+  std::optional<std::string> without_draco_indices(const nlohmann::json& doc) {
+    const auto meshes = doc.find("meshes");
+    const auto accessors = doc.find("accessors");
+    if (meshes == doc.end() || accessors == doc.end()) return std::nullopt;
+    nlohmann::json copy;
+    for (size_t m = 0; m < meshes->size(); ++m) {
+      const nlohmann::json& primitives = (*meshes)[m]["primitives"];
+      for (size_t k = 0; k < primitives.size(); ++k) {
+        const nlohmann::json& p = primitives[k];
+        const auto ext = p.find("extensions");
+        if (ext == p.end() || !ext->is_object() || !ext->contains("KHR_draco_mesh_compression") || !p.contains("indices")) continue;
+        const size_t a = p["indices"].get<size_t>();  // an index of accessors (check_schema)
+        if ((*accessors)[a].contains("bufferView")) continue;
+        if (copy.is_null()) copy = doc;
+        copy["meshes"][m]["primitives"][k].erase("indices");
+        draco_indices_.push_back({m, k, int(a)});
+      }
+    }
+    if (copy.is_null()) return std::nullopt;
+    return copy.dump();
+  }
+
+  /// `bytes` (a .glb that check_glb accepted) with `json` as its JSON chunk.
+  static std::vector<uint8_t> with_glb_json(const std::vector<uint8_t>& bytes, const std::string& json) {
+    uint32_t old_length;
+    std::memcpy(&old_length, bytes.data() + 12, 4);
+    std::string chunk = json;
+    while (chunk.size() % 4) chunk += ' ';
+    std::vector<uint8_t> out(bytes.begin(), bytes.begin() + 12);
+    const uint32_t length = uint32_t(chunk.size()), type = 0x4E4F534Au;
+    out.insert(out.end(), reinterpret_cast<const uint8_t*>(&length), reinterpret_cast<const uint8_t*>(&length) + 4);
+    out.insert(out.end(), reinterpret_cast<const uint8_t*>(&type), reinterpret_cast<const uint8_t*>(&type) + 4);
+    out.insert(out.end(), chunk.begin(), chunk.end());
+    out.insert(out.end(), bytes.begin() + 20 + old_length, bytes.end());
+    const uint32_t total = uint32_t(out.size());
+    std::memcpy(out.data() + 8, &total, 4);
+    return out;
   }
 
   // tinygltf's file system, confined: it joins the folder and a (decoded) buffer URI, then asks.
@@ -626,11 +692,12 @@ class Importer {
       if (f.count != n) fail(where + " " + name + " has " + std::to_string(f.count) + " elements for " + std::to_string(n) + " positions");
       return f;
     };
-    const auto pos = read("POSITION", {"POSITION", {TINYGLTF_TYPE_VEC3}});
-    const auto nrm = read("NORMAL", {"NORMAL", {TINYGLTF_TYPE_VEC3}});
-    const auto tan = read("TANGENT", {"TANGENT", {TINYGLTF_TYPE_VEC4}});
-    const auto uv0 = read("TEXCOORD_0", {"TEXCOORD_0", {TINYGLTF_TYPE_VEC2}, true});
-    const auto uv1 = read("TEXCOORD_1", {"TEXCOORD_1", {TINYGLTF_TYPE_VEC2}, true});
+    using Q = AttributeRule::Quantized;
+    const auto pos = read("POSITION", {"POSITION", {TINYGLTF_TYPE_VEC3}, false, Q::integers});
+    const auto nrm = read("NORMAL", {"NORMAL", {TINYGLTF_TYPE_VEC3}, false, Q::signed_normalized});
+    const auto tan = read("TANGENT", {"TANGENT", {TINYGLTF_TYPE_VEC4}, false, Q::signed_normalized});
+    const auto uv0 = read("TEXCOORD_0", {"TEXCOORD_0", {TINYGLTF_TYPE_VEC2}, true, Q::integers});
+    const auto uv1 = read("TEXCOORD_1", {"TEXCOORD_1", {TINYGLTF_TYPE_VEC2}, true, Q::integers});
     const auto col = read("COLOR_0", {"COLOR_0", {TINYGLTF_TYPE_VEC3, TINYGLTF_TYPE_VEC4}, true});
 
     // Indices as the mode defines triangles (glTF 2.0 section 3.7.2.1).
@@ -860,6 +927,8 @@ class Importer {
   tinygltf::Model model_;
   const Accessors* accessors_ = nullptr;
   std::map<int, std::vector<uint8_t>> data_uri_images_;
+  struct DracoIndices { size_t mesh, primitive; int accessor; };
+  std::vector<DracoIndices> draco_indices_;
   std::string fs_error_;
   std::vector<std::optional<PixelImage>> images_;
   // What the memory limit counts as the file is read: its files' bytes, its images' pixels.

@@ -37,6 +37,10 @@
 //   that node's translation from its rest, taken to world space by its parent's matrix; LINEAR
 //   exactly, STEP and CUBICSPLINE as linear between their keys' values. World geometry does not
 //   move.
+// - Compressed and quantized geometry: EXT_meshopt_compression buffer views and
+//   KHR_draco_mesh_compression primitives are decoded into plain buffers first
+//   (gltf_compression.hpp); KHR_mesh_quantization allows bytes and shorts for POSITION and
+//   TEXCOORD (normalized or not) and normalized signed ones for NORMAL and TANGENT.
 // - Skins, morph targets, other animations and rotation or scale channels are ignored (the bind
 //   pose is drawn).
 //
