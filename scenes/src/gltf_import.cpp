@@ -272,18 +272,23 @@ class Importer {
   /// of the JSON tinygltf reads, kept in draco_indices_, and put back after it.
   /// Returns the JSON to give tinygltf, or nullopt when it is the file's own.
   std::optional<std::string> without_draco_indices(const nlohmann::json& doc) {
+    // check_schema has checked the types and indices; this checks them again rather than rely on it.
     const auto meshes = doc.find("meshes");
     const auto accessors = doc.find("accessors");
-    if (meshes == doc.end() || accessors == doc.end()) return std::nullopt;
+    if (meshes == doc.end() || accessors == doc.end() || !meshes->is_array() || !accessors->is_array()) return std::nullopt;
     nlohmann::json copy;
     for (size_t m = 0; m < meshes->size(); ++m) {
-      const nlohmann::json& primitives = (*meshes)[m]["primitives"];
-      for (size_t k = 0; k < primitives.size(); ++k) {
-        const nlohmann::json& p = primitives[k];
+      const auto primitives = (*meshes)[m].find("primitives");
+      if (primitives == (*meshes)[m].end() || !primitives->is_array()) continue;
+      for (size_t k = 0; k < primitives->size(); ++k) {
+        const nlohmann::json& p = (*primitives)[k];
         const auto ext = p.find("extensions");
-        if (ext == p.end() || !ext->is_object() || !ext->contains("KHR_draco_mesh_compression") || !p.contains("indices")) continue;
-        const size_t a = p["indices"].get<size_t>();  // an index of accessors (check_schema)
-        if ((*accessors)[a].contains("bufferView")) continue;
+        const auto indices = p.find("indices");
+        if (ext == p.end() || !ext->is_object() || !ext->contains("KHR_draco_mesh_compression") || indices == p.end() ||
+            !indices->is_number_unsigned() || indices->get<size_t>() >= accessors->size())
+          continue;
+        const size_t a = indices->get<size_t>();
+        if (!(*accessors)[a].is_object() || (*accessors)[a].contains("bufferView")) continue;
         if (copy.is_null()) copy = doc;
         copy["meshes"][m]["primitives"][k].erase("indices");
         draco_indices_.push_back({m, k, int(a)});
