@@ -79,6 +79,12 @@ std::string meshopt_refusal(const MeshoptStream& s) {
   return "";
 }
 
+/// meshoptimizer's codecs spend at least 2 bits per 16 bytes of vertex data (a byte of each
+/// vertex's attribute, its group of 16 all equal), a byte per triangle and one per index of a
+/// sequence: a stream that claims to decode to more than 64 times its size (and a block's worth
+/// more) is refused before the decoded bytes are allocated.
+constexpr uint64_t kMeshoptMaxRatio = 64, kMeshoptSlack = 4096;
+
 /// The decoded bytes of `s` (count x stride), its source bytes `src`.
 std::vector<unsigned char> meshopt_decoded(const MeshoptStream& s, std::span<const unsigned char> src, const std::string& where,
                                            const DecodeReporting& r) {
@@ -281,6 +287,9 @@ void decode_meshopt_views(tinygltf::Model& model, const DecodeReporting& report)
     if (model.bufferViews[i].byteLength != s.count * s.stride)
       report.fail(where + " decodes " + std::to_string(s.count * s.stride) + " bytes for a view of " +
                   std::to_string(model.bufferViews[i].byteLength));
+    if (s.count * s.stride > kMeshoptMaxRatio * s.length + kMeshoptSlack)
+      report.fail(where + " claims " + std::to_string(s.count * s.stride) + " bytes from " + std::to_string(s.length) +
+                  ", more than meshoptimizer's encoding holds");
     report.reserve(s.count * s.stride, where);
     std::vector<unsigned char> bytes =
         meshopt_decoded(s, std::span<const unsigned char>(data).subspan(size_t(s.offset), size_t(s.length)), where, report);

@@ -191,7 +191,7 @@ class Importer {
     if (glb) check_glb(bytes);
     if (bytes.empty()) fail("the file is empty");
     if (const std::optional<std::string> json =
-            check_json(glb ? glb_json(bytes) : std::string_view(reinterpret_cast<const char*>(bytes.data()), bytes.size())))
+            check_json(glb ? glb_json(bytes) : std::string_view(reinterpret_cast<const char*>(bytes.data()), bytes.size()), glb))
       bytes = glb ? with_glb_json(bytes, *json) : std::vector<uint8_t>(json->begin(), json->end());
     tinygltf::TinyGLTF loader;
     loader.SetImageLoader(&Importer::collect_image, this);
@@ -230,13 +230,18 @@ class Importer {
 
   /// The schema's structure (gltf_schema.hpp) and the extensions, on JSON that parses; what does
   /// not parse, tinygltf reports.
-  /// Returns the JSON tinygltf is to read instead of the file's, if any (without_draco_indices).
-  std::optional<std::string> check_json(std::string_view text) {
+  /// Returns the JSON tinygltf is to read instead of the file's, if any (take_out_draco_indices,
+  /// stub_fallback_buffers).
+  std::optional<std::string> check_json(std::string_view text, bool glb) {
     const nlohmann::json doc = nlohmann::json::parse(text.begin(), text.end(), nullptr, false);
     if (doc.is_discarded() || !doc.is_object()) return std::nullopt;
     gltf::check_schema(doc, [this](const std::string& what) { fail(what); }, [this](const std::string& what) { warn(what); });
     check_extensions(doc);
-    return without_draco_indices(doc);
+    nlohmann::json copy;  // made when something is to change
+    take_out_draco_indices(doc, copy);
+    if (!glb) stub_fallback_buffers(doc, copy);
+    if (copy.is_null()) return std::nullopt;
+    return copy.dump();
   }
 
   /// A required extension luxel does not read refuses the file: drawn without it, it would be
@@ -269,14 +274,13 @@ class Importer {
 
   /// tinygltf 2.7 refuses an index accessor without a buffer view, which is how a Draco primitive's
   /// indices are written (they are in the Draco stream): those primitives' `indices` are taken out
-  /// of the JSON tinygltf reads, kept in draco_indices_, and put back after it.
-  /// Returns the JSON to give tinygltf, or nullopt when it is the file's own.
-  std::optional<std::string> without_draco_indices(const nlohmann::json& doc) {
+  /// of the JSON tinygltf reads (`copy`, made from `doc` when null), kept in draco_indices_, and put
+  /// back after it.
+  void take_out_draco_indices(const nlohmann::json& doc, nlohmann::json& copy) {
     // check_schema has checked the types and indices; this checks them again rather than rely on it.
     const auto meshes = doc.find("meshes");
     const auto accessors = doc.find("accessors");
-    if (meshes == doc.end() || accessors == doc.end() || !meshes->is_array() || !accessors->is_array()) return std::nullopt;
-    nlohmann::json copy;
+    if (meshes == doc.end() || accessors == doc.end() || !meshes->is_array() || !accessors->is_array()) return;
     for (size_t m = 0; m < meshes->size(); ++m) {
       const auto primitives = (*meshes)[m].find("primitives");
       if (primitives == (*meshes)[m].end() || !primitives->is_array()) continue;
@@ -294,8 +298,27 @@ class Importer {
         draco_indices_.push_back({m, k, int(a)});
       }
     }
-    if (copy.is_null()) return std::nullopt;
-    return copy.dump();
+  }
+
+  /// An EXT_meshopt_compression fallback buffer of a .gltf may have no URI (its bytes are never
+  /// read: the compressed views it stands behind are decoded), which tinygltf refuses: tinygltf reads
+  /// three zero bytes in its place. (In a .glb tinygltf takes such a buffer from the binary chunk.)
+  static void stub_fallback_buffers(const nlohmann::json& doc, nlohmann::json& copy) {
+    const auto buffers = doc.find("buffers");
+    if (buffers == doc.end() || !buffers->is_array()) return;
+    for (size_t i = 0; i < buffers->size(); ++i) {
+      const nlohmann::json& b = (*buffers)[i];
+      if (!b.is_object() || b.contains("uri")) continue;
+      const auto ext = b.find("extensions");
+      if (ext == b.end() || !ext->is_object()) continue;
+      const auto meshopt = ext->find("EXT_meshopt_compression");
+      if (meshopt == ext->end() || !meshopt->is_object()) continue;
+      const auto fallback = meshopt->find("fallback");
+      if (fallback == meshopt->end() || *fallback != true) continue;
+      if (copy.is_null()) copy = doc;
+      copy["buffers"][i]["uri"] = "data:application/octet-stream;base64,AAAA";
+      copy["buffers"][i]["byteLength"] = 3;
+    }
   }
 
   /// `bytes` (a .glb that check_glb accepted) with `json` as its JSON chunk.

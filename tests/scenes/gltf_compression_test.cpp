@@ -131,11 +131,39 @@ TEST(GltfCompression, ABrokenMeshoptStreamIsNamed) {
   expect_gltf_error(odd, "bufferViews[2].extensions.EXT_meshopt_compression ATTRIBUTES has byteStride 6 (4 to 256, a multiple of 4)",
                     [&] { load_gltf(odd); });
 
+  // A 61-byte stream that claims 64 MiB (with a view of that size, behind a fallback buffer that
+  // claims more) is refused before 64 MiB are allocated. (A .gltf: a .glb's fallback buffer is no
+  // longer than its binary chunk.)
+  GlbParts huge = split_glb(asset(kMeshoptBox));
+  huge.doc["bufferViews"][1]["extensions"]["EXT_meshopt_compression"]["count"] = 1 << 24;
+  huge.doc["bufferViews"][1]["byteLength"] = 1 << 26;
+  huge.doc["buffers"][1]["byteLength"] = 1 << 27;
+  huge.doc["buffers"][0]["uri"] = "data:application/octet-stream;base64," + base64(huge.bin);
+  const std::string claims = dir.file("claims.gltf");
+  write_text(claims, huge.doc.dump());
+  expect_gltf_error(claims, "bufferViews[1].extensions.EXT_meshopt_compression claims 67108864 bytes from 61, more than meshoptimizer's encoding holds",
+                    [&] { load_gltf(claims); });
+
   GlbParts outside = split_glb(asset(kMeshoptBox));
   outside.doc["bufferViews"][4]["extensions"]["EXT_meshopt_compression"]["byteOffset"] = 1u << 30;
   const std::string far = dir.file("outside.glb");
   write_glb_parts(far, outside);
   expect_gltf_error(far, "bufferViews[4].extensions.EXT_meshopt_compression reads bytes 1073741824 + 29 of buffer 0", [&] { load_gltf(far); });
+}
+
+// gltfpack's .gltf output: the fallback buffer has no URI.
+TEST(GltfCompression, AGltfWhoseFallbackBufferHasNoUriLoads) {
+  TempDir dir;
+  GlbParts parts = split_glb(asset(kMeshoptBox));
+  ASSERT_FALSE(parts.doc["buffers"][1].contains("uri"));
+  parts.doc["buffers"][0]["uri"] = "box.bin";
+  write_bytes(dir.file("box.bin"), parts.bin);
+  const std::string path = dir.file("box.gltf");
+  write_text(path, parts.doc.dump());
+  const Scene a = load_gltf(path, no_defaults()), b = load_gltf(asset(kMeshoptBox), no_defaults());
+  ASSERT_EQ(a.meshes.size(), 1u);
+  EXPECT_EQ(a.meshes[0].positions, b.meshes[0].positions);
+  EXPECT_EQ(a.meshes[0].normals, b.meshes[0].normals);
 }
 
 TEST(GltfCompression, QuantizedAttributesNeedTheExtension) {
