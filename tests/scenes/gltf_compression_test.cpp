@@ -202,5 +202,38 @@ TEST(GltfCompression, ABrokenDracoStreamIsNamed) {
                     [&] { load_gltf(missing); });
 }
 
+/// LEB128, as Draco writes its counts.
+std::vector<uint8_t> draco_varint(uint64_t n) {
+  std::vector<uint8_t> out;
+  do {
+    out.push_back(uint8_t((n & 0x7f) | (n >= 0x80 ? 0x80 : 0)));
+    n >>= 7;
+  } while (n);
+  return out;
+}
+
+// A Draco stream of 80 bytes whose sequential connectivity claims two billion triangles: refused
+// as a stream that does not decode, not read as a request for 24 GB.
+TEST(GltfCompression, ADracoStreamClaimingHugeCountsIsRefused) {
+  TempDir dir;
+  std::vector<uint8_t> stream = {'D', 'R', 'A', 'C', 'O', 2, 2, 1, 0, 0, 0};  // version 2.2, mesh, sequential, no flags
+  for (uint64_t count : {uint64_t(2'000'000'000), uint64_t(1'000'000)}) {
+    const std::vector<uint8_t> v = draco_varint(count);
+    stream.insert(stream.end(), v.begin(), v.end());
+  }
+  stream.push_back(1);  // uncompressed indices
+  stream.resize(stream.size() + 64, 0);
+  GltfBuilder b;
+  b.doc["extensionsUsed"] = b.doc["extensionsRequired"] = {"KHR_draco_mesh_compression"};
+  b.buffer.bytes = stream;
+  b.doc["bufferViews"] = {{{"buffer", 0}, {"byteLength", stream.size()}}};
+  b.doc["accessors"] = {{{"componentType", 5126}, {"count", 3}, {"type", "VEC3"}}, {{"componentType", 5125}, {"count", 3}, {"type", "SCALAR"}}};
+  b.doc["meshes"] = {{{"primitives", {{{"attributes", {{"POSITION", 0}}}, {"indices", 1},
+                                        {"extensions", {{"KHR_draco_mesh_compression", {{"bufferView", 0}, {"attributes", {{"POSITION", 0}}}}}}}}}}}};
+  b.add_node({{"mesh", 0}});
+  const std::string path = b.write(dir);
+  expect_gltf_error(path, "meshes[0].primitives[0]: the Draco stream does not decode", [&] { load_gltf(path); });
+}
+
 }  // namespace
 }  // namespace luxel::scenes::test
