@@ -8,6 +8,7 @@
 #include "baking.hpp"
 #include "commands.hpp"
 #include "memory_limit_option.hpp"
+#include "scene_argument.hpp"
 
 #include "luxel/bake/bake.hpp"
 #include "luxel/bake/storage.hpp"
@@ -51,18 +52,10 @@ Runner add_bake_command(CLI::App& app) {
     int code = 0;
     const std::optional<uint64_t> memory_limit = o->memory.bytes("bake", code);
     if (!memory_limit) return code;
-    std::optional<scenes::Scene> scene;
-    try {
-      scenes::GltfImportOptions gltf;
-      gltf.memory_limit = *memory_limit;
-      scene = scenes::load_scene(o->scene, gltf);
-    } catch (const scenes::SceneArgumentError& e) {
-      std::cerr << "luxel bake: --scene " << e.what() << "\n";
-      return 2;
-    } catch (const std::exception& e) {
-      std::cerr << "luxel bake: " << e.what() << "\n";
-      return 1;
-    }
+    scenes::GltfImportOptions gltf;
+    gltf.memory_limit = *memory_limit;
+    std::optional<scenes::Scene> scene = load_scene_or_report("bake", o->scene, gltf, {}, code);
+    if (!scene) return code;
     const std::string folder = o->out.empty() ? default_bake_folder(o->scene) : o->out;
     if (folder.empty()) {
       std::cerr << "luxel bake: " << o->scene << ": no HOME or XDG_CACHE_HOME to keep the bake in; give --out DIR\n";

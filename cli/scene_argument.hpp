@@ -14,12 +14,25 @@
 
 namespace luxel::cli {
 
-/// scenes::load_scene(arg, gltf, builtin), or nullopt after printing one line and setting `code`.
+/// Whether any mesh of the scene has a triangle: a file that places none would be an empty frame.
+inline bool draws_something(const scenes::Scene& scene) {
+  for (const scenes::Mesh& m : scene.meshes)
+    if (m.triangle_count() > 0) return true;
+  return false;
+}
+
+/// scenes::load_scene(arg, gltf, builtin), or nullopt after printing one line and setting `code`:
+/// a file that cannot be read, or that has nothing to draw. Warnings go to standard error, one line
+/// each after "luxel COMMAND: warning: ".
 inline std::optional<scenes::Scene> load_scene_or_report(const std::string& command, const std::string& arg,
-                                                         const scenes::GltfImportOptions& gltf,
+                                                         scenes::GltfImportOptions gltf,
                                                          const scenes::BuiltinOptions& builtin, int& code) {
+  if (!gltf.warn) gltf.warn = [command](const std::string& line) { std::cerr << "luxel " << command << ": warning: " << line << "\n"; };
   try {
-    return scenes::load_scene(arg, gltf, builtin);
+    scenes::Scene scene = scenes::load_scene(arg, gltf, builtin);
+    if (draws_something(scene)) return scene;
+    std::cerr << "luxel " << command << ": " << arg << ": nothing to draw: its scene places no triangles\n";
+    code = 1;
   } catch (const scenes::SceneArgumentError& e) {
     std::cerr << "luxel " << command << ": --scene " << e.what() << "\n";
     code = 2;

@@ -118,6 +118,8 @@ bool unsigned_index_type(int type) {
 }  // namespace
 
 Accessors::Accessors(const tinygltf::Model& model, std::string path) : model_(model), path_(std::move(path)) {
+  quantization_ = std::find(model_.extensionsUsed.begin(), model_.extensionsUsed.end(), "KHR_mesh_quantization") !=
+                  model_.extensionsUsed.end();
   for (size_t i = 0; i < model_.bufferViews.size(); ++i) check_view(i);
   for (size_t i = 0; i < model_.accessors.size(); ++i) check_accessor(i);
 }
@@ -216,16 +218,30 @@ void Accessors::for_each_sparse(const tinygltf::Accessor& a, const std::string& 
   }
 }
 
+bool Accessors::allowed_components(const tinygltf::Accessor& a, const AttributeRule& rule) const {
+  const int t = a.componentType;
+  if (t == TINYGLTF_COMPONENT_TYPE_FLOAT) return !a.normalized;
+  const bool small = t == TINYGLTF_COMPONENT_TYPE_BYTE || t == TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE ||
+                     t == TINYGLTF_COMPONENT_TYPE_SHORT || t == TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT;
+  const bool unsigned_small = t == TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE || t == TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT;
+  if (rule.normalized_integers && a.normalized && unsigned_small) return true;
+  if (!quantization_) return false;
+  switch (rule.quantized) {
+    case AttributeRule::Quantized::integers: return small;
+    case AttributeRule::Quantized::signed_normalized:
+      return a.normalized && (t == TINYGLTF_COMPONENT_TYPE_BYTE || t == TINYGLTF_COMPONENT_TYPE_SHORT);
+    default: return false;
+  }
+}
+
 Floats Accessors::attribute(int index, const AttributeRule& rule, const std::string& where) const {
   const tinygltf::Accessor& a = accessor(index, where);
   const std::string what = where + " " + rule.name + " (accessor " + std::to_string(index) + ")";
   if (std::find(rule.types.begin(), rule.types.end(), a.type) == rule.types.end())
     fail(what + " may not be " + type_name(a.type));
-  const bool is_float = a.componentType == TINYGLTF_COMPONENT_TYPE_FLOAT;
-  const bool unorm = a.normalized && (a.componentType == TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE ||
-                                      a.componentType == TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT);
-  if (!(is_float && !a.normalized) && !(rule.normalized_integers && unorm))
-    fail(what + " may not be " + std::string(a.normalized ? "normalized " : "") + component_name(a.componentType));
+  if (!allowed_components(a, rule))
+    fail(what + " may not be " + std::string(a.normalized ? "normalized " : "") + component_name(a.componentType) +
+         (quantization_ || rule.quantized == AttributeRule::Quantized::none ? "" : " (without KHR_mesh_quantization)"));
   if (a.count > kMaxGltfVertices)
     fail(what + " has " + std::to_string(a.count) + " vertices, more than luxel reads (" +
          std::to_string(kMaxGltfVertices) + ")");

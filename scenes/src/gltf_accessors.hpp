@@ -18,6 +18,9 @@ struct AttributeRule {
   const char* name;
   std::vector<int> types;
   bool normalized_integers = false;
+  /// What KHR_mesh_quantization adds, in a file that uses it: none; any byte or short, normalized
+  /// or not (POSITION, TEXCOORD); signed normalized bytes and shorts (NORMAL, TANGENT).
+  enum class Quantized { none, integers, signed_normalized } quantized = Quantized::none;
 };
 
 /// An accessor's values as floats, `components` per element (sparse substitutions applied,
@@ -54,8 +57,12 @@ class Accessors {
   void check_accessor(size_t index) const;
   const tinygltf::Accessor& accessor(int index, const std::string& where) const;
 
+  /// Whether `a` has a component type `rule` allows.
+  bool allowed_components(const tinygltf::Accessor& a, const AttributeRule& rule) const;
+
   const tinygltf::Model& model_;
   std::string path_;
+  bool quantization_ = false;  ///< the file uses KHR_mesh_quantization
 };
 
 }  // namespace luxel::scenes::gltf

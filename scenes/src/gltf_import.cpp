@@ -3,8 +3,10 @@
 
 #include "gltf_accessors.hpp"
 #include "gltf_axes.hpp"
+#include "gltf_compression.hpp"
 #include "gltf_materials.hpp"
 #include "gltf_scene_extras.hpp"
+#include "gltf_schema.hpp"
 #include "gltf_values.hpp"
 #include "one_line.hpp"
 #include "luxel/scenes/framing.hpp"
@@ -23,6 +25,7 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <iostream>
 #include <limits>
 #include <map>
 #include <optional>
@@ -40,8 +43,15 @@ using gltf::AttributeRule;
 /// Files larger than this are refused before they are read.
 constexpr uint64_t kMaxFileBytes = uint64_t{1} << 31;
 
-const std::vector<std::string> kSupportedExtensions = {"KHR_texture_transform", "KHR_lights_punctual",
-                                                       "KHR_materials_emissive_strength", "KHR_materials_unlit"};
+/// The extensions luxel reads (docs/gltf.md lists them with those it ignores and refuses).
+const std::vector<std::string> kReadExtensions = {"KHR_texture_transform",   "KHR_lights_punctual",
+                                                  "KHR_materials_emissive_strength", "KHR_materials_unlit",
+                                                  "KHR_mesh_quantization",   "EXT_meshopt_compression",
+                                                  "KHR_draco_mesh_compression"};
+
+bool reads_extension(const std::string& name) {
+  return std::find(kReadExtensions.begin(), kReadExtensions.end(), name) != kReadExtensions.end();
+}
 
 std::string first_line(const std::string& s) {
   size_t begin = 0;
@@ -100,11 +110,9 @@ class Importer {
 
   Scene run() {
     parse();
+    decode_compressed();
     Accessors accessors(model_, path_);
     accessors_ = &accessors;
-    for (const std::string& e : model_.extensionsRequired)
-      if (std::find(kSupportedExtensions.begin(), kSupportedExtensions.end(), e) == kSupportedExtensions.end())
-        fail("requires extension " + e + ", which luxel does not read");
     scene_.name = path_;
     images_.resize(model_.images.size());
     for (size_t i = 0; i < model_.materials.size(); ++i)
@@ -124,6 +132,12 @@ class Importer {
 
  private:
   [[noreturn]] void fail(const std::string& what) const { throw GltfError(path_ + ": " + what); }
+
+  void warn(const std::string& what) const {
+    const std::string line = one_line(path_ + ": " + what);
+    if (options_.warn) options_.warn(line);
+    else std::cerr << "luxel: warning: " << line << "\n";
+  }
 
   /// The memory limit's check (memory_limit.hpp), its refusal a GltfError like every problem here.
   void check_memory(uint64_t needed, const std::string& what) const {
@@ -173,10 +187,13 @@ class Importer {
   }
 
   void parse() {
-    const std::vector<uint8_t> bytes = read_whole(path_, "cannot open it");
+    std::vector<uint8_t> bytes = read_whole(path_, "cannot open it");
     const bool glb = bytes.size() >= 4 && std::memcmp(bytes.data(), "glTF", 4) == 0;
     if (glb) check_glb(bytes);
     if (bytes.empty()) fail("the file is empty");
+    if (const std::optional<std::string> json =
+            check_json(glb ? glb_json(bytes) : std::string_view(reinterpret_cast<const char*>(bytes.data()), bytes.size()), glb))
+      bytes = glb ? with_glb_json(bytes, *json) : std::vector<uint8_t>(json->begin(), json->end());
     tinygltf::TinyGLTF loader;
     loader.SetImageLoader(&Importer::collect_image, this);
     tinygltf::FsCallbacks callbacks{&Importer::file_exists, &Importer::expand_path, &Importer::read_file,
@@ -203,6 +220,123 @@ class Importer {
       }
       fail(why);
     }
+  }
+
+  /// The JSON chunk of a .glb that check_glb accepted.
+  static std::string_view glb_json(const std::vector<uint8_t>& b) {
+    uint32_t length;
+    std::memcpy(&length, b.data() + 12, 4);
+    return std::string_view(reinterpret_cast<const char*>(b.data()) + 20, length);
+  }
+
+  /// The schema's structure (gltf_schema.hpp) and the extensions, on JSON that parses; what does
+  /// not parse, tinygltf reports.
+  /// Returns the JSON tinygltf is to read instead of the file's, if any (take_out_draco_indices,
+  /// stub_fallback_buffers).
+  std::optional<std::string> check_json(std::string_view text, bool glb) {
+    const nlohmann::json doc = nlohmann::json::parse(text.begin(), text.end(), nullptr, false);
+    if (doc.is_discarded() || !doc.is_object()) return std::nullopt;
+    gltf::check_schema(doc, [this](const std::string& what) { fail(what); }, [this](const std::string& what) { warn(what); });
+    check_extensions(doc);
+    nlohmann::json copy;  // made when something is to change
+    take_out_draco_indices(doc, copy);
+    if (!glb) stub_fallback_buffers(doc, copy);
+    if (copy.is_null()) return std::nullopt;
+    return copy.dump();
+  }
+
+  /// A required extension luxel does not read refuses the file: drawn without it, it would be
+  /// drawn wrong. One that is only used is drawn without, with a warning.
+  void check_extensions(const nlohmann::json& doc) {
+    if (const auto it = doc.find("extensionsRequired"); it != doc.end())
+      for (const auto& e : *it)
+        if (!reads_extension(e.get<std::string>()))
+          fail("requires extension " + e.get<std::string>() + ", which luxel does not read");
+    if (const auto it = doc.find("extensionsUsed"); it != doc.end())
+      for (const auto& e : *it)
+        if (!reads_extension(e.get<std::string>()))
+          warn("uses extension " + e.get<std::string>() + ", which luxel does not read; drawn without it");
+  }
+
+  /// Compressed geometry decoded into plain buffers (gltf_compression.hpp), counted by the memory
+  /// limit with the buffers and images before each decoder allocates.
+  void decode_compressed() {
+    for (const auto& [mesh, primitive, accessor] : draco_indices_)
+      if (mesh < model_.meshes.size() && primitive < model_.meshes[mesh].primitives.size())
+        model_.meshes[mesh].primitives[primitive].indices = accessor;
+    gltf::DecodeReporting report;
+    report.fail = [this](const std::string& what) { fail(what); };
+    report.reserve = [this](uint64_t bytes, const std::string& what) {
+      check_memory(buffer_bytes() + image_bytes_ + bytes, "decoding " + what);
+    };
+    gltf::decode_meshopt_views(model_, report);
+    gltf::decode_draco_primitives(model_, report);
+  }
+
+  /// tinygltf 2.7 refuses an index accessor without a buffer view, which is how a Draco primitive's
+  /// indices are written (they are in the Draco stream): those primitives' `indices` are taken out
+  /// of the JSON tinygltf reads (`copy`, made from `doc` when null), kept in draco_indices_, and put
+  /// back after it.
+  void take_out_draco_indices(const nlohmann::json& doc, nlohmann::json& copy) {
+    // check_schema has checked the types and indices; this checks them again rather than rely on it.
+    const auto meshes = doc.find("meshes");
+    const auto accessors = doc.find("accessors");
+    if (meshes == doc.end() || accessors == doc.end() || !meshes->is_array() || !accessors->is_array()) return;
+    for (size_t m = 0; m < meshes->size(); ++m) {
+      const auto primitives = (*meshes)[m].find("primitives");
+      if (primitives == (*meshes)[m].end() || !primitives->is_array()) continue;
+      for (size_t k = 0; k < primitives->size(); ++k) {
+        const nlohmann::json& p = (*primitives)[k];
+        const auto ext = p.find("extensions");
+        const auto indices = p.find("indices");
+        if (ext == p.end() || !ext->is_object() || !ext->contains("KHR_draco_mesh_compression") || indices == p.end() ||
+            !indices->is_number_unsigned() || indices->get<size_t>() >= accessors->size())
+          continue;
+        const size_t a = indices->get<size_t>();
+        if (!(*accessors)[a].is_object() || (*accessors)[a].contains("bufferView")) continue;
+        if (copy.is_null()) copy = doc;
+        copy["meshes"][m]["primitives"][k].erase("indices");
+        draco_indices_.push_back({m, k, int(a)});
+      }
+    }
+  }
+
+  /// An EXT_meshopt_compression fallback buffer of a .gltf may have no URI (its bytes are never
+  /// read: the compressed views it stands behind are decoded), which tinygltf refuses: tinygltf reads
+  /// three zero bytes in its place. (In a .glb tinygltf takes such a buffer from the binary chunk.)
+  static void stub_fallback_buffers(const nlohmann::json& doc, nlohmann::json& copy) {
+    const auto buffers = doc.find("buffers");
+    if (buffers == doc.end() || !buffers->is_array()) return;
+    for (size_t i = 0; i < buffers->size(); ++i) {
+      const nlohmann::json& b = (*buffers)[i];
+      if (!b.is_object() || b.contains("uri")) continue;
+      const auto ext = b.find("extensions");
+      if (ext == b.end() || !ext->is_object()) continue;
+      const auto meshopt = ext->find("EXT_meshopt_compression");
+      if (meshopt == ext->end() || !meshopt->is_object()) continue;
+      const auto fallback = meshopt->find("fallback");
+      if (fallback == meshopt->end() || *fallback != true) continue;
+      if (copy.is_null()) copy = doc;
+      copy["buffers"][i]["uri"] = "data:application/octet-stream;base64,AAAA";
+      copy["buffers"][i]["byteLength"] = 3;
+    }
+  }
+
+  /// `bytes` (a .glb that check_glb accepted) with `json` as its JSON chunk.
+  static std::vector<uint8_t> with_glb_json(const std::vector<uint8_t>& bytes, const std::string& json) {
+    uint32_t old_length;
+    std::memcpy(&old_length, bytes.data() + 12, 4);
+    std::string chunk = json;
+    while (chunk.size() % 4) chunk += ' ';
+    std::vector<uint8_t> out(bytes.begin(), bytes.begin() + 12);
+    const uint32_t length = uint32_t(chunk.size()), type = 0x4E4F534Au;
+    out.insert(out.end(), reinterpret_cast<const uint8_t*>(&length), reinterpret_cast<const uint8_t*>(&length) + 4);
+    out.insert(out.end(), reinterpret_cast<const uint8_t*>(&type), reinterpret_cast<const uint8_t*>(&type) + 4);
+    out.insert(out.end(), chunk.begin(), chunk.end());
+    out.insert(out.end(), bytes.begin() + 20 + old_length, bytes.end());
+    const uint32_t total = uint32_t(out.size());
+    std::memcpy(out.data() + 8, &total, 4);
+    return out;
   }
 
   // tinygltf's file system, confined: it joins the folder and a (decoded) buffer URI, then asks.
@@ -587,11 +721,12 @@ class Importer {
       if (f.count != n) fail(where + " " + name + " has " + std::to_string(f.count) + " elements for " + std::to_string(n) + " positions");
       return f;
     };
-    const auto pos = read("POSITION", {"POSITION", {TINYGLTF_TYPE_VEC3}});
-    const auto nrm = read("NORMAL", {"NORMAL", {TINYGLTF_TYPE_VEC3}});
-    const auto tan = read("TANGENT", {"TANGENT", {TINYGLTF_TYPE_VEC4}});
-    const auto uv0 = read("TEXCOORD_0", {"TEXCOORD_0", {TINYGLTF_TYPE_VEC2}, true});
-    const auto uv1 = read("TEXCOORD_1", {"TEXCOORD_1", {TINYGLTF_TYPE_VEC2}, true});
+    using Q = AttributeRule::Quantized;
+    const auto pos = read("POSITION", {"POSITION", {TINYGLTF_TYPE_VEC3}, false, Q::integers});
+    const auto nrm = read("NORMAL", {"NORMAL", {TINYGLTF_TYPE_VEC3}, false, Q::signed_normalized});
+    const auto tan = read("TANGENT", {"TANGENT", {TINYGLTF_TYPE_VEC4}, false, Q::signed_normalized});
+    const auto uv0 = read("TEXCOORD_0", {"TEXCOORD_0", {TINYGLTF_TYPE_VEC2}, true, Q::integers});
+    const auto uv1 = read("TEXCOORD_1", {"TEXCOORD_1", {TINYGLTF_TYPE_VEC2}, true, Q::integers});
     const auto col = read("COLOR_0", {"COLOR_0", {TINYGLTF_TYPE_VEC3, TINYGLTF_TYPE_VEC4}, true});
 
     // Indices as the mode defines triangles (glTF 2.0 section 3.7.2.1).
@@ -807,6 +942,8 @@ class Importer {
   tinygltf::Model model_;
   const Accessors* accessors_ = nullptr;
   std::map<int, std::vector<uint8_t>> data_uri_images_;
+  struct DracoIndices { size_t mesh, primitive; int accessor; };
+  std::vector<DracoIndices> draco_indices_;
   std::string fs_error_;
   std::vector<std::optional<PixelImage>> images_;
   // What the memory limit counts as the file is read: its files' bytes, its images' pixels.

@@ -300,10 +300,10 @@ TEST(GltfImport, IndicesThatAreNotIntegersAreNamed) {
   b.doc["extensions"] = {{"KHR_lights_punctual", {{"lights", {{{"type", "point"}}, {{"type", "point"}}, {{"type", "point"}}}}}}};
   b.add_node({{"name", "lamp"}, {"extensions", {{"KHR_lights_punctual", {{"light", 2.5}}}}}});
   const std::string half = b.write(dir, "half.gltf");
-  expect_gltf_error(half, "refers to light 2.5, which is not an index", [&] { load_gltf(half); });
+  expect_gltf_error(half, "nodes[0].extensions.KHR_lights_punctual.light is a fractional number (2.5), not an index", [&] { load_gltf(half); });
   b.doc["nodes"][0]["extensions"]["KHR_lights_punctual"]["light"] = 1e300;
   const std::string huge = b.write(dir, "huge.gltf");
-  expect_gltf_error(huge, "refers to light 1.0000000000000001e+300, which is not an index", [&] { load_gltf(huge); });
+  expect_gltf_error(huge, "nodes[0].extensions.KHR_lights_punctual.light is a fractional number (1e+300), not an index", [&] { load_gltf(huge); });
 
   GltfBuilder m;
   m.doc["materials"] = {{{"extras", {{"luxel", {{"bumpmap", {{"index", -1e300}}}}}}}}};

@@ -37,6 +37,10 @@
 //   that node's translation from its rest, taken to world space by its parent's matrix; LINEAR
 //   exactly, STEP and CUBICSPLINE as linear between their keys' values. World geometry does not
 //   move.
+// - Compressed and quantized geometry: EXT_meshopt_compression buffer views and
+//   KHR_draco_mesh_compression primitives are decoded into plain buffers first
+//   (gltf_compression.hpp); KHR_mesh_quantization allows bytes and shorts for POSITION and
+//   TEXCOORD (normalized or not) and normalized signed ones for NORMAL and TANGENT.
 // - Skins, morph targets, other animations and rotation or scale channels are ignored (the bind
 //   pose is drawn).
 //
@@ -104,7 +108,12 @@
 // every asset renders to something visible.
 //
 // ## Errors
-// Every problem throws GltfError whose what() is one line "FILE: problem". Before any data is
+// Every problem throws GltfError whose what() is one line "FILE: problem". First the JSON's
+// structure where luxel reads it (gltf_schema.hpp): a list that is not an array, an index of the
+// wrong type or to nothing, a `scene` that names no scene is "FILE: JSON.PATH problem"; a
+// wrong-typed or out-of-range optional value is a warning (GltfImportOptions::warn) naming the path
+// and the value used. An extension in extensionsRequired that luxel does not read refuses the file,
+// one only in extensionsUsed is a warning (docs/gltf.md lists them). Before any data is
 // read, luxel checks in 64-bit arithmetic that every accessor (and sparse part) lies within its
 // buffer view and buffer, the component types and types each attribute may have, byte strides,
 // index values against the vertex count, the limits below, that URIs stay in the file's folder
@@ -126,6 +135,7 @@
 #include <glm/vec3.hpp>
 
 #include <cstdint>
+#include <functional>
 #include <optional>
 #include <stdexcept>
 #include <string>
@@ -158,6 +168,10 @@ struct GltfImportOptions {
   std::optional<glm::vec3> missing_normal = std::nullopt;
   /// The most bytes the file may ask for (above, and memory_limit.hpp).
   uint64_t memory_limit = kDefaultMemoryLimit;
+  /// Where each warning goes: one line "FILE: problem; what is used instead" (a wrong-typed
+  /// optional value, an extension used but not read). Unset: standard error, after
+  /// "luxel: warning: ".
+  std::function<void(const std::string&)> warn;
 };
 
 /// Reads a .gltf or .glb file (told apart by its first bytes). Scene::name is `path`.
