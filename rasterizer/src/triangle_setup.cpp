@@ -1,7 +1,11 @@
-// The front end of a draw: trivial reject, clipping (near, far, guard band), perspective divide,
-// viewport transform, snapping to 1/256 pixel, culling, edge and plane setup, and binning.
+// The front end of a draw: perspective divide, viewport transform, snapping to 1/256 pixel,
+// culling, edge and plane setup, kLanes triangles at a time, each set-up triangle then binned
+// (binning.cpp); a triangle not wholly inside the view volume goes through clipping.cpp first.
 
 #include "luxel/rasterizer/detail/triangle_setup.hpp"
+
+#include "binning.hpp"
+#include "front_end.hpp"
 
 #include "luxel/rasterizer/draw.hpp"
 #include "luxel/rasterizer/msaa.hpp"
@@ -16,112 +20,6 @@
 #include <new>
 
 namespace luxel::rasterizer::detail {
-
-void RecordStream::grow(size_t needed) {
-  const size_t capacity = std::max<size_t>({needed, 2 * capacity_, 4096});
-  std::unique_ptr<std::byte[]> data(new std::byte[capacity]);  // uninitialized: records are written whole
-  if (size_) std::memcpy(data.get(), data_.get(), size_);
-  data_ = std::move(data);
-  capacity_ = capacity;
-}
-
-size_t ChunkBins::bytes() const {
-  size_t bytes = size_t(tile_count) * sizeof(RecordStream);
-  for (uint32_t t : touched_tiles) bytes += tile_records[t].size();
-  return bytes;
-}
-
-void ChunkBins::reset(int tiles) {
-  for (uint32_t t : touched_tiles) tile_records[t].clear();
-  touched_tiles.clear();
-  if (tile_records.size() < size_t(tiles)) tile_records.resize(size_t(tiles));
-  tile_count = tiles;
-}
-
-namespace {
-
-static_assert(std::has_single_bit(unsigned(kTileSize)));
-constexpr int kTileShift = std::countr_zero(unsigned(kTileSize));
-
-/// Clip planes: a vertex is inside when dot(plane, position) >= 0.
-struct ClipPlanes {
-  glm::vec4 plane[6];
-};
-
-ClipPlanes make_clip_planes(const DrawConstants& dc) {
-  return {{
-      {0, 0, 1, 0},                   // near: z >= 0
-      {0, 0, -1, 1},                  // far: z <= w
-      {1, 0, 0, -dc.guard_min_x},     // x >= guard_min_x * w
-      {-1, 0, 0, dc.guard_max_x},     // x <= guard_max_x * w
-      {0, 1, 0, -dc.guard_min_y},
-      {0, -1, 0, dc.guard_max_y},
-  }};
-}
-
-float plane_distance(const glm::vec4& plane, const float* p) {
-  return plane.x * p[0] + plane.y * p[1] + plane.z * p[2] + plane.w * p[3];
-}
-
-}  // namespace
-
-int clip_polygon(const glm::vec4& plane, const ClipVertex* in, int n, ClipVertex* out, int floats) {
-  int m = 0;
-  for (int i = 0; i < n; ++i) {
-    const ClipVertex& a = in[i];
-    const ClipVertex& b = in[(i + 1) % n];
-    const float da = plane_distance(plane, a.v);
-    const float db = plane_distance(plane, b.v);
-    // Each input vertex emits itself if inside and a crossing if its edge changes side.
-    if (m + (da >= 0) + ((da >= 0) != (db >= 0)) > kMaxClipVertices) return -1;
-    if (da >= 0) out[m++] = a;
-    if ((da >= 0) != (db >= 0)) {
-      // Interpolate from the inside vertex so that a shared edge clips to the same point from
-      // both of its triangles (watertight clipping).
-      const bool a_inside = da >= 0;
-      const ClipVertex& from = a_inside ? a : b;
-      const ClipVertex& to = a_inside ? b : a;
-      const float dfrom = a_inside ? da : db, dto = a_inside ? db : da;
-      const float t = dfrom / (dfrom - dto);
-      ClipVertex& v = out[m++];
-      for (int k = 0; k < floats; ++k) v.v[k] = from.v[k] + t * (to.v[k] - from.v[k]);
-    }
-  }
-  return m;
-}
-
-namespace {
-
-bool finite_position(const glm::vec4& p) {
-  return std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z) && std::isfinite(p.w);
-}
-
-/// Screen-space gradients of values at the snapped vertices: the two edge vectors from vertex
-/// 0 (pixels) and one over their cross product (the signed doubled area).
-struct PlaneBasis {
-  double e1x, e1y, e2x, e2y, inv_det;
-
-  Plane plane(double q0, double q1, double q2) const {
-    const double d1 = q1 - q0, d2 = q2 - q0;
-    return {static_cast<float>(q0), static_cast<float>((d1 * e2y - d2 * e1y) * inv_det),
-            static_cast<float>((d2 * e1x - d1 * e2x) * inv_det)};
-  }
-};
-
-Edge make_edge(int32_t x0, int32_t y0, int32_t x1, int32_t y1) {
-  const int32_t dx = x1 - x0, dy = y1 - y0;
-  // Top-left rule (y down, interior on the positive side): left edges go up, top edges are
-  // horizontal and go right. Samples exactly on other edges are outside. (Bitwise, not
-  // short-circuit: the edge directions of a mesh are random, a branch here mispredicts.)
-  const bool top_left = (dy < 0) | ((dy == 0) & (dx > 0));
-  return {-dy, dx, int64_t(dy) * x0 - int64_t(dx) * y0 - int64_t(!top_left)};
-}
-
-/// Snapped screen positions of kLanes vertices, lane l from rows[l].
-struct SnappedLanes {
-  alignas(64) int32_t X[simd::kLanes], Y[simd::kLanes];
-  alignas(64) float x[simd::kLanes], y[simd::kLanes], z[simd::kLanes], inv_w[simd::kLanes];
-};
 
 /// Snaps kLanes vertices (clip-space positions rows[l]) to 1/256 pixel. Every vertex is snapped
 /// here, clipped or not, so a vertex shared by a clipped and an unclipped triangle lands on the
@@ -158,60 +56,18 @@ simd::LaneBits snap_vertices(const DrawConstants& dc, const float* const* rows, 
   return simd::to_bits(snappable);
 }
 
-/// kLanes triangles, lane l triangle l: where each vertex's data is (position, then varyings),
-/// and the vertices snapped.
-struct TriangleLanes {
-  const float* data[3][simd::kLanes];
-  SnappedLanes vertex[3];
-  simd::LaneBits snappable = 0;  ///< lanes whose three vertices snapped
-  simd::LaneBits in_view = 0;    ///< lanes whose three vertices lie inside the view volume
+namespace {
 
-  /// Snaps the vertices of triangles 0..count-1; the lanes above become copies of the last
-  /// triangle (so that every lane reads valid data) and are left out of both masks.
-  void snap(const DrawConstants& dc, int count) {
-    const simd::LaneBits lanes = simd::kAllLanes >> (simd::kLanes - count);
-    snappable = in_view = lanes;
-    for (int k = 0; k < 3; ++k) {
-      for (int l = count; l < simd::kLanes; ++l) data[k][l] = data[k][count - 1];
-      simd::LaneBits view;
-      snappable &= snap_vertices(dc, data[k], vertex[k], view);
-      in_view &= view;
-    }
-  }
-};
+Edge make_edge(int32_t x0, int32_t y0, int32_t x1, int32_t y1) {
+  const int32_t dx = x1 - x0, dy = y1 - y0;
+  // Top-left rule (y down, interior on the positive side): left edges go up, top edges are
+  // horizontal and go right. Samples exactly on other edges are outside. (Bitwise, not
+  // short-circuit: the edge directions of a mesh are random, a branch here mispredicts.)
+  const bool top_left = (dy < 0) | ((dy == 0) & (dx > 0));
+  return {-dy, dx, int64_t(dy) * x0 - int64_t(dx) * y0 - int64_t(!top_left)};
+}
 
-/// What setup computes for kLanes triangles at once, lane l for triangle l. The products of
-/// subpixel coordinates (the doubled area, up to 2^48) are exact in doubles, as the planes were
-/// computed in doubles one triangle at a time: the results are the same bits.
-struct SetupLanes {
-  alignas(64) int32_t x0[simd::kLanes], y0[simd::kLanes], x1[simd::kLanes], y1[simd::kLanes];
-  alignas(64) int32_t tile[simd::kLanes];  ///< the tile of pixel (x0, y0)
-  alignas(64) double e1x[simd::kLanes], e1y[simd::kLanes], e2x[simd::kLanes], e2y[simd::kLanes];
-  alignas(64) double inv_det[simd::kLanes];
-  /// Lane l's record as write_record writes it: the TriangleSetup header, and SmallEdges (small
-  /// lanes). Built in lanes and transposed: writing a record is two 32-byte copies.
-  alignas(32) int32_t header[simd::kLanes][8];
-  alignas(32) int32_t small_edges[simd::kLanes][8];
-  simd::LaneBits zero_area = 0;  ///< degenerate after snapping
-  simd::LaneBits culled = 0;     ///< facing away by the cull mode (zero-area lanes excluded)
-  simd::LaneBits empty = 0;      ///< no pixel inside the clip rectangle
-  simd::LaneBits clockwise = 0;  ///< on screen, y down
-  simd::LaneBits small = 0;      ///< TriangleSetup::small
-  simd::LaneBits affine = 0;     ///< equal 1/w at the three vertices
-  simd::LaneBits one_tile = 0;   ///< all pixels in `tile`
-
-  PlaneBasis basis(int l) const { return {e1x[l], e1y[l], e2x[l], e2y[l], inv_det[l]}; }
-  /// Lanes that are set up but will not be binned.
-  simd::LaneBits rejected() const { return zero_area | culled | empty; }
-};
-
-// The header as setup_lanes lays it out: eight 32-bit fields.
-static_assert(sizeof(TriangleSetup) == 32 && offsetof(TriangleSetup, x0) == 0 && offsetof(TriangleSetup, y0) == 2 &&
-              offsetof(TriangleSetup, x1) == 4 && offsetof(TriangleSetup, y1) == 6 &&
-              offsetof(TriangleSetup, ref_x) == 8 && offsetof(TriangleSetup, ref_y) == 12 &&
-              offsetof(TriangleSetup, z) == 16 && sizeof(Plane) == 12 &&
-              offsetof(TriangleSetup, record_blocks) == 28 && offsetof(TriangleSetup, flags) == 29);
-static_assert(sizeof(SmallEdges) == 32);
+}  // namespace
 
 /// Edge k of triangle l, on its vertices in positive (clockwise) order.
 Edge lane_edge(const TriangleLanes& tri, const SetupLanes& setup, int l, int k) {
@@ -221,6 +77,8 @@ Edge lane_edge(const TriangleLanes& tri, const SetupLanes& setup, int l, int k) 
   const SnappedLanes* v = tri.vertex;
   return make_edge(v[from].X[l], v[from].Y[l], v[to].X[l], v[to].Y[l]);
 }
+
+namespace {
 
 /// Per-sample edge values of a stamp fit 32 bits (TriangleSetup::narrow_edges); triangle l is
 /// not small (small triangles always are).
@@ -373,115 +231,6 @@ void setup_lanes(const DrawConstants& dc, const TriangleLanes& tri, simd::LaneBi
   simd::transpose_to_rows(header, out.header);
 }
 
-/// The parts of a record after its header, for any triangle but a small flat-shaded one (out of
-/// line: rare in the workloads where setup is the bottleneck): wide edges, interpolated varyings.
-[[gnu::noinline]] void write_record_rest(const DrawConstants& dc, const TriangleLanes& tri, const SetupLanes& setup,
-                                         int l, std::byte* record) {
-  const int flags = setup.header[l][7] >> 8;
-  const bool small = flags & TriangleSetup::kSmall;
-  if (small) {
-    std::memcpy(record + sizeof(TriangleSetup), setup.small_edges[l], sizeof(SmallEdges));
-  } else {
-    Edge* e = ::new (record + sizeof(TriangleSetup)) Edge[3];
-    for (int k = 0; k < 3; ++k) e[k] = lane_edge(tri, setup, l, k);
-  }
-  const glm::vec4* a[3];  // the varyings of the three vertices
-  for (int k = 0; k < 3; ++k) a[k] = reinterpret_cast<const glm::vec4*>(tri.data[k][l]) + 1;
-  std::byte* tail = record + TriangleSetup::varyings_offset(small);
-  if (flags & TriangleSetup::kFlat) {
-    for (int i = 0; i < dc.varyings; ++i) std::memcpy(tail + 16 * i, &a[0][i], 16);
-    return;
-  }
-  // Planes in the vertices' own order.
-  const PlaneBasis basis = setup.basis(l);
-  if (flags & TriangleSetup::kAffine) {
-    // Equal w: varyings are linear on screen, a plane per component (a constant one exactly).
-    Plane* planes = reinterpret_cast<Plane*>(tail);
-    for (int i = 0; i < dc.varyings; ++i)
-      for (int c = 0; c < 4; ++c) planes[4 * i + c] = basis.plane(a[0][i][c], a[1][i][c], a[2][i][c]);
-    return;
-  }
-  // Perspective-correct barycentrics: b_k = (b_k / w) / (1 / w).
-  const SnappedLanes* v = tri.vertex;
-  Barycentrics& bary = *::new (tail) Barycentrics;
-  bary.inv_w = basis.plane(v[0].inv_w[l], v[1].inv_w[l], v[2].inv_w[l]);
-  bary.b1_w = basis.plane(0.0, v[1].inv_w[l], 0.0);
-  bary.b2_w = basis.plane(0.0, 0.0, v[2].inv_w[l]);
-  float* d = reinterpret_cast<float*>(tail + sizeof(Barycentrics));
-  for (int i = 0; i < dc.varyings; ++i, d += 12) {
-    for (int c = 0; c < 4; ++c) {
-      d[c] = a[0][i][c];
-      d[4 + c] = a[1][i][c] - a[0][i][c];
-      d[8 + c] = a[2][i][c] - a[0][i][c];
-    }
-  }
-}
-
-/// Writes triangle l's record at `record` from setup's rows: a record line was just allocated
-/// and is not in the cache, so nothing may be read from it, and a wider load of values just
-/// stored narrower (a struct built on the stack, copied) cannot be forwarded from the store
-/// buffer and waits for every older store to reach the cache.
-LUXEL_INLINE void write_record(const DrawConstants& dc, const TriangleLanes& tri, const SetupLanes& setup, int l,
-                               std::byte* record) {
-  std::memcpy(record, setup.header[l], sizeof(TriangleSetup));
-  constexpr int kSmallFlat = TriangleSetup::kSmall | TriangleSetup::kFlat;
-  if ((setup.header[l][7] >> 8 & kSmallFlat) != kSmallFlat) {
-    write_record_rest(dc, tri, setup, l, record);
-    return;
-  }
-  std::memcpy(record + sizeof(TriangleSetup), setup.small_edges[l], sizeof(SmallEdges));
-  std::byte* tail = record + TriangleSetup::varyings_offset(true);
-  for (int i = 0; i < dc.varyings; ++i) std::memcpy(tail + 16 * i, tri.data[0][l] + 4 * (1 + i), 16);
-}
-
-/// Room for a record of `bytes` at the end of `tile`'s stream.
-LUXEL_INLINE std::byte* append_to_tile(ChunkBins& bins, int tile, size_t bytes) {
-  RecordStream& records = bins.tile_records[tile];
-  if (records.empty()) bins.touched_tiles.push_back(static_cast<uint32_t>(tile));
-  return records.append(bytes);
-}
-
-/// The bytes of triangle l's record.
-LUXEL_INLINE size_t record_bytes(const SetupLanes& setup, int l) { return 16 * size_t(setup.header[l][7] & 0xff); }
-
-/// Appends triangle l's record to `tile`'s stream.
-LUXEL_INLINE void emit_record(const DrawConstants& dc, const TriangleLanes& tri, const SetupLanes& setup, int l,
-                              int tile, ChunkBins& bins) {
-  write_record(dc, tri, setup, l, append_to_tile(bins, tile, record_bytes(setup, l)));
-}
-
-/// Writes triangle l's record (set up and not rejected) into every tile it touches (less those
-/// wholly outside an edge).
-[[gnu::noinline]] void bin_to_tiles(const DrawConstants& dc, const TriangleLanes& tri, const SetupLanes& setup, int l,
-                                    ChunkBins& bins) {
-  const int tx0 = setup.x0[l] >> kTileShift, ty0 = setup.y0[l] >> kTileShift;
-  const int tx1 = (setup.x1[l] - 1) >> kTileShift, ty1 = (setup.y1[l] - 1) >> kTileShift;
-  const Edge edges[3] = {lane_edge(tri, setup, l, 0), lane_edge(tri, setup, l, 1), lane_edge(tri, setup, l, 2)};
-  const size_t bytes = record_bytes(setup, l);
-  // The record is the same in every tile: written from setup's rows once (its planes are computed
-  // in double), copied after.
-  const std::byte* first = nullptr;
-  for (int ty = ty0; ty <= ty1; ++ty) {
-    for (int tx = tx0; tx <= tx1; ++tx) {
-      const int64_t X0 = int64_t(tx) * kTileSize * kSubpixelsPerPixel, X1 = X0 + kTileSize * kSubpixelsPerPixel - 1;
-      const int64_t Y0 = int64_t(ty) * kTileSize * kSubpixelsPerPixel, Y1 = Y0 + kTileSize * kSubpixelsPerPixel - 1;
-      bool outside = false;
-      for (const Edge& e : edges) {
-        const int64_t emax = e.c + std::max(e.a * X0, e.a * X1) + std::max(e.b * Y0, e.b * Y1);
-        outside |= emax < 0;
-      }
-      if (outside) continue;
-      std::byte* record = append_to_tile(bins, ty * dc.tiles_x + tx, bytes);  // another stream than `first`'s
-      if (first) {
-        std::memcpy(record, first, bytes);
-      } else {
-        write_record(dc, tri, setup, l, record);
-        first = record;
-      }
-    }
-  }
-}
-
 /// Sets up and bins triangles 0..count-1 of `tri` (snapped) in order; `ready` are those to set
 /// up, the others go to `other(l)` in their turn.
 template <class Other>
@@ -506,15 +255,7 @@ void setup_and_bin(const DrawConstants& dc, const TriangleLanes& tri, int count,
   }
 }
 
-/// Which clip-space half-spaces a position lies outside of: bits 0-3 the writable pixel
-/// rectangle (-x, +x, -y, +y), bits 4-5 near and far, bits 6-9 the guard band (-x, +x, -y, +y).
-unsigned outcode(const DrawConstants& dc, const glm::vec4& p) {
-  return unsigned(p.x < dc.reject_min_x * p.w) | unsigned(p.x > dc.reject_max_x * p.w) << 1 |
-         unsigned(p.y < dc.reject_min_y * p.w) << 2 | unsigned(p.y > dc.reject_max_y * p.w) << 3 |
-         unsigned(p.z < 0) << 4 | unsigned(p.z > p.w) << 5 | unsigned(p.x < dc.guard_min_x * p.w) << 6 |
-         unsigned(p.x > dc.guard_max_x * p.w) << 7 | unsigned(p.y < dc.guard_min_y * p.w) << 8 |
-         unsigned(p.y > dc.guard_max_y * p.w) << 9;
-}
+}  // namespace
 
 /// Sets up and bins the fan of an n-gon (n - 2 triangles from its first vertex, which keeps the
 /// winding); each vertex is a position followed by varyings. The fan of a fully clipped polygon
@@ -532,56 +273,6 @@ void setup_fan(const DrawConstants& dc, const float* const* polygon, int n, Chun
     setup_and_bin(dc, tri, count, tri.snappable, bins, stats, [&](int) { ++stats.degenerate; });
   }
 }
-
-/// The path of a triangle not wholly inside the view volume, or with a vertex that would not
-/// snap: non-finite and trivial rejects, clipping, then setup.
-void clip_and_bin(const DrawConstants& dc, const glm::vec4* const vertices[3], ChunkBins& bins, DrawStats& stats) {
-  const glm::vec4& p0 = vertices[0][0];
-  const glm::vec4& p1 = vertices[1][0];
-  const glm::vec4& p2 = vertices[2][0];
-  if (!(finite_position(p0) && finite_position(p1) && finite_position(p2))) {
-    ++stats.non_finite;
-    return;
-  }
-  const float* v[3] = {&p0.x, &p1.x, &p2.x};
-  const unsigned c0 = outcode(dc, p0), c1 = outcode(dc, p1), c2 = outcode(dc, p2);
-  if (c0 & c1 & c2 & 0x3f) {  // all three beyond one side of the writable rectangle, near or far
-    ++stats.outside;
-    return;
-  }
-  // Bits 4-9: some vertex lies beyond the near, far or a guard-band plane.
-  if (((c0 | c1 | c2) & 0x3f0) == 0) {
-    setup_fan(dc, v, 3, bins, stats);
-    return;
-  }
-
-  ++stats.clipped;
-  const ClipPlanes planes = make_clip_planes(dc);
-  const int floats = 4 * (1 + dc.varyings);
-  ClipVertex buffer[2][kMaxClipVertices];
-  for (int k = 0; k < 3; ++k) std::copy(v[k], v[k] + floats, buffer[0][k].v);
-  int n = 3, current = 0;
-  for (int i = 0; i < 6 && n >= 3; ++i) {
-    // Each plane tests the polygon as it is now, not the original vertices: a vertex an earlier
-    // plane made (a near-plane intersection has w close to 0) can lie beyond a guard-band plane
-    // that all three original vertices respected.
-    const ClipVertex* polygon = buffer[current];
-    if (std::all_of(polygon, polygon + n, [&](const ClipVertex& c) { return plane_distance(planes.plane[i], c.v) >= 0; }))
-      continue;
-    n = clip_polygon(planes.plane[i], buffer[current], n, buffer[1 - current], floats);
-    if (n < 0) {
-      ++stats.clip_overflow;
-      return;
-    }
-    current = 1 - current;
-  }
-  if (n < 3) return;
-  const float* polygon[kMaxClipVertices];
-  for (int k = 0; k < n; ++k) polygon[k] = buffer[current][k].v;
-  setup_fan(dc, polygon, n, bins, stats);
-}
-
-}  // namespace
 
 void process_triangles(const DrawConstants& dc, const glm::vec4* const* vertices, int count, ChunkBins& bins,
                        DrawStats& stats) {
