@@ -1,5 +1,7 @@
-// Texture storage: creation and validation, uploads, texel loads, mip generation, and the scalar
-// format conversions and cube-face geometry the sampling paths share.
+// Texture storage: creation and validation, uploads, texel loads, and the scalar format
+// conversions and cube-face geometry the sampling paths share. Mip generation is in
+// texture_mips.cpp, the copies sampling reads (cube maps' bordered copy, volumes' cells) in
+// texture_copies.cpp.
 
 #include "luxel/rasterizer/texture.hpp"
 
@@ -372,79 +374,6 @@ void Texture::set_level_opaque(int level, int face, bool opaque) {
   opaque_ = std::all_of(level_opaque_.begin(), level_opaque_.end(), [](uint8_t o) { return o != 0; });
 }
 
-// --- The volumes' trilinear cells ------------------------------------------------------------
-
-void Texture::refresh_cells() {
-  if (cell_words_.empty()) return;
-  const int w = width_, h = height_, d = depth_;
-  const auto texel = [&](int i, int j, int k) {
-    return words_[(static_cast<size_t>(std::clamp(k, 0, d - 1)) * h + std::clamp(j, 0, h - 1)) * w + std::clamp(i, 0, w - 1)];
-  };
-  uint32_t* cell = cell_words_.data();
-  for (int k = -1; k <= d; ++k)
-    for (int j = -1; j < h; ++j)
-      for (int i = -1; i < w; ++i)
-        for (int corner = 0; corner < 4; ++corner) *cell++ = texel(i + (corner & 1), j + (corner >> 1), k);
-}
-
-// --- The cube maps' sampling copy -------------------------------------------------------------
-
-namespace {
-
-/// Where a texel one step past an edge of a face is read: on face `face`, at column `i` and row
-/// `j` given as codes: kFirst (0), kLast (n - 1), kAlong (the texel's position along the edge),
-/// kAlongFlipped (n - 1 - that). Derived from the face bases in texture.hpp by folding the
-/// overhanging texel onto the neighbouring face (it agrees entry by entry with llvmpipe's
-/// lp_build_cube_new_coords); texture_reference.cpp reaches the same texels by ray casting, and
-/// the tests hold the two together.
-enum EdgeCode : uint8_t { kFirst, kLast, kAlong, kAlongFlipped };
-struct EdgeTarget {
-  uint8_t face;
-  EdgeCode i, j;
-};
-// [face][edge], edges: 0 = left (i < 0), 1 = right (i >= n), 2 = top (j < 0), 3 = bottom (j >= n).
-constexpr EdgeTarget kCubeEdges[6][4] = {
-    {{4, kLast, kAlong}, {5, kFirst, kAlong}, {2, kLast, kAlongFlipped}, {3, kLast, kAlong}},            // +X
-    {{5, kLast, kAlong}, {4, kFirst, kAlong}, {2, kFirst, kAlong}, {3, kFirst, kAlongFlipped}},          // -X
-    {{1, kAlong, kFirst}, {0, kAlongFlipped, kFirst}, {5, kAlongFlipped, kFirst}, {4, kAlong, kFirst}},  // +Y
-    {{1, kAlongFlipped, kLast}, {0, kAlong, kLast}, {4, kAlong, kLast}, {5, kAlongFlipped, kLast}},      // -Y
-    {{1, kLast, kAlong}, {0, kFirst, kAlong}, {2, kAlong, kLast}, {3, kAlong, kFirst}},                  // +Z
-    {{0, kLast, kAlong}, {1, kFirst, kAlong}, {2, kAlongFlipped, kFirst}, {3, kAlongFlipped, kLast}},    // -Z
-};
-
-int edge_coordinate(EdgeCode code, int along, int n) {
-  switch (code) {
-    case kFirst: return 0;
-    case kLast: return n - 1;
-    case kAlong: return along;
-    case kAlongFlipped: return n - 1 - along;
-  }
-  return 0;
-}
-
-}  // namespace
-
-void Texture::refresh_cube_copy(int level, int changed_face) {
-  if (kind_ != TextureKind::Cube) return;
-  const int n = width(level), stride = n + 2, w = words_per_texel_;
-  auto texel = [&](int face, int i, int j) { return words_.data() + face * face_words_ + level_offset_[level] + (j * n + i) * w; };
-  for (int face = 0; face < 6; ++face) {
-    uint32_t* copy = cube_words_.data() + face * cube_face_words_ + cube_level_offset_[level];
-    if (changed_face < 0 || face == changed_face)
-      for (int j = 0; j < n; ++j) std::memcpy(copy + ((j + 1) * stride + 1) * w, texel(face, 0, j), size_t(n) * w * 4);
-    // The border, of every face (any may show the changed one); its corners stay 0, as the
-    // filter computes the texels past a corner.
-    for (int edge = 0; edge < 4; ++edge) {
-      const EdgeTarget& to = kCubeEdges[face][edge];
-      for (int along = 0; along < n; ++along) {
-        const int x = edge == 0 ? -1 : edge == 1 ? n : along, y = edge == 2 ? -1 : edge == 3 ? n : along;
-        std::memcpy(copy + ((y + 1) * stride + x + 1) * w,
-                    texel(to.face, edge_coordinate(to.i, along, n), edge_coordinate(to.j, along, n)), size_t(w) * 4);
-      }
-    }
-  }
-}
-
 glm::vec4 Texture::load(int x, int y, int z, int level) const {
   const int face = kind_ == TextureKind::Cube ? z : 0;
   const int slice = kind_ == TextureKind::Cube ? 0 : z;
@@ -456,97 +385,6 @@ glm::vec4 Texture::load(int x, int y, int z, int level) const {
   const size_t index = (static_cast<size_t>(slice) * height(level) + y) * width(level) + x;
   const auto bytes = level_bytes(level, face);
   return glm::vec4(decode_texel(format_, bytes.data() + index * bytes_per_texel(format_)));
-}
-
-// --- Mip generation ---------------------------------------------------------------------------
-
-namespace {
-
-/// Source texels and weights that make destination texel `i` along one axis (see the header).
-struct AxisTaps {
-  int count = 0;
-  int index[3] = {};
-  double weight[3] = {};
-};
-
-AxisTaps box_taps(int source_size, int i) {
-  AxisTaps taps;
-  if (source_size == 1) {
-    taps.count = 1;
-    taps.index[0] = 0;
-    taps.weight[0] = 1.0;
-  } else if (source_size % 2 == 0) {
-    taps.count = 2;
-    taps.index[0] = 2 * i;
-    taps.index[1] = 2 * i + 1;
-    taps.weight[0] = taps.weight[1] = 0.5;
-  } else {
-    const int m = source_size / 2;
-    const double n = source_size;
-    taps.count = 3;
-    taps.index[0] = 2 * i;
-    taps.index[1] = 2 * i + 1;
-    taps.index[2] = 2 * i + 2;
-    taps.weight[0] = (m - i) / n;
-    taps.weight[1] = m / n;
-    taps.weight[2] = (i + 1) / n;
-  }
-  return taps;
-}
-
-/// Decoder for mip generation: like decode_texel, but sRGB through the (exactly rounded) table
-/// instead of three pow() per texel.
-glm::dvec4 decode_for_mips(TextureFormat format, const uint8_t* t) {
-  if (format == TextureFormat::RGBA8_sRGB) {
-    const auto& table = kSrgbToLinear;
-    return {table[t[0]], table[t[1]], table[t[2]], t[3] / 255.0};
-  }
-  return decode_texel(format, t);
-}
-
-}  // namespace
-
-void Texture::generate_mips() {
-  const size_t texel_bytes = static_cast<size_t>(bytes_per_texel(format_));
-  std::vector<AxisTaps> taps_x, taps_y, taps_z;
-  for (int face = 0; face < faces(); ++face) {
-    for (int level = 1; level < levels_; ++level) {
-      const auto source = level_bytes(level - 1, face);
-      const auto destination = level_span(level, face);
-      const int sw = width(level - 1), sh = height(level - 1), sd = depth(level - 1);
-      const int dw = width(level), dh = height(level), dd = depth(level);
-      taps_x.resize(dw);
-      taps_y.resize(dh);
-      taps_z.resize(dd);
-      for (int i = 0; i < dw; ++i) taps_x[i] = box_taps(sw, i);
-      for (int i = 0; i < dh; ++i) taps_y[i] = box_taps(sh, i);
-      for (int i = 0; i < dd; ++i) taps_z[i] = box_taps(sd, i);
-      for (int z = 0; z < dd; ++z) {
-        for (int y = 0; y < dh; ++y) {
-          for (int x = 0; x < dw; ++x) {
-            glm::dvec4 sum(0.0);
-            const AxisTaps &tz = taps_z[z], &ty = taps_y[y], &tx = taps_x[x];
-            for (int c = 0; c < tz.count; ++c) {
-              for (int b = 0; b < ty.count; ++b) {
-                for (int a = 0; a < tx.count; ++a) {
-                  const size_t index =
-                      (static_cast<size_t>(tz.index[c]) * sh + ty.index[b]) * sw + tx.index[a];
-                  sum += (tz.weight[c] * ty.weight[b] * tx.weight[a]) *
-                         decode_for_mips(format_, source.data() + index * texel_bytes);
-                }
-              }
-            }
-            const size_t out = (static_cast<size_t>(z) * dh + y) * dw + x;
-            encode_texel(format_, sum, destination.data() + out * texel_bytes);
-          }
-        }
-      }
-    }
-  }
-  for (int level = 1; level < levels_; ++level) {
-    refresh_cube_copy(level, -1);
-    for (int face = 0; face < faces(); ++face) set_level_opaque(level, face, alpha_at_max(level_bytes(level, face)));
-  }
 }
 
 }  // namespace luxel::rasterizer

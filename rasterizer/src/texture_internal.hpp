@@ -1,6 +1,6 @@
 #pragma once
 // Private to the texture module: raw access to a Texture's storage and the scalar format
-// conversions shared by texture.cpp (storage, uploads, mips), texture_reference.cpp and
+// conversions shared by texture.cpp (storage, uploads), texture_mips.cpp, texture_reference.cpp and
 // texture_sample.cpp.
 
 #include "luxel/rasterizer/srgb.hpp"

@@ -1,6 +1,6 @@
 // The public entry points of texture sampling: they pick the rule set (Sampler::rules), the
-// one-level reads of the post passes, and the LOD of a sample() (texture_sample_impl.hpp holds
-// the filtering).
+// one-level reads of the post passes, and the LOD of a sample() (texture_sample_impl.hpp, with
+// the stage headers it includes, holds the filtering).
 
 #include "luxel/rasterizer/texture.hpp"
 
