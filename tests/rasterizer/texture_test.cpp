@@ -1152,7 +1152,7 @@ TEST(TextureSimd, MatchesReference) {
 }
 
 // A sampler without mips and with one filter on both sides of the crossover has its own path
-// (texture_sample.cpp, sample_one_level_impl). It must read the very bits the general path reads
+// (texture_sample_impl.hpp, sample_one_level_impl). It must read the very bits the general path reads
 // with the same filter: reached there through a sampler whose other filter no lane uses (all
 // lanes magnified at LOD -1, all minified at LOD +1; without mips level 0 either way).
 TEST(TextureSimd, OneLevelPathReadsWhatTheGeneralPathReads) {
@@ -1191,7 +1191,7 @@ TEST(TextureSimd, OneLevelPathReadsWhatTheGeneralPathReads) {
 }
 
 // A trilinear read of a volume's cells reads a cell once when every lane's footprint lies in it
-// (texture_sample.cpp, filter_volume_cells): the same bits as the general path, which reads each
+// (texture_filters.hpp, filter_volume_cells): the same bits as the general path, which reads each
 // lane's eight texels one by one; for stamps inside one cell (edge cells, past the edges and
 // inside), and for stamps with one lane in the next cell along each axis.
 TEST(TextureSimd, OneCellStampsReadWhatTheGeneralPathReads) {
@@ -1231,7 +1231,7 @@ TEST(TextureSimd, OneCellStampsReadWhatTheGeneralPathReads) {
 }
 
 // The one-level bilinear path reads only the first texel along an axis where every lane's weight
-// along it is 0 (texture_sample.cpp, filter_2d): a post pass's blur taps along one axis at the
+// along it is 0 (texture_filters.hpp, filter_2d): a post pass's blur taps along one axis at the
 // other's texel centers. The same bits as the general path, which always reads all four, whatever
 // the format, addressing and the lanes' mix of centers and not.
 TEST(TextureSimd, OneLevelBilinearAtTexelCentersReadsWhatTheGeneralPathReads) {
@@ -1489,7 +1489,7 @@ TEST(TextureSimd, LastLevelOfTheLongestChain) {
   // as padding in the level table. A stamp whose lanes blend two levels while others sit on the
   // last one must not fetch a level past it for those. Their results do not show it (the fetch
   // is blended with weight 0), and ASan cannot see a read past an array inside an object: the
-  // sanitizer builds check every level sampled (texture_sample.cpp, level_geometry).
+  // sanitizer builds check every level sampled (texture_addressing.hpp, level_geometry).
   // 8192x2 has the same chain as 8192x8192 at 1/4096 of the memory. LODs sweep from below 0 to
   // past the last level, the eight lanes of a stamp spread over 1.75 levels.
   std::mt19937 rng(9);
