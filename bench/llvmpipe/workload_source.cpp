@@ -15,6 +15,7 @@
 
 #include "clip_space.hpp"
 #include "gl_context.hpp"
+#include "mesh_indices.hpp"
 #include "source_inputs.hpp"
 #include "source_shaders.hpp"
 #include "source_textures.hpp"
@@ -36,7 +37,6 @@
 #include <map>
 #include <stdexcept>
 #include <utility>
-#include <variant>
 #include <vector>
 
 namespace luxel::llvmpipe {
@@ -287,22 +287,10 @@ class Source final : public Workload {
     if (!mesh.colors.empty()) attribute(d, 5, mesh.colors, 4);
     else glVertexAttrib4f(5, 1.0f, 1.0f, 1.0f, 1.0f);
 
-    if (!mesh.indexed()) {
-      d.count = GLsizei(mesh.vertex_count());
-    } else {
-      GLuint buffer = 0;
-      glGenBuffers(1, &buffer);
-      glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, buffer);
-      d.buffers.push_back(buffer);
-      std::visit(
-          [&](const auto& indices) {
-            using Index = typename std::decay_t<decltype(indices)>::value_type;
-            glBufferData(GL_ELEMENT_ARRAY_BUFFER, GLsizeiptr(indices.size() * sizeof(Index)), indices.data(), GL_STATIC_DRAW);
-            d.index_type = sizeof(Index) == 2 ? GL_UNSIGNED_SHORT : GL_UNSIGNED_INT;
-            d.count = GLsizei(indices.size());
-          },
-          mesh.indices);
-    }
+    const MeshIndices indices = upload_indices(mesh);
+    if (indices.buffer) d.buffers.push_back(indices.buffer);
+    d.index_type = indices.type;
+    d.count = indices.count;
     glBindVertexArray(0);
     return d;
   }

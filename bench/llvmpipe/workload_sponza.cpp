@@ -8,6 +8,7 @@
 
 #include "clip_space.hpp"
 #include "gl_context.hpp"
+#include "mesh_indices.hpp"
 
 #include "luxel/frame/renderer.hpp"
 #include "luxel/scenes/scene.hpp"
@@ -16,7 +17,6 @@
 
 #include <cstdint>
 #include <filesystem>
-#include <variant>
 #include <vector>
 
 namespace luxel::llvmpipe {
@@ -214,22 +214,10 @@ class Sponza final : public Workload {
     if (!uvs.empty()) attribute(2, 2, array_buffer(uvs));
     else glVertexAttrib2f(2, 0.0f, 0.0f);
 
-    if (!mesh.indexed()) {
-      d.count = GLsizei(mesh.vertex_count());
-    } else {
-      GLuint buffer = 0;
-      glGenBuffers(1, &buffer);
-      glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, buffer);
-      d.buffers.push_back(buffer);
-      std::visit(
-          [&](const auto& indices) {
-            using Index = typename std::decay_t<decltype(indices)>::value_type;
-            glBufferData(GL_ELEMENT_ARRAY_BUFFER, GLsizeiptr(indices.size() * sizeof(Index)), indices.data(), GL_STATIC_DRAW);
-            d.index_type = sizeof(Index) == 2 ? GL_UNSIGNED_SHORT : GL_UNSIGNED_INT;
-            d.count = GLsizei(indices.size());
-          },
-          mesh.indices);
-    }
+    const MeshIndices indices = upload_indices(mesh);
+    if (indices.buffer) d.buffers.push_back(indices.buffer);
+    d.index_type = indices.type;
+    d.count = indices.count;
     glBindVertexArray(0);
     return d;
   }

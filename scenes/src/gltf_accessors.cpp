@@ -7,8 +7,6 @@
 
 namespace luxel::scenes::gltf {
 
-namespace {
-
 int component_size(int type) {
   switch (type) {
     case TINYGLTF_COMPONENT_TYPE_BYTE:
@@ -20,6 +18,8 @@ int component_size(int type) {
     default: return 0;
   }
 }
+
+namespace {
 
 int components(int type) {
   switch (type) {

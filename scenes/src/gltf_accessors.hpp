@@ -12,6 +12,9 @@
 
 namespace luxel::scenes::gltf {
 
+/// Bytes of one component of `type` (TINYGLTF_COMPONENT_TYPE_*); 0 for a type glTF does not have.
+int component_size(int type);
+
 /// What an attribute may be: its types (TINYGLTF_TYPE_*) and whether unsigned normalized bytes and
 /// shorts are allowed beside floats (TEXCOORD, COLOR).
 struct AttributeRule {

@@ -1,5 +1,6 @@
 #include "gltf_compression.hpp"
 
+#include "gltf_accessors.hpp"
 #include "gltf_values.hpp"
 #include "luxel/scenes/gltf.hpp"
 
@@ -105,18 +106,6 @@ bool lies_within(uint64_t offset, uint64_t length, uint64_t size) { return offse
 
 // --- KHR_draco_mesh_compression --------------------------------------------------------------------
 
-size_t component_bytes(int type) {
-  switch (type) {
-    case TINYGLTF_COMPONENT_TYPE_BYTE:
-    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE: return 1;
-    case TINYGLTF_COMPONENT_TYPE_SHORT:
-    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT: return 2;
-    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT:
-    case TINYGLTF_COMPONENT_TYPE_FLOAT: return 4;
-    default: return 0;
-  }
-}
-
 int type_components(int type) {
   switch (type) {
     case TINYGLTF_TYPE_SCALAR: return 1;
@@ -166,7 +155,7 @@ bool draco_values(const draco::Mesh& mesh, const draco::PointAttribute& attribut
 
 /// The mesh's triangle corners in the index type `component_type`.
 std::vector<unsigned char> draco_indices(const draco::Mesh& mesh, int component_type) {
-  const size_t size = component_bytes(component_type);
+  const size_t size = size_t(component_size(component_type));
   std::vector<unsigned char> out(size_t(mesh.num_faces()) * 3 * size);
   size_t at = 0;
   for (draco::FaceIndex f(0); f < mesh.num_faces(); ++f)
@@ -230,7 +219,7 @@ class DracoPrimitive {
     if (accessor.count != mesh.num_points())
       r_.fail(what + " has " + std::to_string(mesh.num_points()) + " values; its accessor has " + std::to_string(accessor.count));
     std::vector<unsigned char> bytes;
-    r_.reserve(uint64_t(mesh.num_points()) * uint64_t(components) * component_bytes(accessor.componentType), what);
+    r_.reserve(uint64_t(mesh.num_points()) * uint64_t(components) * size_t(component_size(accessor.componentType)), what);
     if (!draco_values(mesh, *a, accessor.componentType, components, bytes))
       r_.fail(what + " does not convert to its accessor's component type");
     accessor.bufferView = append_view(model_, std::move(bytes));
@@ -253,7 +242,7 @@ class DracoPrimitive {
     if (accessor.count != corners)
       r_.fail(where_ + ": the Draco stream has " + std::to_string(corners) + " triangle corners; the indices accessor has " +
               std::to_string(accessor.count));
-    const size_t size = component_bytes(accessor.componentType);
+    const size_t size = size_t(component_size(accessor.componentType));
     if (size == 0 || accessor.componentType == TINYGLTF_COMPONENT_TYPE_BYTE || accessor.componentType == TINYGLTF_COMPONENT_TYPE_SHORT ||
         accessor.componentType == TINYGLTF_COMPONENT_TYPE_FLOAT)
       r_.fail(where_ + " indices are not unsigned integers");
