@@ -24,4 +24,11 @@ MeshIndices upload_indices(const scenes::Mesh& mesh) {
   return out;
 }
 
+void draw_triangles(const MeshIndices& indices) {
+  if (indices.type)
+    glDrawElements(GL_TRIANGLES, indices.count, indices.type, nullptr);
+  else
+    glDrawArrays(GL_TRIANGLES, 0, indices.count);
+}
+
 }  // namespace luxel::llvmpipe

@@ -18,4 +18,7 @@ struct MeshIndices {
 /// deletes `buffer`).
 MeshIndices upload_indices(const scenes::Mesh& mesh);
 
+/// Draws the bound vertex array's triangles through `indices` (glDrawArrays when not indexed).
+void draw_triangles(const MeshIndices& indices);
+
 }  // namespace luxel::llvmpipe

@@ -96,11 +96,8 @@ class Fill final : public Workload {
   glm::vec4 clear_color() const override { return {0.0f, 0.0f, 0.0f, 1.0f}; }
 
   void draw() const override {
-    glEnable(GL_DEPTH_TEST);
-    glDepthFunc(GL_LESS);
-    glDepthMask(GL_TRUE);
+    depth_tested_without_blending();
     glDisable(GL_CULL_FACE);
-    glDisable(GL_BLEND);
     glUseProgram(program_);
     glBindVertexArray(vertex_array_);
     for (int k = 0; k < kLayers; ++k) {

@@ -53,8 +53,7 @@ struct Draw {
   std::string label;  ///< mesh, family and combo, for stderr
   GLuint vertex_array = 0;
   std::vector<GLuint> buffers;
-  GLenum index_type = 0;  ///< 0: glDrawArrays
-  GLsizei count = 0;
+  MeshIndices indices;
   bool cull = true;
   GLuint program = 0;
   std::vector<std::pair<GLenum, GLuint>> textures;  ///< (target, name) per unit, in unit order from 0
@@ -203,8 +202,8 @@ class Source final : public Workload {
         default: unlit(d, mesh, m); break;
       }
       d.label = mesh.name + ": " + d.label;
-      std::fprintf(stderr, "source: draw %s, %d triangles\n", d.label.c_str(), int(d.count / 3));
-      triangles += size_t(d.count / 3);
+      std::fprintf(stderr, "source: draw %s, %d triangles\n", d.label.c_str(), int(d.indices.count / 3));
+      triangles += size_t(d.indices.count / 3);
       draws_.push_back(std::move(d));
     }
     std::fprintf(stderr, "source: %zu draws, %zu triangles, %zu programs; eye (%.1f, %.1f, %.1f), tone-map scale %g\n",
@@ -222,10 +221,7 @@ class Source final : public Workload {
   glm::vec4 clear_color() const override { return clear_; }
 
   void draw() const override {
-    glEnable(GL_DEPTH_TEST);
-    glDepthFunc(GL_LESS);
-    glDepthMask(GL_TRUE);
-    glDisable(GL_BLEND);
+    depth_tested_without_blending();
     glFrontFace(GL_CCW);
     glCullFace(GL_BACK);
     for (const Draw& d : draws_) {
@@ -240,10 +236,7 @@ class Source final : public Workload {
         glBindTexture(d.textures[unit].first, d.textures[unit].second);
       }
       glBindVertexArray(d.vertex_array);
-      if (d.index_type)
-        glDrawElements(GL_TRIANGLES, d.count, d.index_type, nullptr);
-      else
-        glDrawArrays(GL_TRIANGLES, 0, d.count);
+      draw_triangles(d.indices);
     }
   }
 
@@ -289,8 +282,7 @@ class Source final : public Workload {
 
     const MeshIndices indices = upload_indices(mesh);
     if (indices.buffer) d.buffers.push_back(indices.buffer);
-    d.index_type = indices.type;
-    d.count = indices.count;
+    d.indices = indices;
     glBindVertexArray(0);
     return d;
   }

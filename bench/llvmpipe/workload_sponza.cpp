@@ -126,8 +126,7 @@ GLuint array_buffer(const std::vector<T>& data) {
 struct Draw {
   GLuint vertex_array = 0;
   std::vector<GLuint> buffers;
-  GLenum index_type = 0;  ///< 0: glDrawArrays
-  GLsizei count = 0;
+  MeshIndices indices;
   bool double_sided = false;
   GLuint texture = 0;
   glm::vec4 factor{1.0f};
@@ -170,10 +169,7 @@ class Sponza final : public Workload {
   glm::vec4 clear_color() const override { return bench::kSponzaClear; }
 
   void draw() const override {
-    glEnable(GL_DEPTH_TEST);
-    glDepthFunc(GL_LESS);
-    glDepthMask(GL_TRUE);
-    glDisable(GL_BLEND);
+    depth_tested_without_blending();
     glFrontFace(GL_CCW);
     glCullFace(GL_BACK);
     glUseProgram(program_);
@@ -186,10 +182,7 @@ class Sponza final : public Workload {
       glBindTexture(GL_TEXTURE_2D, d.texture);
       glUniform4f(factor_location_, d.factor.r, d.factor.g, d.factor.b, d.factor.a);
       glBindVertexArray(d.vertex_array);
-      if (d.index_type)
-        glDrawElements(GL_TRIANGLES, d.count, d.index_type, nullptr);
-      else
-        glDrawArrays(GL_TRIANGLES, 0, d.count);
+      draw_triangles(d.indices);
     }
   }
 
@@ -216,8 +209,7 @@ class Sponza final : public Workload {
 
     const MeshIndices indices = upload_indices(mesh);
     if (indices.buffer) d.buffers.push_back(indices.buffer);
-    d.index_type = indices.type;
-    d.count = indices.count;
+    d.indices = indices;
     glBindVertexArray(0);
     return d;
   }

@@ -103,11 +103,8 @@ class Tris final : public Workload {
   glm::vec4 clear_color() const override { return {0.1f, 0.1f, 0.1f, 1.0f}; }
 
   void draw() const override {
-    glEnable(GL_DEPTH_TEST);
-    glDepthFunc(GL_LESS);
-    glDepthMask(GL_TRUE);
+    depth_tested_without_blending();
     glDisable(GL_CULL_FACE);
-    glDisable(GL_BLEND);
     glUseProgram(program_);
     glBindVertexArray(vertex_array_);
     glDrawArrays(GL_TRIANGLES, 0, vertex_count_);
