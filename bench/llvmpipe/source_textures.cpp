@@ -10,8 +10,6 @@
 
 namespace luxel::llvmpipe {
 
-namespace {
-
 GLint gl_wrap(scenes::Wrap wrap) {
   switch (wrap) {
     case scenes::Wrap::repeat: return GL_REPEAT;
@@ -21,7 +19,6 @@ GLint gl_wrap(scenes::Wrap wrap) {
   return GL_REPEAT;
 }
 
-}  // namespace
 
 SourceTextures::SourceTextures(const scenes::Scene& scene) : scene_(scene) {
   const uint8_t white[4] = {255, 255, 255, 255};

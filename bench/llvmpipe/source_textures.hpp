@@ -12,6 +12,9 @@
 
 namespace luxel::llvmpipe {
 
+/// The OpenGL wrap mode of a glTF sampler's (W3's and W4's textures).
+GLint gl_wrap(scenes::Wrap wrap);
+
 class SourceTextures {
  public:
   explicit SourceTextures(const scenes::Scene& scene);

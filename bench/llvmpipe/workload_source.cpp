@@ -306,17 +306,21 @@ class Source final : public Workload {
                   {GL_TEXTURE_2D, bump}, {GL_TEXTURE_2D, mask}, {GL_TEXTURE_2D, exponent}};
   }
 
+  /// The scene texture of the cube map `m` reads on `mesh` (the sample nearest the mesh's
+  /// bounds centre, or its own cube texture); -1 for none.
+  int envmap_cube(const scenes::Mesh& mesh, const scenes::Material& m) const {
+    if (m.envmap == scenes::EnvmapSource::nearest_sample) {
+      const int sample = nearest_sample(scene_, bounds_center(mesh));
+      return sample >= 0 ? scene_.cubemap_samples[size_t(sample)].texture : -1;
+    }
+    return m.envmap == scenes::EnvmapSource::texture ? m.envmap_texture.texture : -1;
+  }
+
   /// renderer.cpp's FrameBuilder::lightmapped, with the env map of the nearest sample.
   void lightmapped(Draw& d, const scenes::Mesh& mesh, const scenes::Material& m) {
     if (!scene_.lightmaps) throw Skipped("mesh '" + mesh.name + "' is LightmappedGeneric and the bake has no lightmaps");
     if (mesh.uv1.empty()) throw Skipped("mesh '" + mesh.name + "' is LightmappedGeneric and has no TEXCOORD_1");
-    int cube = -1;
-    if (m.envmap == scenes::EnvmapSource::nearest_sample) {
-      const int sample = nearest_sample(scene_, bounds_center(mesh));
-      if (sample >= 0) cube = scene_.cubemap_samples[size_t(sample)].texture;
-    } else if (m.envmap == scenes::EnvmapSource::texture) {
-      cube = m.envmap_texture.texture;
-    }
+    const int cube = envmap_cube(mesh, m);
     source::LightmappedMaterial lm;
     lm.bump = m.bump.bound();
     lm.envmap = cube >= 0;
@@ -421,13 +425,7 @@ class Source final : public Workload {
   }
 
   void unlit(Draw& d, const scenes::Mesh& mesh, const scenes::Material& m) {
-    int cube = -1;
-    if (m.envmap == scenes::EnvmapSource::nearest_sample) {
-      const int sample = nearest_sample(scene_, bounds_center(mesh));
-      if (sample >= 0) cube = scene_.cubemap_samples[size_t(sample)].texture;
-    } else if (m.envmap == scenes::EnvmapSource::texture) {
-      cube = m.envmap_texture.texture;
-    }
+    const int cube = envmap_cube(mesh, m);
     std::string defines = "#define UNLIT_GENERIC\n" + fog_defines(fog_);
     std::string name = "base";
     if (cube >= 0) {

@@ -9,6 +9,7 @@
 #include "clip_space.hpp"
 #include "gl_context.hpp"
 #include "mesh_indices.hpp"
+#include "source_textures.hpp"
 
 #include "luxel/frame/renderer.hpp"
 #include "luxel/scenes/scene.hpp"
@@ -70,15 +71,6 @@ void main() {
   color = vec4(clamp(albedo.rgb * light, 0.0, 1.0), 1.0);  // exposure 1
 }
 )";
-
-GLint gl_wrap(scenes::Wrap wrap) {
-  switch (wrap) {
-    case scenes::Wrap::repeat: return GL_REPEAT;
-    case scenes::Wrap::mirror: return GL_MIRRORED_REPEAT;
-    case scenes::Wrap::clamp: return GL_CLAMP_TO_EDGE;
-  }
-  return GL_REPEAT;
-}
 
 /// W3's texture rules: RGBA8 without sRGB decode, premultiplied as the peer decodes
 /// (bench::sponza_texture), full mip chain, always trilinear, the sampler's wrap modes.
