@@ -4,7 +4,7 @@
 
 #include "machine.hpp"
 
-#include "luxel/rasterizer/draw.hpp"
+#include "luxel/rasterizer/draw_definition.hpp"
 
 #include <benchmark/benchmark.h>
 

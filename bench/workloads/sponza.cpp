@@ -2,7 +2,7 @@
 
 #include "luxel/frame/renderer.hpp"
 #include "luxel/frame/textures.hpp"
-#include "luxel/rasterizer/draw.hpp"
+#include "luxel/rasterizer/draw_definition.hpp"
 #include "luxel/rasterizer/framebuffer.hpp"
 #include "luxel/rasterizer/msaa.hpp"
 #include "luxel/rasterizer/texture.hpp"

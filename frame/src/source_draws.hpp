@@ -11,7 +11,7 @@
 #include "source_vertex.hpp"
 
 #include "luxel/rasterizer/context.hpp"
-#include "luxel/rasterizer/draw.hpp"
+#include "luxel/rasterizer/draw_definition.hpp"
 #include "luxel/shading/shader_model.hpp"
 #include "luxel/shading/source/adapter.hpp"
 

@@ -2,6 +2,8 @@
 
 #include "views.hpp"
 
+#include "luxel/rasterizer/draw_definition.hpp"
+
 #include <glm/ext/matrix_clip_space.hpp>
 #include <glm/ext/matrix_transform.hpp>
 #include <glm/ext/vector_double3.hpp>

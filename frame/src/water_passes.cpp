@@ -2,6 +2,7 @@
 
 #include "water_passes.hpp"
 
+#include "luxel/rasterizer/draw_definition.hpp"
 #include "luxel/rasterizer/limits.hpp"
 #include "luxel/rasterizer/srgb.hpp"
 #include "luxel/rasterizer/texture.hpp"

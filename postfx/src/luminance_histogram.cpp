@@ -3,7 +3,7 @@
 #include "counted_draw.hpp"
 
 #include "luxel/postfx/screen_rectangle.hpp"
-#include "luxel/rasterizer/draw.hpp"
+#include "luxel/rasterizer/draw_definition.hpp"
 #include "luxel/rasterizer/srgb.hpp"
 
 #include <array>

@@ -5,6 +5,8 @@
 #include "luxel/rasterizer/framebuffer.hpp"
 #include "luxel/rasterizer/simd.hpp"
 
+#include "tile_memory.hpp"
+
 #include <xmmintrin.h>
 #include <pmmintrin.h>
 

@@ -3,6 +3,8 @@
 
 #include "luxel/rasterizer/draw.hpp"
 
+#include "luxel/rasterizer/detail/tile_rasterizer.hpp"  // DrawPlan
+
 #include <cmath>
 #include <stdexcept>
 #include <string>

@@ -6,6 +6,7 @@
 #include "luxel/rasterizer/texture.hpp"
 
 #include "texture_internal.hpp"
+#include "tile_memory.hpp"
 
 #include <algorithm>
 #include <atomic>
@@ -53,6 +54,11 @@ ColorTarget::ColorTarget(int width, int height, int samples, ColorFormat format)
                                 ": multisampled float targets are not supported");
 }
 
+const uint32_t* ColorTarget::tile(int t) const {
+  if (use_.in_tile_memory()) return reinterpret_cast<const uint32_t*>(detail::tile_memory_base + use_.tile_memory_offset);
+  return texels_.data() + t * tile_words();  // allocated by the flush (allocate_memory)
+}
+
 void ColorTarget::allocate_memory() const {
   if (texels_.size() != 0) return;
   texels_ = SurfaceBuffer<uint32_t>(layout_.element_count() * words_per_sample());
@@ -67,6 +73,17 @@ void ColorTarget::check_rgba8(const char* what) const {
 }
 
 DepthStencilTarget::DepthStencilTarget(int width, int height, int samples) : layout_(width, height, samples) {}
+
+float* DepthStencilTarget::depth_tile(int t) {
+  if (use_.in_tile_memory()) return reinterpret_cast<float*>(detail::tile_memory_base + use_.tile_memory_offset);
+  return depth_.data() + t * layout_.elements_per_tile();  // allocated by the flush (allocate_memory)
+}
+
+uint8_t* DepthStencilTarget::stencil_tile(int t) {
+  if (use_.in_tile_memory())
+    return reinterpret_cast<uint8_t*>(detail::tile_memory_base + use_.tile_memory_offset) + layout_.elements_per_tile() * sizeof(float);
+  return stencil_.data() + t * layout_.elements_per_tile();
+}
 
 void DepthStencilTarget::allocate_memory() const {
   if (depth_.size() != 0) return;

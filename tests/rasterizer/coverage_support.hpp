@@ -62,7 +62,7 @@ class TriangleGenerator {
 };
 
 /// True when an edge of the snapped triangle exceeds the 32-bit stamp path's bound
-/// (|dy| * stamp width + |dx| * stamp height, in subpixels, > 2^29; draw_impl.hpp).
+/// (|dy| * stamp width + |dx| * stamp height, in subpixels, > 2^29; kNarrowEdgeLimit in detail/triangle_setup.hpp).
 bool needs_wide_edges(const ExactTriangle& t);
 
 enum class BatchMode { Bits, LastWins };

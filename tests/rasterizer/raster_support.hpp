@@ -12,7 +12,7 @@
 //   pixel center).
 
 #include "luxel/rasterizer/context.hpp"
-#include "luxel/rasterizer/draw.hpp"
+#include "luxel/rasterizer/draw_definition.hpp"
 #include "luxel/rasterizer/framebuffer.hpp"
 #include "luxel/rasterizer/simd.hpp"
 #include "luxel/rasterizer/state.hpp"

@@ -1,6 +1,6 @@
 // Sloped depth: triangles whose depth varies across them (random planes, steep slopes, slivers,
 // planes across the whole target) with constant and slope-scaled depth bias, through each depth
-// path a draw can take (DepthPath in detail/draw_impl.hpp: Late, Early, EarlyLess,
+// path a draw can take (DepthPath in detail/tile_rasterizer.hpp: Late, Early, EarlyLess,
 // EarlyLessEqual), against a scalar oracle in double: every sample's depth, stencil and color and
 // the occlusion count. (output_merger_test's random scenes have constant depth only.)
 //
@@ -9,7 +9,7 @@
 // lie within their bounds of each other cannot be decided: the sample is then "unsettled" and left
 // out of every later comparison, and the occlusion count gets a range. Two depths of the same
 // triangle (the same vertices, viewport and bias, drawn again by a later draw) are bit-identical
-// by the library's promise (draw_impl.hpp, sample_depth: early and late tests take depth from one
+// by the library's promise (tile_rasterizer.hpp, sample_depth: early and late tests take depth from one
 // place), so Equal / LessEqual redraws of earlier triangles are decided exactly; so are depths
 // clamped to the viewport's depth range.
 

@@ -11,6 +11,7 @@
 
 #include "source_support.hpp"
 
+#include "luxel/rasterizer/draw_definition.hpp"
 #include "luxel/rasterizer/framebuffer.hpp"
 #include "luxel/shading/source/adapter.hpp"
 #include "luxel/shading/source/normalization_cube.hpp"

@@ -6,7 +6,7 @@
 #include "source_support.hpp"
 
 #include "luxel/rasterizer/context.hpp"
-#include "luxel/rasterizer/draw.hpp"
+#include "luxel/rasterizer/draw_definition.hpp"
 #include "luxel/shading/source/luminance_range.hpp"
 
 #include <gtest/gtest.h>

@@ -14,7 +14,7 @@
 // four): tap i is the interpolated coordinate plus a fixed offset in source texels, packed two to
 // a varying (.xy, .zw).
 
-#include "luxel/rasterizer/draw.hpp"
+#include "luxel/rasterizer/draw_definition.hpp"
 
 #include <glm/vec2.hpp>
 #include <glm/vec4.hpp>

@@ -149,10 +149,9 @@ struct DrawStats {
 /// framebuffer's targets disagree in size or sample count, the viewport is invalid (see
 /// Viewport), or the state blends or writes sRGB into an rgba32f color target. The samples that pass count into the context's active occlusion query, if any; the
 /// counters go to Context::stats().
+/// Defined in draw_definition.hpp, which a file that calls draw() includes.
 template <VertexFunctor VS, PixelFunctor<VS::kVaryings> PS>
 void draw(Context& ctx, const Framebuffer& fb, const PipelineState& state, const Geometry& geometry,
                const VS& vertex_shader, const PS& pixel_shader);
 
 }  // namespace luxel::rasterizer
-
-#include "luxel/rasterizer/detail/draw_impl.hpp"

@@ -70,8 +70,6 @@ struct SurfaceLayout {
 };
 
 namespace detail {
-/// The running thread's tile memory during a flush (set by Context::run_frame).
-inline thread_local std::byte* tile_memory_base = nullptr;
 inline constexpr size_t kNoTileMemory = ~size_t(0);
 
 /// What the frame being recorded does with a target, and what the last one left of it.
@@ -158,12 +156,11 @@ class ColorTarget {
   int samples() const { return layout_.samples; }
   ColorFormat format() const { return format_; }
   /// Tile t's samples as 32-bit words (an rgba32f tile's floats, see the top of this file), for
-  /// the commands a flush runs (in tile memory, or in the target's own).
+  /// the commands a flush runs, and valid only on the thread that runs them during that flush: in
+  /// that thread's tile memory when the frame keeps the target there, else in the target's own
+  /// memory (allocated by the flush, allocate_memory).
   uint32_t* tile(int t) { return const_cast<uint32_t*>(std::as_const(*this).tile(t)); }
-  const uint32_t* tile(int t) const {
-    if (use_.in_tile_memory()) return reinterpret_cast<const uint32_t*>(detail::tile_memory_base + use_.tile_memory_offset);
-    return texels_.data() + t * tile_words();  // allocated by the flush (allocate_memory)
-  }
+  const uint32_t* tile(int t) const;
   /// Bytes of one tile's samples.
   size_t tile_bytes() const { return tile_words() * sizeof(uint32_t); }
   /// An rgba8 target's samples, read and written after a flush; std::logic_error after discard()
@@ -212,17 +209,12 @@ class DepthStencilTarget {
   int width() const { return layout_.width; }
   int height() const { return layout_.height; }
   int samples() const { return layout_.samples; }
-  /// Tile t's depth and stencil samples, for the commands a flush runs (in tile memory: depth,
-  /// then stencil).
-  float* depth_tile(int t) {
-    if (use_.in_tile_memory()) return reinterpret_cast<float*>(detail::tile_memory_base + use_.tile_memory_offset);
-    return depth_.data() + t * layout_.elements_per_tile();  // allocated by the flush (allocate_memory)
-  }
-  uint8_t* stencil_tile(int t) {
-    if (use_.in_tile_memory())
-      return reinterpret_cast<uint8_t*>(detail::tile_memory_base + use_.tile_memory_offset) + layout_.elements_per_tile() * sizeof(float);
-    return stencil_.data() + t * layout_.elements_per_tile();
-  }
+  /// Tile t's depth and stencil samples, for the commands a flush runs, and valid only on the
+  /// thread that runs them during that flush: in that thread's tile memory when the frame keeps
+  /// the target there (depth, then stencil), else in the target's own memory (allocated by the
+  /// flush, allocate_memory).
+  float* depth_tile(int t);
+  uint8_t* stencil_tile(int t);
   /// Bytes of one tile's samples, both planes.
   size_t tile_bytes() const { return layout_.elements_per_tile() * (sizeof(float) + sizeof(uint8_t)); }
   /// Read after a flush; std::logic_error after discard() until the next whole clear. The first

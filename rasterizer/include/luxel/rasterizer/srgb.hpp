@@ -5,8 +5,10 @@
 //   decode: linear = c / 12.92 for c <= 0.04045, else ((c + 0.055) / 1.055)^2.4
 //   encode: c = 12.92 l for l <= 0.0031308, else 1.055 l^(1/2.4) - 0.055
 //
-// Users: texture uploads, decoding and mip generation (texture.cpp), the SIMD sampler's RGBA8_sRGB
-// reads (texture_sample.cpp), the output merger's sRGB write and blend (detail/output_merger.hpp).
+// Users in the rasterizer: texture uploads and texel loads (texture.cpp), mip generation
+// (texture_mips.cpp), the SIMD sampler's RGBA8_sRGB reads (texture_formats.hpp), the scalar
+// reference sampler (texture_reference.cpp), the output merger's sRGB write and blend
+// (detail/output_merger.hpp).
 // Both tables are the formula evaluated in double and rounded once; tests/rasterizer/srgb_test.cpp
 // checks every entry against the formula written out independently.
 

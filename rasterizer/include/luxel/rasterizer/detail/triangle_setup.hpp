@@ -1,6 +1,9 @@
 #pragma once
 // Private to the rasterizer: what the front end (clip, snap, setup, bin) hands the tile
-// rasterizers. Not templated on shaders, so it lives in triangle_setup.cpp.
+// rasterizers, and process_triangles, where a draw's vertex stage (detail/vertex_front_end.hpp)
+// hands its triangles to the front end. Not templated on shaders, so the front end is compiled
+// once, in rasterizer/src: clipping.cpp, triangle_setup.cpp and binning.cpp, with what their
+// stages share in front_end.hpp and binning's fast path in binning.hpp.
 
 #include "luxel/rasterizer/fast_paths.hpp"
 #include "luxel/rasterizer/limits.hpp"

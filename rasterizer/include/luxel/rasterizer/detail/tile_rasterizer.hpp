@@ -1,16 +1,23 @@
 #pragma once
-// Private: the body of draw(). Templated on the shader functors so that the per-stamp loop
-// inlines them; everything that does not depend on them lives in .cpp files.
+// The per-tile stage of a draw: the tile rasterizer, which takes the triangles binned to one tile
+// through coverage, depth and stencil, the pixel functor and the output merger, and the plan of
+// the draw it reads. A header because it is templated on the pixel functor, which the stamp loop
+// inlines (or calls through a pointer: detail/called_shader.hpp); what does not depend on the
+// functor is compiled once (plan_draw: rasterizer/src/draw.cpp).
 
 #include "luxel/rasterizer/detail/called_shader.hpp"
-#include "luxel/rasterizer/detail/command_queue.hpp"
 #include "luxel/rasterizer/detail/output_merger.hpp"
 #include "luxel/rasterizer/detail/triangle_setup.hpp"
+#include "luxel/rasterizer/draw.hpp"
+#include "luxel/rasterizer/fast_paths.hpp"
+#include "luxel/rasterizer/framebuffer.hpp"
 #include "luxel/rasterizer/msaa.hpp"
+#include "luxel/rasterizer/simd.hpp"
+#include "luxel/rasterizer/state.hpp"
 
+#include <algorithm>
 #include <bit>
-#include <stdexcept>
-#include <vector>
+#include <cstdint>
 
 namespace luxel::rasterizer::detail {
 
@@ -680,232 +687,4 @@ void TileRasterizer<PS, N, kPath, S>::shade_stamp(const TriangleSetup& t, int px
   for (int s = 0; s < S; ++s) write_color(stamp, s, coverage[s], color, packed);
 }
 
-/// Runs the vertex functor for a chunk of triangles and sets them up into `bins`.
-template <class VS>
-void front_end_chunk(const DrawConstants& dc, const Geometry& geometry, const VS& vs, uint32_t first, uint32_t last,
-                     ChunkBins& bins, DrawStats& stats) {
-  constexpr int N = VS::kVaryings;
-  using Vertex = VertexOutput<N>;
-  // Setup reads the position and then N float4 varyings from one pointer.
-  static_assert(N == 0 || sizeof(Vertex) == sizeof(glm::vec4) * (1 + N), "position and varyings must be contiguous");
-  if (geometry.index_format == Geometry::IndexFormat::None) {
-    Vertex v[kFrontEndBatch][3];
-    const glm::vec4* positions[3 * kFrontEndBatch];
-    for (int i = 0; i < kFrontEndBatch; ++i)
-      for (int k = 0; k < 3; ++k) positions[3 * i + k] = &v[i][k].position;
-    for (uint32_t base = first; base < last; base += kFrontEndBatch) {
-      const int n = static_cast<int>(std::min<uint32_t>(kFrontEndBatch, last - base));
-      if constexpr (VertexInputAddress<VS>) {
-        const uint32_t ahead = base + kFrontEndBatch, ahead_end = std::min<uint32_t>(last, ahead + kFrontEndBatch);
-        for (uint32_t i = 3 * ahead; i < 3 * ahead_end; ++i) simd::prefetch(vs.input(i));
-      }
-      for (int i = 0; i < n; ++i)
-        for (int k = 0; k < 3; ++k) vs(3 * (base + i) + k, v[i][k]);
-      process_triangles(dc, positions, n, bins, stats);
-    }
-    return;
-  }
-  // A small direct-mapped post-transform cache: shared vertices are shaded once most of the time.
-  // A vertex whose slot holds another one that the pending batch still reads is shaded into
-  // the batch's own spill space instead: evicting would mean running the batch early, and a
-  // mesh whose rows are about a cache size long (a grid) would then run batches of one or two
-  // triangles. Without FastPath::VertexCache every vertex of every triangle is spilled.
-  constexpr uint32_t kCacheSize = 128;
-  const bool use_cache = dc.fast_paths.on(FastPath::VertexCache);
-  struct Entry {
-    uint32_t index = ~0u;
-    uint32_t batch = ~0u;  ///< the last batch that reads this entry
-    Vertex out;
-  };
-  std::vector<Entry> cache(kCacheSize);
-  Vertex spill[kFrontEndBatch][3];
-  const glm::vec4* pending[3 * kFrontEndBatch];  // vertex k of pending triangle t at 3 t + k
-  int pending_count = 0;
-  uint32_t batch = 0;
-  auto run_batch = [&] {
-    if (pending_count == 0) return;
-    process_triangles(dc, pending, pending_count, bins, stats);
-    pending_count = 0;
-    ++batch;
-  };
-  for (uint32_t tri = first; tri < last; ++tri) {
-    if constexpr (VertexInputAddress<VS>) {
-      if (tri + kFrontEndBatch < last)
-        for (int k = 0; k < 3; ++k) {
-          const uint32_t ahead = geometry.index(3 * (tri + kFrontEndBatch) + k);
-          if (ahead < geometry.vertex_count) simd::prefetch(vs.input(ahead));
-        }
-    }
-    uint32_t idx[3];
-    bool bad = false;
-    for (int k = 0; k < 3; ++k) {
-      idx[k] = geometry.index(3 * tri + k);
-      bad |= idx[k] >= geometry.vertex_count;
-    }
-    if (bad) {
-      ++stats.bad_index;
-      continue;
-    }
-    const glm::vec4** p = pending + 3 * pending_count;
-    for (int k = 0; k < 3; ++k) {
-      const uint32_t slot = idx[k] % kCacheSize;
-      if (!use_cache || (cache[slot].index != idx[k] && cache[slot].batch == batch)) {
-        vs(idx[k], spill[pending_count][k]);
-        p[k] = &spill[pending_count][k].position;
-        continue;
-      }
-      Entry& e = cache[slot];
-      if (e.index != idx[k]) {
-        vs(idx[k], e.out);
-        e.index = idx[k];
-      }
-      e.batch = batch;
-      p[k] = &e.out.position;
-    }
-    if (++pending_count == kFrontEndBatch) run_batch();
-  }
-  run_batch();
-}
-
-/// A recorded draw: its binned triangles and a copy of everything its pixels need.
-template <class PS, int N>
-class DrawCommand final : public Command {
- public:
-  DrawCommand(const DrawPlan& plan, const PipelineState& state, const PS& ps, std::vector<ChunkBins*> chunks,
-              int query_slot)
-      : plan_(plan), state_(state), ps_(ps), chunks_(std::move(chunks)), query_slot_(query_slot) {
-    plan_.state = &state_;
-    const CompareFunc depth_func = state_.depth_stencil.depth_func;
-    const bool depth_only = kTrivialPixelFunctor<PS> && plan_.depth_stencil && plan_.depth_test && !plan_.stencil &&
-                            plan_.constants.fast_paths.on(FastPath::FixedDepthPaths);
-    depth_path_ = can_discard(ps_) || writes_depth(ps_) || plan_.alpha_test          ? DepthPath::Late
-                   : depth_only && depth_func == CompareFunc::Less      ? DepthPath::EarlyLess
-                   : depth_only && depth_func == CompareFunc::LessEqual ? DepthPath::EarlyLessEqual
-                                                                        : DepthPath::Early;
-    tile_active_.assign(plan_.layout.tile_count(), 0);
-    for (const ChunkBins* c : chunks_)
-      for (uint32_t t : c->touched_tiles) tile_active_[t] = 1;
-  }
-
-  void execute(int tile, ThreadCounters& counters) override {
-    if (!tile_active_[tile]) return;
-    switch (plan_.layout.samples) {
-      case 1: return execute_with<1>(tile, counters);
-      case 2: return execute_with<2>(tile, counters);
-      case 4: return execute_with<4>(tile, counters);
-      default: return execute_with<8>(tile, counters);
-    }
-  }
-
- private:
-  template <int S>
-  void execute_with(int tile, ThreadCounters& counters) {
-    const bool count = query_slot_ >= 0;
-    if constexpr ((PS::kCanDiscard || PS::kWritesDepth) && !kCalledPixelShader<PS>) {  // only the late path
-      run(TileRasterizer<PS, N, DepthPath::Late, S>(plan_, ps_, tile, count), tile, counters);
-    } else if constexpr (!kTrivialPixelFunctor<PS>) {  // no fixed paths (DepthPath)
-      if (depth_path_ == DepthPath::Late)
-        return run(TileRasterizer<PS, N, DepthPath::Late, S>(plan_, ps_, tile, count), tile, counters);
-      return run(TileRasterizer<PS, N, DepthPath::Early, S>(plan_, ps_, tile, count), tile, counters);
-    } else {
-      switch (depth_path_) {
-        case DepthPath::Late:
-          return run(TileRasterizer<PS, N, DepthPath::Late, S>(plan_, ps_, tile, count), tile, counters);
-        case DepthPath::Early:
-          return run(TileRasterizer<PS, N, DepthPath::Early, S>(plan_, ps_, tile, count), tile, counters);
-        case DepthPath::EarlyLess:
-          return run(TileRasterizer<PS, N, DepthPath::EarlyLess, S>(plan_, ps_, tile, count), tile, counters);
-        case DepthPath::EarlyLessEqual:
-          return run(TileRasterizer<PS, N, DepthPath::EarlyLessEqual, S>(plan_, ps_, tile, count), tile, counters);
-      }
-    }
-  }
-
-  template <class Rasterizer>
-  void run(Rasterizer rasterizer, int tile, ThreadCounters& counters) {
-    for (const ChunkBins* bins : chunks_) {
-      const RecordStream& records = bins->tile_records[tile];
-      const auto* end = reinterpret_cast<const TriangleSetup*>(records.data() + records.size());
-      for (auto* t = reinterpret_cast<const TriangleSetup*>(records.data()); t != end; t = t->next())
-        rasterizer.triangle(*t);
-    }
-    if (query_slot_ >= 0) counters.query_samples[query_slot_] += rasterizer.samples_passed;
-    *counters.stats += rasterizer.stats;
-  }
-
-  DrawPlan plan_;
-  PipelineState state_;
-  PS ps_;
-  std::vector<ChunkBins*> chunks_;
-  std::vector<uint8_t> tile_active_;
-  int query_slot_;
-  DepthPath depth_path_;
-};
-
-/// What a draw records of its pixel functor: a kTrivial one as it is, inlined into its own tile
-/// rasterizers, any other behind a pointer (called_shader.hpp).
-template <int N, class PS>
-auto recorded_pixel_shader(const PS& ps) {
-  if constexpr (kTrivialPixelFunctor<PS>) return ps;
-  else return CalledPixelShader<N>::of(ps);
-}
-
-template <int N, class PS>
-std::unique_ptr<Command> make_draw_command(const DrawPlan& plan, const PipelineState& state, const PS& ps,
-                                           std::vector<ChunkBins*> chunks, int query_slot) {
-  if constexpr (kCalledPixelShader<PS> && precompiled_varying_count(N))
-    return make_called_draw_command<N>(plan, state, ps, std::move(chunks), query_slot);
-  else return std::make_unique<DrawCommand<PS, N>>(plan, state, ps, std::move(chunks), query_slot);
-}
-
 }  // namespace luxel::rasterizer::detail
-
-namespace luxel::rasterizer {
-
-template <VertexFunctor VS, PixelFunctor<VS::kVaryings> PS>
-void draw(Context& ctx, const Framebuffer& fb, const PipelineState& state, const Geometry& geometry,
-          const VS& vertex_shader, const PS& pixel_shader) {
-  using namespace detail;
-  constexpr int N = VS::kVaryings;
-  const DrawPlan plan = plan_draw(fb, state, N, ctx.options().fast_paths);
-  const uint32_t triangles = geometry.triangle_count();
-  CommandQueue& queue = ctx.queue();
-  if (!queue.accepts(plan.layout)) ctx.flush_within_frame();
-  queue.set_layout(plan.layout);
-  // Before the front end: a draw into a discarded target fails whatever its triangles.
-  if (plan.color) ctx.refer(*plan.color);  // see Context, "The deferred frame"
-  if (plan.depth_stencil) ctx.refer(*plan.depth_stencil);
-  queue.front_end_stats().triangles += triangles;
-  if (triangles == 0 || plan.constants.clip_x0 >= plan.constants.clip_x1 ||
-      plan.constants.clip_y0 >= plan.constants.clip_y1)
-    return;
-
-  const auto recorded_shader = recorded_pixel_shader<N>(pixel_shader);
-  // A large draw is recorded in parts, and the queue flushes between them once its records take
-  // more than the context's budget (ContextOptions::max_pending_record_bytes).
-  for (uint32_t part_first = 0; part_first < triangles;) {
-    if (queue.pending_record_bytes() >= ctx.options().max_pending_record_bytes) ctx.flush_within_frame();
-    const uint32_t part = std::min<uint32_t>(triangles - part_first, kTrianglesPerPart);
-    // Front end now, in parallel over chunks of triangles; each chunk bins into its own lists.
-    const uint32_t threads = static_cast<uint32_t>(ctx.thread_count());
-    const uint32_t per_chunk = std::clamp<uint32_t>((part + threads - 1) / threads,
-                                                    kMinTrianglesPerChunk, kTrianglesPerChunk);
-    const int chunk_count = static_cast<int>((part + per_chunk - 1) / per_chunk);
-    std::vector<ChunkBins*> chunks = queue.allocate_chunks(chunk_count);
-    std::vector<DrawStats> chunk_stats(chunk_count);
-    ctx.parallel_for(chunk_count, [&](int c, int) {
-      const uint32_t first = part_first + static_cast<uint32_t>(c) * per_chunk;
-      const uint32_t last = std::min<uint32_t>(part_first + part, first + per_chunk);
-      front_end_chunk(plan.constants, geometry, vertex_shader, first, last, *chunks[c], chunk_stats[c]);
-    });
-    for (const DrawStats& s : chunk_stats) queue.front_end_stats() += s;
-    for (const ChunkBins* c : chunks) queue.add_pending_record_bytes(c->bytes());
-    const int slot = queue.query_slot(ctx.active_query());
-    if (plan.color) ctx.refer(*plan.color);  // again: a flush above forgot them
-    if (plan.depth_stencil) ctx.refer(*plan.depth_stencil);
-    queue.push(make_draw_command<N>(plan, state, recorded_shader, std::move(chunks), slot));
-    part_first += part;
-  }
-}
-
-}  // namespace luxel::rasterizer
