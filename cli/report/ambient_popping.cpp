@@ -14,6 +14,7 @@
 // own row gives the jumps the light itself makes along the path. Cost: volume samples read per
 // model, and the time constant.
 
+#include "report/findings.hpp"
 #include "report/report_scene.hpp"
 #include "report/sections.hpp"
 
@@ -99,6 +100,26 @@ std::vector<std::vector<std::array<glm::vec3, 6>>> exact_cubes(const scenes::Sce
   return out;
 }
 
+/// The rows that read the irradiance volume (the exact row reads none).
+bool volume_lookup(const SectionResult& r, const ReportRow& row) { return value_of(r, row, "volume_samples") > 0; }
+
+/// Every reading's largest jump; the lookups' mean and largest error against the exact cube, per
+/// way of sampling.
+std::vector<std::string> ambient_popping_findings(const SectionResult& r) {
+  std::vector<std::string> findings;
+  if (r.rows.empty()) return findings;
+  findings.push_back("the largest frame-to-frame jump, in % of the cube's brightest channel: " + listing(r, "max_jump", any_row));
+  const RowTest lookups = [&r](const ReportRow& row) { return volume_lookup(r, row); };
+  std::string errors;
+  for (const char* sampling : {"trilinear", "nearest"})
+    if (const std::optional<Span> mean = span_of(r, "mean_error", both(lookups, variant_starts_with(sampling))))
+      errors += (errors.empty() ? "" : ", ") + std::string(sampling) + " " + span_text(r, "mean_error", *mean) + " %";
+  if (const std::optional<Span> max = span_of(r, "max_error", lookups))
+    findings.push_back("against the exact cube at the model the mean error is " + errors + "; every lookup's largest error is " +
+                       span_text(r, "max_error", *max) + " %");
+  return findings;
+}
+
 SectionResult run_ambient_popping(const ReportSettings& s) {
   const ReportScene& scene = *s.scene;
   SectionResult out;
@@ -174,6 +195,7 @@ SectionResult run_ambient_popping(const ReportSettings& s) {
                       "path); the cube is the model's irradiance-volume cube after the averaging, before lights are folded in "
                       "(the renderer's clock moved frame by frame, no frame drawn). The exact row's jumps are the light's own "
                       "changes along the path; a lookup's jumps beyond them are popping.");
+  out.findings = ambient_popping_findings(out);
   return out;
 }
 

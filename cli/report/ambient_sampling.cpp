@@ -53,6 +53,7 @@ SectionResult run_ambient_sampling(const ReportSettings& s) {
                       std::to_string(scene.settings.samples) + " samples per pixel, shader model " +
                       std::string(shading::caps(scene.settings.model).name) + "; " + std::to_string(scene.scene->models.size()) +
                       " models in the scene (a scene without models or without an irradiance volume gives two equal frames).");
+  out.findings = findings_against_last_row(out);
   return out;
 }
 

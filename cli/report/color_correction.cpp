@@ -6,6 +6,7 @@
 // volume texture, the pass's counted slots per pixel and ms per pass; error: frame_error.hpp's
 // columns.
 
+#include "report/findings.hpp"
 #include "report/frame_error.hpp"
 #include "report/report_scene.hpp"
 #include "report/sections.hpp"
@@ -28,6 +29,20 @@ rasterizer::Image rounded(const std::vector<float>& rgba, int width, int height)
   rasterizer::Image image(width, height);
   std::transform(rgba.begin(), rgba.end(), image.rgba.begin(), postfx::to_unorm8);
   return image;
+}
+
+/// Per lattice, the largest and the mean difference from the exact grades over the presets.
+std::vector<std::string> color_correction_findings(const SectionResult& r) {
+  std::vector<std::string> findings;
+  for (const std::string& lattice : distinct(r, &ReportRow::variant, any_row)) {
+    const std::optional<Span> max = span_of(r, "max_steps", variant_is(lattice));
+    const std::optional<Span> mean = span_of(r, "mean_steps", variant_is(lattice));
+    if (!max || !mean) continue;
+    findings.push_back(lattice + ": within " + counted(text_of(r, "max_steps", max->max), "step", "steps") + " of the exact grade on " +
+                       std::to_string(rows_where(r, variant_is(lattice)).size()) + " presets, mean " +
+                       span_text(r, "mean_steps", *mean) + " steps");
+  }
+  return findings;
 }
 
 SectionResult run_color_correction(const ReportSettings& s) {
@@ -78,6 +93,7 @@ SectionResult run_color_correction(const ReportSettings& s) {
                       std::string(shading::caps(scene.settings.model).name) + "; each preset at weight 1.");
   out.notes.push_back("slots/px: the color-correction draw's counted slots on that model. ms/pass: median of " +
                       std::to_string(s.timing_repeats) + " passes after the counted one.");
+  out.findings = color_correction_findings(out);
   return out;
 }
 

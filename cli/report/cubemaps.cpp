@@ -6,6 +6,7 @@
 // the bracket can see (at least one code above the merge's dark floor at the brightest exposure).
 // Cost: captures per face, and ms per cube.
 
+#include "report/findings.hpp"
 #include "report/report_scene.hpp"
 #include "report/sections.hpp"
 
@@ -29,6 +30,29 @@ struct StopErrors {
   std::vector<double> errors;  ///< per channel seen, sorted when summarized
   double lo = INFINITY, hi = 0;
 };
+
+/// "max A to B stops, p99 C to D stops, mean E to F stops" over the rows that pass `rows`.
+std::string stop_errors(const SectionResult& r, const RowTest& rows) {
+  constexpr std::pair<const char*, const char*> kStopColumns[] = {{"max_stops", "max"}, {"p99_stops", "p99"}, {"mean_stops", "mean"}};
+  std::string text;
+  for (const auto& [key, name] : kStopColumns)
+    if (const std::optional<Span> span = span_of(r, key, rows))
+      text += (text.empty() ? "" : ", ") + std::string(name) + " " + span_text(r, key, *span) + " stops";
+  return text;
+}
+
+/// The merged brackets' errors against one exposure's.
+std::vector<std::string> cubemaps_findings(const SectionResult& r) {
+  std::vector<std::string> findings;
+  const RowTest brackets = [&r](const ReportRow& row) { return value_of(r, row, "captures_per_face") > 1; };
+  const RowTest single = [&r](const ReportRow& row) { return value_of(r, row, "captures_per_face") == 1; };
+  const std::vector<std::string> bracket_names = distinct(r, &ReportRow::variant, brackets);
+  if (!bracket_names.empty())
+    findings.push_back("merged brackets (" + bracket_names.front() + " to " + bracket_names.back() +
+                       ") against the float captures: " + stop_errors(r, brackets));
+  if (first_row(r, single)) findings.push_back("one exposure alone: " + stop_errors(r, single));
+  return findings;
+}
 
 SectionResult run_cubemaps(const ReportSettings& s) {
   const ReportScene& scene = *s.scene;
@@ -104,6 +128,7 @@ SectionResult run_cubemaps(const ReportSettings& s) {
                       "powers of two from the scene's brightest sky to its darkest albedo), merged by "
                       "frame::merge_exposures. ms/cube: median over the samples, all six faces.");
   out.notes.push_back("\"one exposure\": the 2-stop bracket's middle exposure alone, what a capture without a bracket keeps.");
+  out.findings = cubemaps_findings(out);
   return out;
 }
 

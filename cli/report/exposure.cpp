@@ -7,6 +7,7 @@
 // frame, in stops (|log2(target / exact)|), its max and mean over the frames and its mean over
 // the second half (after the histogram has filled). Cost: the latency, and ms per frame.
 
+#include "report/findings.hpp"
 #include "report/report_scene.hpp"
 #include "report/sections.hpp"
 
@@ -32,6 +33,40 @@ struct Count {
 };
 constexpr Count kCounts[] = {{postfx::HistogramCount::direct_query, "direct query"},
                              {postfx::HistogramCount::stencil, "stencil + query"}};
+
+/// The first counting's error from the shortest latency to the longest, and whether the other
+/// countings give the same errors at every latency.
+std::vector<std::string> exposure_findings(const SectionResult& r) {
+  std::vector<std::string> findings;
+  const std::vector<std::string> countings = distinct(r, &ReportRow::variant, any_row);
+  const std::optional<Span> latency = span_of(r, "query_latency", any_row);
+  if (countings.empty() || !latency) return findings;
+  const std::string& first = countings.front();
+  const ReportRow* shortest = first_row(r, both(variant_is(first), value_is(r, "query_latency", latency->min)));
+  const ReportRow* longest = first_row(r, both(variant_is(first), value_is(r, "query_latency", latency->max)));
+  if (!shortest || !longest) return findings;
+  auto at = [&](const char* key) {
+    return text_of(r, key, value_of(r, *shortest, key)) + " stops at latency " + text_of(r, "query_latency", latency->min) + " to " +
+           text_of(r, key, value_of(r, *longest, key)) + " at " + text_of(r, "query_latency", latency->max);
+  };
+  std::string finding = first + ": the target's mean distance from the exact one goes from " + at("mean_stops") +
+                        " over all frames, and from " + at("mean_stops_second_half") + " over the second half";
+  if (const std::optional<Span> max = span_of(r, "max_stops", variant_is(first)))
+    finding += "; at most " + text_of(r, "max_stops", max->max) + " stops";
+  findings.push_back(finding);
+  for (size_t c = 1; c < countings.size(); ++c) {
+    double largest = 0;  // of a difference of an error column from the first counting's, same latency
+    for (const ReportRow* row : rows_where(r, variant_is(countings[c]))) {
+      const ReportRow* same = first_row(r, both(variant_is(first), value_is(r, "query_latency", value_of(r, *row, "query_latency"))));
+      if (!same) continue;
+      for (const char* key : {"max_stops", "mean_stops", "mean_stops_second_half"})
+        largest = std::max(largest, std::abs(value_of(r, *row, key) - value_of(r, *same, key)));
+    }
+    findings.push_back(countings[c] + (largest == 0 ? " gives the same errors as " + first + " at every latency"
+                                                    : " differs from " + first + " by up to " + text_of(r, "max_stops", largest) + " stops"));
+  }
+  return findings;
+}
 
 SectionResult run_exposure(const ReportSettings& s) {
   const ReportScene& scene = *s.scene;
@@ -92,6 +127,7 @@ SectionResult run_exposure(const ReportSettings& s) {
   out.notes.push_back("The engine counts one bucket per frame and reads it `latency` frames later, so its target lags the "
                       "frame it is compared with; the first frames have few buckets counted. ms/frame: median over the "
                       "frames, the histogram pass included.");
+  out.findings = exposure_findings(out);
   return out;
 }
 

@@ -8,6 +8,7 @@
 
 #include "luxel/frame/image_difference.hpp"
 
+#include <string>
 #include <vector>
 
 namespace luxel::cli {
@@ -17,5 +18,13 @@ std::vector<ReportColumn> frame_error_columns();
 
 /// `a` against `reference` (the same size): max steps, mean steps, PSNR dB, differing share.
 std::vector<double> frame_error_values(const rasterizer::Image& a, const rasterizer::Image& reference);
+
+/// What `row`'s error columns say, as the table prints them: "the same bytes (0 pixels differ)",
+/// or "D % of the pixels differ, by up to N steps (mean M steps)".
+std::string frame_difference_text(const SectionResult& r, const ReportRow& row);
+
+/// A finding per row but the last, where the frame sections that draw their reference again put
+/// it: "V against REF: <frame_difference_text>".
+std::vector<std::string> findings_against_last_row(const SectionResult& r);
 
 }  // namespace luxel::cli

@@ -8,6 +8,7 @@
 // Cost: the variant's counted slots (ps_3_0, or the last model the variant runs on) and ns per
 // pixel on each lane.
 
+#include "report/findings.hpp"
 #include "report/sections.hpp"
 
 #include "luxel/rasterizer/simd.hpp"
@@ -26,6 +27,27 @@ namespace src = shading::source;
 constexpr int kComparedPixels = 4096;
 constexpr int kTimedPixels = 4096;
 
+/// The rows whose lanes differ on some pixel.
+RowTest differing_lanes(const SectionResult& r) {
+  return [&r](const ReportRow& row) { return value_of(r, row, "differing_share") > 0; };
+}
+
+/// How many variants give the same bits on both lanes, and how far the others are apart.
+std::vector<std::string> lanes_findings(const SectionResult& r) {
+  const RowTest differ = differing_lanes(r);
+  const std::vector<const ReportRow*> differing = rows_where(r, differ);
+  std::vector<std::string> findings = {std::to_string(r.rows.size() - differing.size()) + " of " + std::to_string(r.rows.size()) +
+                                       " variants give the same bits on both lanes for every pixel"};
+  if (differing.empty()) return findings;
+  std::string names;
+  for (const ReportRow* row : differing) names += (names.empty() ? "" : ", ") + row->scene;
+  const Span abs = *span_of(r, "max_abs", differ), steps = *span_of(r, "max_steps", differ), share = *span_of(r, "differing_share", differ);
+  findings.push_back("the other " + std::to_string(differing.size()) + " differ by at most " + text_of(r, "max_abs", abs.max) + ", " +
+                     counted(text_of(r, "max_steps", steps.max), "step", "steps") + " once stored in 8 bits, on " +
+                     span_text(r, "differing_share", share) + " % of the pixels: " + names);
+  return findings;
+}
+
 SectionResult run_lanes(const ReportSettings& s) {
   SectionResult out;
   out.title = "every shader variant on the SIMD lane against the same shader on the scalar lane (the reference)";
@@ -38,8 +60,6 @@ SectionResult run_lanes(const ReportSettings& s) {
   out.plot = {"SIMD lane against the scalar lane, per shader variant (0: the same bits)", "slots (ps_3_0, counted)",
               "largest difference of a channel", "slots", "max_abs", 1.0, false};
   const std::string lanes = std::string(rasterizer::simd::kIsaName) + ", " + std::to_string(rasterizer::simd::kLanes) + " floats";
-  int agreeing = 0;
-  std::string differing;
   for (const src::ShaderVariant& v : src::shader_catalog()) {
     s.progress("lanes: " + v.family + " " + v.variant);
     const src::LaneAgreement a = src::compare_lanes(v, kComparedPixels);
@@ -47,8 +67,6 @@ SectionResult run_lanes(const ReportSettings& s) {
     shading::ShaderModel model = v.models.back();
     for (shading::ShaderModel m : v.models)
       if (m == shading::ShaderModel::ps_3_0) model = m;
-    agreeing += a.differing == 0;
-    if (a.differing > 0) differing += (differing.empty() ? "" : ", ") + v.family + " " + v.variant;
     // The combo is what was measured; only the variants whose lanes differ are named in the plot
     // (95 labels at 0 would hide each other).
     out.rows.push_back({v.family + " " + v.variant, std::to_string(a.pixels) + " random pixels", v.family,
@@ -58,16 +76,14 @@ SectionResult run_lanes(const ReportSettings& s) {
                         {double(v.measure(*v.builds.binary_for(model)).total_slots()), t.simd_ns, t.scalar_ns, a.max_abs, double(a.max_steps),
                          a.pixels ? double(a.differing) / double(a.pixels) : 0.0}});
   }
-  out.notes.push_back(std::to_string(agreeing) + " of " + std::to_string(out.rows.size()) +
-                      " variants give the same bits on both lanes for every pixel." +
-                      (differing.empty() ? std::string()
-                                         : " The others sample a texture in their combine stage, which the scalar lane does with "
-                                           "the rasterizer's reference sampler (filtering in double) and the SIMD lane with its "
-                                           "float32 sampler: " + differing + "."));
+  if (first_row(out, differing_lanes(out)))
+    out.notes.push_back("The variants whose lanes differ sample a texture in their combine stage, which the scalar lane does with "
+                        "the rasterizer's reference sampler (filtering in double) and the SIMD lane with its float32 sampler.");
   out.notes.push_back("The combine stage of each variant (texture reads excluded, as luxel cost times it), fed the same " +
                       std::to_string(kComparedPixels) + " pixels of inputs on both lanes; ns per pixel: median of " +
                       std::to_string(s.timing_repeats) + " runs of " + std::to_string(kTimedPixels) + " pixels.");
   out.notes.push_back("8-bit steps: after each result is clamped to [0, 1] and rounded, as the 8-bit target stores it.");
+  out.findings = lanes_findings(out);
   return out;
 }
 

@@ -10,6 +10,7 @@
 // bake's gather, which bake/ keeps internal).
 
 #include "report/environment_image.hpp"
+#include "report/findings.hpp"
 #include "report/lane_timing.hpp"
 #include "report/sections.hpp"
 
@@ -26,6 +27,8 @@
 #include <cstdio>
 #include <filesystem>
 #include <functional>
+#include <limits>
+#include <optional>
 #include <tuple>
 
 namespace luxel::cli {
@@ -56,6 +59,13 @@ struct Variant {
   double simd_ns = 0.0, scalar_ns = 0.0;
 };
 
+// The bases' variant names, which the findings pick rows by.
+constexpr const char* kCubeBasis = "ambient cube (ps_2_0+)";
+constexpr const char* kSh4Basis = "linear SH4 (ps_2_0+)";
+constexpr const char* kSh9Basis = "SH9 (ps_3_0)";
+// The start of the published environments' resolution, which tells their rows from the probes'.
+constexpr const char* kAnalyticResolution = "analytic";
+
 /// The three variants with their counted ps_3_0 costs and their times. The times do not depend on
 /// the constants' values, so one made-up set serves every environment.
 std::vector<Variant> variants(int repeats) {
@@ -70,9 +80,9 @@ std::vector<Variant> variants(int repeats) {
     return shading::measure(shading::ShaderModel::ps_3_0, [&](shading::CountedInputs& in) { return eval(in.vector<3>()); });
   };
   std::vector<Variant> v = {
-      {"ambient cube (ps_2_0+)", [](const float3<float>& n, const Fits& x) { return src::ambient_light(n, x.cube); }, measure(cube)},
-      {"linear SH4 (ps_2_0+)", [](const float3<float>& n, const Fits& x) { return src::sh4_ambient_light(n, x.sh4); }, measure(sh4)},
-      {"SH9 (ps_3_0)", [](const float3<float>& n, const Fits& x) { return src::sh9_ambient_light(n, x.sh9); }, measure(sh9)}};
+      {kCubeBasis, [](const float3<float>& n, const Fits& x) { return src::ambient_light(n, x.cube); }, measure(cube)},
+      {kSh4Basis, [](const float3<float>& n, const Fits& x) { return src::sh4_ambient_light(n, x.sh4); }, measure(sh4)},
+      {kSh9Basis, [](const float3<float>& n, const Fits& x) { return src::sh9_ambient_light(n, x.sh9); }, measure(sh9)}};
   std::tie(v[0].simd_ns, v[0].scalar_ns) = time_normal_function(cube, repeats);
   std::tie(v[1].simd_ns, v[1].scalar_ns) = time_normal_function(sh4, repeats);
   std::tie(v[2].simd_ns, v[2].scalar_ns) = time_normal_function(sh9, repeats);
@@ -99,7 +109,7 @@ std::vector<Environment> published_environments(const ReportSettings& s) {
   for (const src::PublishedProbe& p : src::kRamamoorthi2001Probes) {
     const src::Sh9 sh = src::physical_radiance(src::published_radiance(p));
     r.push_back({std::string(p.name) + " (R&H 2001 SH9, lifted)",
-                 "analytic, " + std::to_string(s.grid_rows) + "x" + std::to_string(2 * s.grid_rows) + " grid",
+                 std::string(kAnalyticResolution) + ", " + std::to_string(s.grid_rows) + "x" + std::to_string(2 * s.grid_rows) + " grid",
                  std::string(p.name) + " R&H",
                  grid_reference(s.grid_rows, s.normals),
                  src::sample_sphere_grid([&](const glm::dvec3& d) { return src::evaluate(sh, d); }, s.grid_rows)});
@@ -216,6 +226,75 @@ void add_rows(const Environment& e, const std::vector<Variant>& vars, int normal
   }
 }
 
+// ---- Findings --------------------------------------------------------------------------------------
+
+/// The bases in the order the findings name them, with the name they are given there.
+constexpr std::pair<const char*, const char*> kBasesNamed[] = {{kSh9Basis, "SH9"}, {kCubeBasis, "the cube"}, {kSh4Basis, "SH4"}};
+
+bool published_row(const ReportRow& row) { return row.resolution.starts_with(kAnalyticResolution); }
+bool probe_row(const ReportRow& row) { return !published_row(row); }
+
+/// "SH9's A to B %, the cube's C to D %, SH4's E to F %": each basis's largest error over the peak
+/// irradiance, over the rows that pass `environments`.
+std::string max_of_peak_per_basis(const SectionResult& r, const RowTest& environments) {
+  std::string text;
+  for (const auto& [variant, name] : kBasesNamed)
+    if (const std::optional<Span> span = span_of(r, "max_of_peak", both(environments, variant_is(variant))))
+      text += (text.empty() ? "" : ", ") + std::string(name) + "'s " + span_text(r, "max_of_peak", *span) + " %";
+  return text;
+}
+
+/// On how many of the environments that pass `environments` SH9's largest error over the peak is
+/// below both other bases', and by how much (the smaller of the other two over SH9's).
+std::string sh9_smallest(const SectionResult& r, const RowTest& environments) {
+  const std::vector<std::string> scenes = distinct(r, &ReportRow::scene, environments);
+  std::vector<double> ratios;
+  int smallest = 0;
+  for (const std::string& scene : scenes) {
+    auto basis = [&](const char* variant) {
+      const ReportRow* row = first_row(r, both(scene_is(scene), variant_is(variant)));
+      return row ? value_of(r, *row, "max_of_peak") : std::numeric_limits<double>::quiet_NaN();
+    };
+    const double sh9 = basis(kSh9Basis), others = std::min(basis(kCubeBasis), basis(kSh4Basis));
+    if (!(sh9 < others)) continue;
+    ++smallest;
+    if (sh9 > 0) ratios.push_back(others / sh9);
+  }
+  std::string text = "SH9's is the smallest of the three on " + std::to_string(smallest) + " of them";
+  if (const std::optional<Span> times = span_of(ratios))
+    text += ", the better of the other two " + number(times->min, "%.1f") + " to " + number(times->max, "%.1f") + " times it there";
+  return text;
+}
+
+/// What each basis costs: "SH9 takes 11 ps_3_0 slots and 9 constant registers, the cube 9 and 6, SH4 3 and 4".
+std::string bases_cost(const SectionResult& r) {
+  std::string text;
+  for (const auto& [variant, name] : kBasesNamed) {
+    const ReportRow* row = first_row(r, variant_is(variant));
+    if (!row) continue;
+    const std::string slots = text_of(r, "slots", value_of(r, *row, "slots")),
+                      registers = text_of(r, "constant_registers", value_of(r, *row, "constant_registers"));
+    text += text.empty() ? std::string(name) + " takes " + slots + " ps_3_0 slots and " + registers + " constant registers"
+                         : ", " + std::string(name) + " " + slots + " and " + registers;
+  }
+  return text;
+}
+
+std::vector<std::string> lighting_bases_findings(const SectionResult& r) {
+  std::vector<std::string> findings;
+  const size_t published = distinct(r, &ReportRow::scene, published_row).size(),
+               probes = distinct(r, &ReportRow::scene, probe_row).size();
+  if (published > 0)
+    findings.push_back("on R&H 2001's " + std::to_string(published) +
+                       " published probes (band-limited) the largest error over the peak irradiance is " +
+                       max_of_peak_per_basis(r, published_row));
+  if (probes > 0)
+    findings.push_back("on the " + std::to_string(probes) + " measured probes it is " + max_of_peak_per_basis(r, probe_row) + "; " +
+                       sh9_smallest(r, probe_row));
+  if (!r.rows.empty()) findings.push_back(bases_cost(r));
+  return findings;
+}
+
 SectionResult run_lighting_bases(const ReportSettings& s) {
   SectionResult out;
   out.title = "the ambient term of models: ambient cube, linear SH4, SH9 against ground-truth irradiance";
@@ -248,6 +327,7 @@ SectionResult run_lighting_bases(const ReportSettings& s) {
                       " normals again and again, the ambient term alone.");
   out.notes.push_back("Not yet: the courtyard's own ambient (radiance around a point of builtin:courtyard needs the bake's gather).");
   if (!details.empty()) out.details = details;
+  out.findings = lighting_bases_findings(out);
   return out;
 }
 

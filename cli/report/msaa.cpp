@@ -14,6 +14,7 @@
 // stays in every row's error, the floor the rows fall towards as the samples rise.
 
 #include "report/box_filter.hpp"
+#include "report/findings.hpp"
 #include "report/frame_error.hpp"
 #include "report/report_scene.hpp"
 #include "report/sections.hpp"
@@ -53,6 +54,26 @@ struct Reference {
   rasterizer::Image image;
   std::string how;
 };
+
+/// Per reference, how the mean error moves from the fewest samples to the most, and how many
+/// pixels still differ at the most.
+std::vector<std::string> msaa_findings(const SectionResult& r) {
+  std::vector<std::string> findings;
+  const std::optional<Span> samples = span_of(r, "samples", any_row);
+  if (!samples) return findings;
+  for (const std::string& variant : distinct(r, &ReportRow::variant, any_row)) {
+    const ReportRow* fewest = first_row(r, both(variant_is(variant), value_is(r, "samples", samples->min)));
+    const ReportRow* most = first_row(r, both(variant_is(variant), value_is(r, "samples", samples->max)));
+    if (!fewest || !most) continue;
+    const double from = value_of(r, *fewest, "mean_steps"), to = value_of(r, *most, "mean_steps");
+    findings.push_back(variant + ": the mean error goes from " + text_of(r, "mean_steps", from) + " steps at " +
+                       counted(text_of(r, "samples", samples->min), "sample", "samples") + " to " + text_of(r, "mean_steps", to) +
+                       " at " + text_of(r, "samples", samples->max) + " (" + change_text(from, to) + "); at " +
+                       text_of(r, "samples", samples->max) + " samples " +
+                       text_of(r, "differing_share", value_of(r, *most, "differing_share")) + " % of the pixels still differ");
+  }
+  return findings;
+}
 
 SectionResult run_msaa(const ReportSettings& s) {
   const ReportScene& scene = *s.scene;
@@ -95,6 +116,7 @@ SectionResult run_msaa(const ReportSettings& s) {
   out.notes.push_back("The reference shades every sub-pixel, MSAA once per pixel: shading aliasing and textures read at the "
                       "pixel's mip stay in every row's error. ms/frame: median of " + std::to_string(s.timing_repeats) +
                       " frames after one untimed.");
+  out.findings = msaa_findings(out);
   return out;
 }
 

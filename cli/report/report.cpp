@@ -21,6 +21,14 @@ std::string number(double v, const char* format) {
   return text;
 }
 
+std::string column_text(const ReportColumn& c, double v) { return number(v * c.text_scale, c.format.c_str()); }
+
+size_t column_index(const SectionResult& r, const std::string& key) {
+  for (size_t i = 0; i < r.columns.size(); ++i)
+    if (r.columns[i].key == key) return i;
+  throw std::logic_error("report: a section asks for column '" + key + "', which it does not have");
+}
+
 namespace {
 
 /// Series colors in order of first appearance: distinct on the plot's dark ground.
@@ -31,8 +39,6 @@ std::string lanes_line() {
   return std::string(rasterizer::simd::kIsaName) + ", " + std::to_string(rasterizer::simd::kLanes) + " floats per SIMD lane";
 }
 
-std::string format_value(const ReportColumn& c, double v) { return number(v * c.text_scale, c.format.c_str()); }
-
 const char* kind_key(ColumnKind k) {
   switch (k) {
     case ColumnKind::cost: return "cost";
@@ -40,12 +46,6 @@ const char* kind_key(ColumnKind k) {
     case ColumnKind::error: return "error";
   }
   return "?";
-}
-
-size_t column_index(const SectionResult& r, const std::string& key) {
-  for (size_t i = 0; i < r.columns.size(); ++i)
-    if (r.columns[i].key == key) return i;
-  throw std::logic_error("report: the plot asks for column '" + key + "', which the section does not have");
 }
 
 /// The references of a section in order of first use: row i's is "R" + (index + 1).
@@ -92,7 +92,7 @@ std::string table_text(const std::string& name, const SectionResult& r) {
   std::vector<std::vector<std::string>> cells = {header};
   for (const ReportRow& row : r.rows) {
     std::vector<std::string> line = {row.scene, row.resolution, row.variant};
-    for (size_t i = 0; i < r.columns.size(); ++i) line.push_back(format_value(r.columns[i], row.values[i]));
+    for (size_t i = 0; i < r.columns.size(); ++i) line.push_back(column_text(r.columns[i], row.values[i]));
     line.push_back(ref_key(refs, row.reference));
     cells.push_back(line);
   }
@@ -113,6 +113,7 @@ std::string table_text(const std::string& name, const SectionResult& r) {
   for (size_t i = 0; i < refs.size(); ++i) out += "R" + std::to_string(i + 1) + ": " + refs[i] + "\n";
   for (const std::string& note : r.notes) out += note + "\n";
   out += "plot: " + name + ".png (" + r.plot.y_label + " against " + r.plot.x_label + ")\n";
+  for (const std::string& finding : r.findings) out += "finding: " + finding + "\n";
   return out;
 }
 
@@ -139,6 +140,7 @@ nlohmann::json section_json(const std::string& name, const SectionResult& r, con
   }
   s["plot"] = {{"file", name + ".png"}, {"width", plot.width}, {"height", plot.height}, {"title", plot.title}, {"x_label", plot.x_label}, {"y_label", plot.y_label},
                {"log_y", plot.log_y}, {"series", series}};
+  s["findings"] = r.findings;
   if (!r.details.is_null()) s["details"] = r.details;
   return s;
 }

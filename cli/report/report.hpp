@@ -7,8 +7,15 @@
 // how its plot is drawn, and this file writes every section the same way:
 //
 //   DIR/speed_error.txt   the tables, one per section, with the notes and references under them
-//   DIR/speed_error.json  the same rows (cost, timing and error apart) and each plot's points
+//                         and the section's findings last, each on a line starting "finding: "
+//   DIR/speed_error.json  the same rows (cost, timing and error apart), each plot's points and
+//                         each section's "findings"
 //   DIR/<section>.png     cost on x, error on y, one labeled marker per row, a color per variant
+//
+// Findings: what a section's numbers show, as sentences the section computes from its own rows
+// once they are measured (findings.hpp picks and formats the values), never typed in: numbers are
+// printed as the table prints them and every comparison's wording follows the values, so the
+// findings cannot go stale when the code or the machine changes what the rows hold.
 //
 // Determinism: everything but the `timing` values of the rows is the same on every run on the same
 // machine (the CPU's name is printed, not measured), so plots take their x from a cost column,
@@ -71,6 +78,10 @@ struct SectionResult {
   std::vector<ReportRow> rows;
   ReportPlot plot;
   nlohmann::json details;  ///< anything else the section states (null: nothing)
+  /// What the rows show, computed from them (findings.hpp): printed after the table, notes and
+  /// plot line as "finding: ..." lines and written to the JSON as "findings". Empty when there is
+  /// nothing to compare (no rows).
+  std::vector<std::string> findings;
 };
 
 struct ReportSection {
@@ -82,6 +93,13 @@ struct ReportSection {
 
 /// `v` through printf format `format` ("%.2f"): a number in a row's text or a note.
 std::string number(double v, const char* format);
+
+/// The index of the column keyed `key` in `r.columns`; throws std::logic_error when there is none
+/// (a section asking for a column it does not have is a bug of the section).
+size_t column_index(const SectionResult& r, const std::string& key);
+
+/// `v` as the table prints it in column `c`: through its format, times its text scale.
+std::string column_text(const ReportColumn& c, double v);
 
 /// Every section, in report order.
 const std::vector<ReportSection>& report_sections();

@@ -4,6 +4,7 @@
 // per frame, measured as `luxel compare` measures them (frame_measurement.hpp); error:
 // frame_error.hpp's columns, the numbers `luxel compare` prints for the pair.
 
+#include "report/findings.hpp"
 #include "report/frame_error.hpp"
 #include "report/report_scene.hpp"
 #include "report/sections.hpp"
@@ -19,6 +20,13 @@ namespace luxel::cli {
 namespace {
 
 using shading::ShaderModel;
+
+/// Each model against ps_3_0, and what each costs.
+std::vector<std::string> shader_models_findings(const SectionResult& r) {
+  std::vector<std::string> findings = findings_against_last_row(r);
+  if (span_of(r, "slots_per_pixel", any_row)) findings.push_back("slots per pixel: " + listing(r, "slots_per_pixel", any_row));
+  return findings;
+}
 
 SectionResult run_shader_models(const ReportSettings& s) {
   const ReportScene& scene = *s.scene;
@@ -48,6 +56,7 @@ SectionResult run_shader_models(const ReportSettings& s) {
   out.notes.push_back("slots/px: sum(pixels x counted slots) / sum(pixels) over the shader combos the frame ran, post passes "
                       "included (luxel compare's number; nan when the frame counts none). ms/frame: median of " +
                       std::to_string(s.timing_repeats) + " frames after one untimed.");
+  out.findings = shader_models_findings(out);
   return out;
 }
 

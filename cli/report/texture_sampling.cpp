@@ -49,6 +49,7 @@ SectionResult run_texture_sampling(const ReportSettings& s) {
                       " samples per pixel; the rules apply to every texture read of the 3D passes.");
   out.notes.push_back("weight bits: of a bilinear weight and of the LOD's fraction (16.8 fixed point, or a float's 24). "
                       "ms/frame: median of " + std::to_string(s.timing_repeats) + " frames after one untimed.");
+  out.findings = findings_against_last_row(out);
   return out;
 }
 

@@ -7,6 +7,7 @@
 // capture. Cost: the target's bytes per pixel and ms per frame of the 8-bit frame; error:
 // frame_error.hpp's columns.
 
+#include "report/findings.hpp"
 #include "report/frame_error.hpp"
 #include "report/report_scene.hpp"
 #include "report/sections.hpp"
@@ -35,6 +36,19 @@ std::string scale_name(float scale) {
   char text[32];
   std::snprintf(text, sizeof text, "%g", double(scale));
   return text;
+}
+
+/// The largest difference from the float target over every scale measured.
+std::vector<std::string> tone_mapping_findings(const SectionResult& r) {
+  const std::optional<Span> steps = span_of(r, "max_steps", any_row);
+  const std::optional<Span> share = span_of(r, "differing_share", any_row);
+  if (!steps || !share) return {};
+  std::string scales;
+  for (const ReportRow& row : r.rows) scales += (scales.empty() ? "" : ", ") + row.label;
+  if (steps->max == 0) return {"the 8-bit target gives the float target's bytes at every scale measured (" + scales + ")"};
+  return {"the 8-bit target is within " + counted(text_of(r, "max_steps", steps->max), "step", "steps") +
+          " of the float target at every scale measured (" + scales + "), on " + span_text(r, "differing_share", *share) +
+          " % of the pixels"};
 }
 
 SectionResult run_tone_mapping(const ReportSettings& s) {
@@ -67,6 +81,7 @@ SectionResult run_tone_mapping(const ReportSettings& s) {
                       "sample, shader model " + std::string(shading::caps(scene.settings.model).name) +
                       "), the only frame render_float draws; fixed scales, no auto exposure. A float target holds 16 bytes "
                       "per pixel (RGBA32F) against the 8-bit target's 4.");
+  out.findings = tone_mapping_findings(out);
   return out;
 }
 

@@ -7,12 +7,14 @@
 // slots per pixel and ms per frame, measured as `luxel compare` measures; error: frame_error.hpp's
 // columns.
 
+#include "report/findings.hpp"
 #include "report/frame_error.hpp"
 #include "report/report_scene.hpp"
 #include "report/sections.hpp"
 
 #include "luxel/shading/shader_model.hpp"
 
+#include <cmath>
 #include <limits>
 #include <string>
 #include <vector>
@@ -22,6 +24,27 @@ namespace luxel::cli {
 namespace {
 
 using shading::ShaderModel;
+
+// The two ways of attenuating, the rows' variants, which the findings pair by their reference.
+constexpr const char* kPerPixel = "per pixel";
+constexpr const char* kPerVertex = "per vertex";
+
+/// Per model, what attenuating per vertex saves in slots and changes in pixels against per pixel
+/// (the per-pixel row of the same reference).
+std::vector<std::string> vertex_lighting_findings(const SectionResult& r) {
+  std::vector<std::string> findings;
+  for (const ReportRow* vertex : rows_where(r, variant_is(kPerVertex))) {
+    const ReportRow* pixel = first_row(r, [&](const ReportRow& row) { return row.variant == kPerPixel && row.reference == vertex->reference; });
+    if (!pixel) continue;
+    std::string text = vertex->label + ": " + frame_difference_text(r, *vertex);
+    const double saved = value_of(r, *pixel, "slots_per_pixel") - value_of(r, *vertex, "slots_per_pixel");
+    if (std::isfinite(saved))
+      text += ", at " + text_of(r, "slots_per_pixel", std::abs(saved)) + (saved >= 0 ? " fewer" : " more") +
+              " slots per pixel than the per-pixel frame";
+    findings.push_back(text);
+  }
+  return findings;
+}
 
 SectionResult run_vertex_lighting(const ReportSettings& s) {
   const ReportScene& scene = *s.scene;
@@ -42,7 +65,7 @@ SectionResult run_vertex_lighting(const ReportSettings& s) {
     s.progress("vertex_lighting: " + name + ", per vertex");
     const FrameMeasurement per_vertex = scene.measure(f, s.timing_repeats);
     const std::string how = scene.name + " drawn as " + name + " with the lights attenuated per pixel";
-    for (const auto& [m, variant] : {std::pair{&per_pixel, "per pixel"}, std::pair{&per_vertex, "per vertex"}}) {
+    for (const auto& [m, variant] : {std::pair{&per_pixel, kPerPixel}, std::pair{&per_vertex, kPerVertex}}) {
       std::vector<double> values = {m->slots_per_pixel().value_or(std::numeric_limits<double>::quiet_NaN()), m->median_ms()};
       for (double e : frame_error_values(m->image, per_pixel.image)) values.push_back(e);
       out.rows.push_back({scene.name, scene.resolution(), std::string(variant), name + ", " + variant, how, values});
@@ -53,6 +76,7 @@ SectionResult run_vertex_lighting(const ReportSettings& s) {
                       "lit by their lightmaps either way.");
   out.notes.push_back("slots/px: sum(pixels x counted slots) / sum(pixels) over the frame's shader combos, post passes "
                       "included. ms/frame: median of " + std::to_string(s.timing_repeats) + " frames after one untimed.");
+  out.findings = vertex_lighting_findings(out);
   return out;
 }
 

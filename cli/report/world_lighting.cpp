@@ -21,6 +21,7 @@
 // them (RGBE8888: one map for a flat face, four for a bumped one), the combo's counted ps_2_0
 // slots.
 
+#include "report/findings.hpp"
 #include "report/report_scene.hpp"
 #include "report/sections.hpp"
 
@@ -45,6 +46,11 @@ namespace {
 constexpr int kPointsPerGroup = 1000;
 constexpr int kReferenceRays = 1024;
 constexpr uint64_t kPointSeed = 0x776f726c64ull;  // "world"
+
+// The rows' variants the findings compare.
+constexpr const char* kFlatLightmap = "flat lightmap";
+constexpr const char* kEngineRnm = "RNM (the engine's)";
+constexpr const char* kReferenceNoise = "reference, another seed";
 
 /// A point on a bump-mapped world surface, and what each way of lighting it reads.
 struct WorldPoint {
@@ -175,6 +181,29 @@ double lightmapped_slots(const std::string& variant) {
   return std::numeric_limits<double>::quiet_NaN();
 }
 
+/// "too bright" or "too dark" as a bias says.
+const char* bias_direction(double bias) { return bias > 0 ? "too bright" : bias < 0 ? "too dark" : "unbiased"; }
+
+/// Per group of surfaces: RNM's mean error against the flat map's, which way each is biased, and
+/// the reference's own noise.
+std::vector<std::string> world_lighting_findings(const SectionResult& r) {
+  std::vector<std::string> findings;
+  for (const std::string& group : distinct(r, &ReportRow::scene, any_row)) {
+    const ReportRow* flat = first_row(r, both(scene_is(group), variant_is(kFlatLightmap)));
+    const ReportRow* rnm = first_row(r, both(scene_is(group), variant_is(kEngineRnm)));
+    const ReportRow* noise = first_row(r, both(scene_is(group), variant_is(kReferenceNoise)));
+    if (!flat || !rnm || !noise) continue;
+    const double rnm_mean = value_of(r, *rnm, "mean_error"), flat_mean = value_of(r, *flat, "mean_error");
+    const double rnm_bias = value_of(r, *rnm, "bias"), flat_bias = value_of(r, *flat, "bias");
+    findings.push_back(group + ": RNM's mean error of luminance is " + text_of(r, "mean_error", rnm_mean) + " %, " +
+                       ratio_text(rnm_mean, flat_mean) + " times the flat map's " + text_of(r, "mean_error", flat_mean) +
+                       " %; RNM is " + bias_direction(rnm_bias) + " (bias " + text_of(r, "bias", rnm_bias) + " %), the flat map " +
+                       bias_direction(flat_bias) + " (" + text_of(r, "bias", flat_bias) + " %); the reference's own noise is " +
+                       text_of(r, "mean_error", value_of(r, *noise, "mean_error")) + " %");
+  }
+  return findings;
+}
+
 SectionResult run_world_lighting(const ReportSettings& s) {
   const ReportScene& scene = *s.scene;
   SectionResult out;
@@ -224,10 +253,10 @@ SectionResult run_world_lighting(const ReportSettings& s) {
       for (double e : errors(values, reference_y)) cost.push_back(e);
       out.rows.push_back({where, count, variant, std::string(group.name) + ", " + label, reference, cost});
     };
-    row("flat lightmap", "flat", {1, 4, flat_slots}, flat_y);
-    row("RNM (the engine's)", "RNM", {3, 16, bump_slots}, rnm_y);
+    row(kFlatLightmap, "flat", {1, 4, flat_slots}, flat_y);
+    row(kEngineRnm, "RNM", {3, 16, bump_slots}, rnm_y);
     row("RNM, maps averaging the flat one", "RNM rescaled", {3, 16, bump_slots}, rescaled_y);
-    row("reference, another seed", "reference noise", {0, nan, nan}, again_y);
+    row(kReferenceNoise, "reference noise", {0, nan, nan}, again_y);
   }
   if (out.rows.empty()) {
     out.notes.push_back(scene.name + " has no bump-mapped world surface: nothing to compare.");
@@ -240,6 +269,7 @@ SectionResult run_world_lighting(const ReportSettings& s) {
   out.notes.push_back("mean = sum|a - r| / sum r; bias = sum(a - r) / sum r; p95: the 95th percentile of |a - r| / max(r, 5% of "
                       "the mean r). bytes/luxel: as a BSP stores them (RGBE8888, one map for a flat face, four for a bumped one). "
                       "The reference-noise row is the reference computed again with another seed: errors near it are noise.");
+  out.findings = world_lighting_findings(out);
   return out;
 }
 

@@ -12,6 +12,8 @@
 //  - the engine's LUTs of the built-in grades stay within color_correction.hpp's 2 steps;
 //  - the rows state scene, resolution, reference and CPU; the second run gives the same numbers but
 //    for the timing columns, and the same plots, which are PNGs of the size the JSON says;
+//  - every section states findings, in the JSON and as "finding: " lines of the text, and those of
+//    MSAA, shader models and tone mapping state their rows' numbers as the table prints them;
 // and the box filter behind the MSAA references, in both spaces, against sums worked by hand.
 
 #include "cli/run_luxel.hpp"
@@ -26,6 +28,7 @@
 
 #include <unistd.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -39,6 +42,7 @@ namespace {
 
 namespace fs = std::filesystem;
 using test::Process;
+using test::printed;
 using test::run_luxel;
 
 
@@ -88,6 +92,13 @@ TEST_F(ReportFrames, RowsStateWhatTheyMeasured) {
   }
   EXPECT_NE(section("a", "msaa")["rows"][0]["reference"].get<std::string>().find("512x288 with 1 sample per pixel"),
             std::string::npos);
+  const std::string text = test::file_text(root_ / "a" / "speed_error.txt");
+  for (const char* name : kSections) {
+    const nlohmann::json findings = section("a", name)["findings"];
+    EXPECT_FALSE(findings.empty()) << name;
+    for (const nlohmann::json& finding : findings)
+      EXPECT_NE(text.find("\nfinding: " + finding.get<std::string>() + "\n"), std::string::npos) << finding;
+  }
 }
 
 TEST_F(ReportFrames, MsaaErrorFallsAsSamplesRise) {
@@ -105,6 +116,15 @@ TEST_F(ReportFrames, MsaaErrorFallsAsSamplesRise) {
   // The reference reads its textures at the frame's mips (FrameSettings::texture_lod_bias); at
   // its own, every textured pixel is sharper than MSAA can draw it: 4.4 steps at 8 samples here.
   EXPECT_LT(eight["mean_steps"].get<double>(), 3.0);
+  // A finding per reference: the mean error at the fewest samples and at the most, as printed.
+  const nlohmann::json findings = section("a", "msaa")["findings"];
+  ASSERT_EQ(findings.size(), 2u);
+  for (size_t f = 0; f < 2; ++f) {
+    const std::string expected = rows[4 * f]["variant"].get<std::string>() + ": the mean error goes from " +
+                                 printed(rows[4 * f]["error"]["mean_steps"], "%.4f") + " steps at 1 sample to " +
+                                 printed(rows[4 * f + 3]["error"]["mean_steps"], "%.4f") + " at 8 (down ";
+    EXPECT_EQ(findings[f].get<std::string>().rfind(expected, 0), 0u) << findings[f] << "\nexpected: " << expected;
+  }
 }
 
 /// The last row is the section's reference drawn again: 0 against it; the first, the cheapest
@@ -127,6 +147,21 @@ TEST_F(ReportFrames, ShaderModelsAgainstPs30) {
   EXPECT_EQ(rows[1]["variant"], "ps_2_b");
   expect_reference_last(rows, "ps_3_0");
   for (const nlohmann::json& row : rows) EXPECT_GT(row["cost"]["slots_per_pixel"].get<double>(), 0.0);
+  // ps_2_b's finding says "the same bytes" exactly when its row has no differing pixel.
+  const nlohmann::json findings = section("a", "shader_models")["findings"];
+  ASSERT_GE(findings.size(), 2u);
+  const nlohmann::json& ps_2_b = rows[1]["error"];
+  const bool same = ps_2_b["differing_share"].get<double>() == 0.0 && ps_2_b["max_steps"].get<int>() == 0;
+  EXPECT_EQ(findings[1], "ps_2_b against ps_3_0: " + (same ? std::string("the same bytes (0 pixels differ)")
+                                                            : printed(100.0 * ps_2_b["differing_share"].get<double>(), "%.2f") +
+                                                                  " % of the pixels differ, by up to " +
+                                                                  printed(ps_2_b["max_steps"], "%.0f") + " step"));
+  EXPECT_EQ(findings[0].get<std::string>().rfind("ps_2_0 against ps_3_0: " +
+                                                     printed(100.0 * rows[0]["error"]["differing_share"].get<double>(), "%.2f") +
+                                                     " % of the pixels differ, by up to ",
+                                                 0),
+            0u)
+      << findings[0];
 }
 
 TEST_F(ReportFrames, HardwareSamplingAgainstIdeal) {
@@ -152,6 +187,15 @@ TEST_F(ReportFrames, InShaderToneMapIsTheFloatTargetsWithinAStep) {
     EXPECT_LT(row["error"]["differing_share"].get<double>(), 0.05) << row["label"];
     EXPECT_EQ(row["cost"]["target_bytes_per_pixel"], 4) << row["label"];
   }
+  // The finding states the largest difference over the scales.
+  int largest = 0;
+  for (const nlohmann::json& row : rows) largest = std::max(largest, row["error"]["max_steps"].get<int>());
+  const nlohmann::json findings = section("a", "tone_mapping")["findings"];
+  ASSERT_EQ(findings.size(), 1u);
+  const std::string expected = largest == 0 ? "the 8-bit target gives the float target's bytes at every scale measured"
+                                            : "the 8-bit target is within " + std::to_string(largest) +
+                                                  (largest == 1 ? " step" : " steps") + " of the float target at every scale measured";
+  EXPECT_EQ(findings[0].get<std::string>().rfind(expected, 0), 0u) << findings[0];
 }
 
 TEST_F(ReportFrames, EngineLutsStayNearTheExactGrades) {

@@ -6,7 +6,10 @@
 //    the quadrature behind both is checked against closed forms in
 //    tests/shading/sphere_quadrature_test.cpp and environment_image_test.cpp;
 //  - a second run writes the same JSON but for the `timing` fields, and the same PNG bytes;
-//  - the PNG reads back at the plot's size and the JSON lists each plot's series and labels.
+//  - the PNG reads back at the plot's size and the JSON lists each plot's series and labels;
+//  - the findings state the rows' own numbers as the table prints them (the range of each basis's
+//    error over the peak on the published and on the measured probes; the lanes that agree), in
+//    the JSON and as "finding: " lines of the text.
 
 #include "cli/run_luxel.hpp"
 
@@ -18,6 +21,7 @@
 
 #include <unistd.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <set>
@@ -31,8 +35,54 @@ namespace {
 
 namespace fs = std::filesystem;
 using test::Process;
+using test::printed;
 using test::run_luxel;
 
+
+/// The range of `values` as the findings print it: "A to B", or "A" when both ends print the same.
+std::string printed_range(const std::vector<double>& values, const char* format) {
+  const auto [lo, hi] = std::minmax_element(values.begin(), values.end());
+  const std::string a = printed(*lo, format), b = printed(*hi, format);
+  return a == b ? a : a + " to " + b;
+}
+
+/// Each basis's largest error over the peak, in %, over the rows that pass `environments`, as the
+/// lighting_bases findings name them: "SH9's A to B %, the cube's C to D %, SH4's E to F %".
+template <class Keep>
+std::string bases_max_of_peak(const nlohmann::json& rows, Keep environments) {
+  const std::pair<const char*, const char*> bases[] = {{"SH9 (ps_3_0)", "SH9"}, {"ambient cube (ps_2_0+)", "the cube"},
+                                                       {"linear SH4 (ps_2_0+)", "SH4"}};
+  std::string text;
+  for (const auto& [variant, name] : bases) {
+    std::vector<double> values;
+    for (const nlohmann::json& row : rows)
+      if (row["variant"] == variant && environments(row)) values.push_back(100.0 * row["error"]["max_of_peak"].get<double>());
+    text += (text.empty() ? "" : ", ") + std::string(name) + "'s " + printed_range(values, "%.3f") + " %";
+  }
+  return text;
+}
+
+bool published(const nlohmann::json& row) { return row["resolution"].get<std::string>().starts_with("analytic"); }
+
+/// The lighting_bases section's findings against its rows, in the JSON and in the text: the
+/// published probes' ranges first, then the measured probes' when there are any, then the costs.
+void expect_bases_findings(const nlohmann::json& section, const std::string& text, int measured_probes) {
+  const nlohmann::json& findings = section["findings"];
+  ASSERT_EQ(findings.size(), measured_probes > 0 ? 3u : 2u) << findings;
+  EXPECT_EQ(findings[0], "on R&H 2001's 3 published probes (band-limited) the largest error over the peak irradiance is " +
+                             bases_max_of_peak(section["rows"], published));
+  if (measured_probes > 0) {
+    const std::string measured = findings[1];
+    EXPECT_EQ(measured.rfind("on the " + std::to_string(measured_probes) + " measured probes it is " +
+                                 bases_max_of_peak(section["rows"], [](const nlohmann::json& row) { return !published(row); }) + "; ",
+                             0),
+              0u)
+        << measured;
+  }
+  EXPECT_EQ(findings.back(), "SH9 takes 11 ps_3_0 slots and 9 constant registers, the cube 9 and 6, SH4 3 and 4");
+  for (const nlohmann::json& finding : findings)
+    EXPECT_NE(text.find("\nfinding: " + finding.get<std::string>() + "\n"), std::string::npos) << finding;
+}
 
 scenes::PixelImage probe(int width, int height, float top, float bottom) {
   scenes::PixelImage image;
@@ -131,6 +181,11 @@ TEST_F(ReportCommand, PlotIsAPngWithTheLabelsTheJsonLists) {
   EXPECT_TRUE(plot["log_y"].get<bool>());
 }
 
+TEST_F(ReportCommand, FindingsStateTheRowsNumbers) {
+  ASSERT_EQ(runs_[0].exit_code, 0) << runs_[0].out;
+  expect_bases_findings(json("a")["sections"][0], test::file_text(root_ / "a" / "speed_error.txt"), 2);
+}
+
 TEST_F(ReportCommand, PrintsTheTableItWrites) {
   const std::string text = test::file_text(root_ / "a" / "speed_error.txt");
   EXPECT_NE(runs_[0].out.find(text), std::string::npos);
@@ -152,6 +207,9 @@ TEST(ReportCommandProbes, AMissingFolderSkipsTheProbeRowsWithANote) {
   ASSERT_EQ(none.exit_code, 0) << none.out;
   EXPECT_NE(none.out.find("probes: none given; the probe rows are skipped"), std::string::npos) << none.out;
   EXPECT_EQ(nlohmann::json::parse(test::file_text(out / "speed_error.json"))["sections"][0]["rows"].size(), 9u);
+  const nlohmann::json section = nlohmann::json::parse(test::file_text(out / "no_option" / "speed_error.json"))["sections"][0];
+  EXPECT_EQ(section["rows"].size(), 9u);
+  expect_bases_findings(section, test::file_text(out / "no_option" / "speed_error.txt"), 0);
   fs::remove_all(out);
 }
 
@@ -185,6 +243,13 @@ TEST(ReportLanes, SimdGivesTheScalarLanesBitsButWhereItSamplesATexture) {
     EXPECT_GT(row["cost"]["slots"].get<double>(), 0.0) << name;
   }
   EXPECT_GT(texture_reading, 0);
+  // The finding counts the rows whose lanes agree on every pixel.
+  const auto agreeing = std::count_if(s["rows"].begin(), s["rows"].end(),
+                                      [](const nlohmann::json& row) { return row["error"]["differing_share"].get<double>() == 0.0; });
+  ASSERT_FALSE(s["findings"].empty());
+  EXPECT_EQ(s["findings"][0], std::to_string(agreeing) + " of " + std::to_string(s["rows"].size()) +
+                                  " variants give the same bits on both lanes for every pixel");
+  EXPECT_EQ(s["findings"].size(), agreeing == std::ssize(s["rows"]) ? 1u : 2u) << "the others are described";
   EXPECT_TRUE(std::filesystem::is_regular_file(out / "lanes.png"));
 #if !defined(__SANITIZE_ADDRESS__)  // a second run: the same numbers but for the timings (the release suite's check)
   const std::filesystem::path again = out.string() + "-again";

@@ -38,4 +38,11 @@ inline std::string file_text(const std::string& path) {
   return s.str();
 }
 
+/// `v` through printf format `format`, as `luxel report` prints a number of its tables and findings.
+inline std::string printed(double v, const char* format) {
+  std::array<char, 64> text;
+  std::snprintf(text.data(), text.size(), format, v);
+  return text.data();
+}
+
 }  // namespace luxel::cli::test
