@@ -171,7 +171,7 @@ OIIO::ImageSpec straight_alpha_config() {
 
 /// The spec of a written image. PNGs are deflated at zlib level 2, not libpng's default 6: a
 /// 1280x720 frame then takes a third of the time to write for files a few percent larger
-/// (bench/README.md, "Writing images"), which a sequence of frames pays per frame.
+/// (bench/README.md, "Why the code is as it is"), which a sequence of frames pays per frame.
 OIIO::ImageSpec output_spec(int width, int height, int channels, OIIO::TypeDesc type) {
   OIIO::ImageSpec spec(width, height, channels, type);
   spec.attribute("oiio:UnassociatedAlpha", 1);
