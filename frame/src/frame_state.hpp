@@ -6,7 +6,7 @@
 
 #include "color_correction_nodes.hpp"
 #include "model_lighting.hpp"
-#include "source_draws.hpp"
+#include "source_vertex.hpp"
 #include "views.hpp"
 #include "water_passes.hpp"
 

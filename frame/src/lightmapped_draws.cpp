@@ -1,7 +1,7 @@
 // LightmappedGeneric draws (source_draws.hpp): every LightmappedGeneric combo (drawn_combos.hpp).
 
 #include "drawn_combos.hpp"
-#include "source_draws.hpp"
+#include "make_source_draw.hpp"
 
 namespace luxel::frame {
 

@@ -1,7 +1,7 @@
 // UnlitGeneric and Sky_HDR draws (source_draws.hpp).
 
 #include "drawn_combos.hpp"
-#include "source_draws.hpp"
+#include "make_source_draw.hpp"
 
 namespace luxel::frame {
 

@@ -4,7 +4,7 @@
 // one in vertexlit_envmap_draws.cpp, so that the two build in parallel.
 
 #include "drawn_combos.hpp"
-#include "source_draws.hpp"
+#include "make_source_draw.hpp"
 
 namespace luxel::frame::detail {
 

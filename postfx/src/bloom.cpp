@@ -3,8 +3,8 @@
 #include "luxel/postfx/bloom.hpp"
 
 #include "counted_draw.hpp"
+#include "screen_rectangle.hpp"
 
-#include "luxel/postfx/screen_rectangle.hpp"
 #include "luxel/shading/source/bloom_add.hpp"
 #include "luxel/shading/source/bloom_downsample.hpp"
 

@@ -3,13 +3,13 @@
 #include "luxel/postfx/color_correction.hpp"
 
 #include "counted_draw.hpp"
+#include "screen_rectangle.hpp"
 
 #include "luxel/shading/source/registry.hpp"
 
 #include "luxel/rasterizer/draw.hpp"
 #include "luxel/rasterizer/framebuffer.hpp"
 #include "luxel/postfx/full_frame.hpp"
-#include "luxel/postfx/screen_rectangle.hpp"
 #include "luxel/shading/source/color_correction.hpp"
 #include "luxel/shading/source/engine_post.hpp"
 

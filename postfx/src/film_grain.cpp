@@ -3,8 +3,8 @@
 #include "luxel/postfx/film_grain.hpp"
 
 #include "counted_draw.hpp"
+#include "screen_rectangle.hpp"
 
-#include "luxel/postfx/screen_rectangle.hpp"
 #include "luxel/shading/source/film_grain.hpp"
 
 #include <atomic>

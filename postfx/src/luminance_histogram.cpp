@@ -1,8 +1,8 @@
 #include "luxel/postfx/luminance_histogram.hpp"
 
 #include "counted_draw.hpp"
+#include "screen_rectangle.hpp"
 
-#include "luxel/postfx/screen_rectangle.hpp"
 #include "luxel/rasterizer/draw_definition.hpp"
 #include "luxel/rasterizer/srgb.hpp"
 

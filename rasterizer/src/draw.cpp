@@ -3,7 +3,7 @@
 
 #include "luxel/rasterizer/draw.hpp"
 
-#include "luxel/rasterizer/detail/tile_rasterizer.hpp"  // DrawPlan
+#include "luxel/rasterizer/detail/draw_plan.hpp"
 
 #include <cmath>
 #include <stdexcept>

@@ -11,10 +11,10 @@
 //                with the SDK's 1/width vertical step unless BloomOptions says otherwise;
 //   5. add       _rt_SmallFB0 stretched over the frame, added with ONE/ONE on gamma values
 //                (shading/source/bloom_add.hpp).
-// Every pass is a screen rectangle drawn through the rasterizer (screen_rectangle.hpp) into an
-// 8-bit target, and each intermediate is read back as an RGBA8 texture, bilinear and clamped, so
-// every pass rounds to 8 bits as the SDK's render targets do. Output bytes do not depend on the
-// context's thread count.
+// Every pass is a screen rectangle drawn through the rasterizer (postfx/src/screen_rectangle.hpp)
+// into an 8-bit target, and each intermediate is read back as an RGBA8 texture, bilinear and
+// clamped, so every pass rounds to 8 bits as the SDK's render targets do. Output bytes do not
+// depend on the context's thread count.
 //
 // Rectangles (DrawScreenSpaceRectangle's centre-to-centre mapping): the downsample shows source
 // texels 0..W-2 x 0..H-2 on the W/4 x H/4 target (the "-2" leaves room for the taps reaching past
@@ -31,8 +31,8 @@
 // first footprint only. Smaller frames throw std::invalid_argument.
 
 #include "luxel/postfx/full_frame.hpp"
-#include "luxel/postfx/screen_rectangle.hpp"
 #include "luxel/postfx/shader_tally.hpp"
+#include "luxel/postfx/texel_rect.hpp"
 #include "luxel/rasterizer/context.hpp"
 #include "luxel/rasterizer/framebuffer.hpp"
 #include "luxel/rasterizer/image.hpp"

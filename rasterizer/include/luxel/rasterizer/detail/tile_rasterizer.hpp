@@ -1,11 +1,12 @@
 #pragma once
 // The per-tile stage of a draw: the tile rasterizer, which takes the triangles binned to one tile
 // through coverage, depth and stencil, the pixel functor and the output merger, and the plan of
-// the draw it reads. A header because it is templated on the pixel functor, which the stamp loop
-// inlines (or calls through a pointer: detail/called_shader.hpp); what does not depend on the
-// functor is compiled once (plan_draw: rasterizer/src/draw.cpp).
+// the draw it reads (detail/draw_plan.hpp). A header because it is templated on the pixel functor,
+// which the stamp loop inlines (or calls through a pointer: detail/called_shader.hpp); what does
+// not depend on the functor is compiled once (plan_draw: rasterizer/src/draw.cpp).
 
 #include "luxel/rasterizer/detail/called_shader.hpp"
+#include "luxel/rasterizer/detail/draw_plan.hpp"
 #include "luxel/rasterizer/detail/output_merger.hpp"
 #include "luxel/rasterizer/detail/triangle_setup.hpp"
 #include "luxel/rasterizer/draw.hpp"
@@ -20,21 +21,6 @@
 #include <cstdint>
 
 namespace luxel::rasterizer::detail {
-
-/// Everything about a draw the tile rasterizer needs, decided once per draw.
-struct DrawPlan {
-  DrawConstants constants;
-  const PipelineState* state = nullptr;
-  ColorTarget* color = nullptr;
-  DepthStencilTarget* depth_stencil = nullptr;
-  SurfaceLayout layout;
-  SampleOffset sample_offsets[kMaxSamples];
-  bool depth_test = false, depth_write = false, stencil = false, alpha_test = false;
-  bool float_color = false;       ///< the color target is rgba32f (one sample, no blending)
-  uint32_t color_write_mask = 0;  ///< RGBA8 bits to write (of an rgba32f target: its channels')
-};
-
-DrawPlan plan_draw(const Framebuffer& fb, const PipelineState& state, int varyings, FastPaths fast_paths);
 
 /// Lane constants of a stamp, built once.
 struct StampLanes {

@@ -1,5 +1,5 @@
 #pragma once
-// The full-target rectangle every post pass draws: Source's DrawScreenSpaceRectangle
+// Private: the full-target rectangle every post pass draws: Source's DrawScreenSpaceRectangle
 // (IMatRenderContext), which maps a rectangle of source texels onto a rectangle of destination
 // pixels centre to centre: the centre of source texel (x0, y0) lands on the centre of the first
 // destination pixel and the centre of (x1, y1) on the centre of the last. With a destination
@@ -14,6 +14,7 @@
 // four): tap i is the interpolated coordinate plus a fixed offset in source texels, packed two to
 // a varying (.xy, .zw).
 
+#include "luxel/postfx/texel_rect.hpp"
 #include "luxel/rasterizer/draw_definition.hpp"
 
 #include <glm/vec2.hpp>
@@ -23,18 +24,6 @@
 #include <cstdint>
 
 namespace luxel::postfx {
-
-/// Which source texels appear on the first and the last destination pixel, and the source
-/// texture's size (DrawScreenSpaceRectangle's src_texture_x0..y1, width, height).
-struct TexelRect {
-  float x0 = 0, y0 = 0, x1 = 0, y1 = 0;
-  int texture_width = 1, texture_height = 1;
-};
-
-/// A texel rectangle covering the whole of a width x height texture: texel (0, 0) to the last.
-inline TexelRect whole_texture(int width, int height) {
-  return {0.0f, 0.0f, static_cast<float>(width - 1), static_cast<float>(height - 1), width, height};
-}
 
 /// The vertex functor of the rectangle: two triangles, six vertices, `Taps` texture coordinates.
 template <int Taps>
